@@ -1,0 +1,50 @@
+"""The ShaderToy environment: the prelude that ShaderToy puts in front of an Image-tab shader.
+
+ShaderToy compiles the Image tab as GLSL ES 3.00 with these uniforms declared for it; glint
+validates and renders user code with exactly this prelude so that what passes here pastes there.
+"""
+
+from __future__ import annotations
+
+# Uniforms ShaderToy declares for the Image tab (https://www.shadertoy.com/howto).
+UNIFORMS: tuple[tuple[str, str], ...] = (
+    ("vec3", "iResolution"),
+    ("float", "iTime"),
+    ("float", "iTimeDelta"),
+    ("int", "iFrame"),
+    ("float", "iFrameRate"),
+    ("vec4", "iMouse"),
+    ("vec4", "iDate"),
+    ("float", "iChannelTime[4]"),
+    ("vec3", "iChannelResolution[4]"),
+    ("float", "iSampleRate"),
+    ("sampler2D", "iChannel0"),
+    ("sampler2D", "iChannel1"),
+    ("sampler2D", "iChannel2"),
+    ("sampler2D", "iChannel3"),
+)
+
+UNIFORM_NAMES: frozenset[str] = frozenset(decl.split("[")[0] for _, decl in UNIFORMS)
+
+_HEADER = "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
+
+_UNIFORM_BLOCK = "".join(f"uniform {ty} {decl};\n" for ty, decl in UNIFORMS)
+
+# The entry point ShaderToy appends after the user's code.
+EPILOGUE = (
+    "\nout vec4 glintFragColor;\n"
+    "void main() {\n"
+    "    glintFragColor = vec4(0.0, 0.0, 0.0, 1.0);\n"
+    "    mainImage(glintFragColor, gl_FragCoord.xy);\n"
+    "}\n"
+)
+
+PRELUDE = _HEADER + _UNIFORM_BLOCK
+# Number of lines the prelude adds in front of the user's first line.
+PRELUDE_LINES = PRELUDE.count("\n")
+
+
+def wrap(user_source: str) -> str:
+    """Return a complete fragment shader: prelude, the user's code unchanged, then `main`."""
+    body = user_source if user_source.endswith("\n") else user_source + "\n"
+    return PRELUDE + body + EPILOGUE
