@@ -1,0 +1,218 @@
+"""Validate a ShaderToy shader with glslangValidator and report errors where the user wrote them.
+
+The user's code is wrapped exactly as the target wraps it (ShaderToy's prelude and `main`), compiled
+by the Khronos reference compiler, and every error line is mapped back through the prelude and the
+`// source:` markers to the user's file, or to the snippet the line was copied from.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+from dataclasses import dataclass
+
+from glint.compiler import shadertoy
+from glint.compiler.errors import EnvironmentProblem, UsageError
+from glint.compiler.sourcemap import Origin, build_line_map, split_lines
+
+TARGETS = ("shadertoy", "webgl2", "desktop")
+TIMEOUT_S = 30.0
+SPIRV_OPT = "/usr/bin/spirv-opt"
+MAIN_IMAGE_SIGNATURE = "void mainImage(out vec4 fragColor, in vec2 fragCoord)"
+
+# `ERROR: 0:12: 'foo' : undeclared identifier`; the `0:12: ` part is absent for link errors.
+# Some modes print the file name instead of the source-string number 0.
+_LINE = re.compile(r"^(ERROR|WARNING): (?:[^\s:]+:(\d+): )?(.*?)\s*$")
+_TOKEN = re.compile(r"^'(.*?)' :\s*(.*)$")
+# Lines that summarise or follow up real errors and tell the user nothing more.
+_NOISE = re.compile(r"compilation errors?\.|No code generated|compilation terminated")
+# glslang names the unexpected token in syntax errors by its grammar name.
+_GRAMMAR_TOKENS = {
+    "SEMICOLON": ";", "COMMA": ",", "LEFT_BRACE": "{", "RIGHT_BRACE": "}",
+    "LEFT_PAREN": "(", "RIGHT_PAREN": ")", "LEFT_BRACKET": "[", "RIGHT_BRACKET": "]",
+    "DOT": ".", "EQUAL": "=",
+}
+_UNEXPECTED = re.compile(r"unexpected ([A-Z_]+)")
+
+
+@dataclass
+class Diagnostic:
+    """One message from the compiler, located in the user's file (1-based line and column)."""
+
+    file: str
+    line: int
+    column: int
+    severity: str  # "error" or "warning"
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}:{self.column}: {self.severity}: {self.message}"
+
+
+def find_validator() -> str:
+    """Return the path of glslangValidator, or say how to install it."""
+    path = shutil.which("glslangValidator")
+    if path is None:
+        raise EnvironmentProblem(
+            "glslangValidator not found; install it with `apt-get install glslang-tools` "
+            "(Debian) or run `make setup`"
+        )
+    return path
+
+
+def desktop_prelude() -> str:
+    """The ShaderToy uniforms for desktop GLSL 3.30 (no precision statements needed)."""
+    return "#version 330\n" + "".join(f"uniform {ty} {decl};\n" for ty, decl in shadertoy.UNIFORMS)
+
+
+def wrap_for_target(source: str, target: str) -> tuple[str, int]:
+    """Return the complete fragment shader for `target` and how many prelude lines precede the
+    user's first line."""
+    if target in ("shadertoy", "webgl2"):
+        # WebGL2 compiles the same ES 3.00 fragment shader that ShaderToy does.
+        return shadertoy.wrap(source), shadertoy.PRELUDE_LINES
+    if target == "desktop":
+        prelude = desktop_prelude()
+        body = source if source.endswith("\n") else source + "\n"
+        return prelude + body + shadertoy.EPILOGUE, prelude.count("\n")
+    raise UsageError(f"unknown target {target!r}; expected one of: {', '.join(TARGETS)}")
+
+
+def _run(args: list[str]) -> subprocess.CompletedProcess[str]:
+    try:
+        return subprocess.run(args, capture_output=True, text=True, timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired as exc:
+        raise EnvironmentProblem(
+            f"{os.path.basename(args[0])} did not finish within {TIMEOUT_S:.0f} s"
+        ) from exc
+    except OSError as exc:
+        raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
+
+
+def _compile(wrapped: str, workdir: str, extra_args: list[str]) -> subprocess.CompletedProcess[str]:
+    """Compile `wrapped` from a .frag file in `workdir` (the suffix tells glslang the stage)."""
+    validator = find_validator()
+    shader = os.path.join(workdir, "shader.frag")
+    with open(shader, "w", encoding="utf-8") as handle:
+        handle.write(wrapped)
+    return _run([validator, *extra_args, shader])
+
+
+def _column(line_text: str, token: str, message: str) -> int:
+    """glslang reports no column: find the quoted token (or the unexpected one) on the line."""
+    if not token:
+        unexpected = _UNEXPECTED.search(message)
+        token = _GRAMMAR_TOKENS.get(unexpected.group(1), "") if unexpected else ""
+    if not token:
+        return 1
+    if re.fullmatch(r"\w+", token):
+        found = re.search(rf"\b{re.escape(token)}\b", line_text)
+        return found.start() + 1 if found else 1
+    index = line_text.find(token)
+    return index + 1 if index >= 0 else 1
+
+
+def _epilogue_diagnostic(
+    source: str, filename: str, token: str, message: str, severity: str
+) -> Diagnostic:
+    """Explain an error in the `main` that the target appends: the user's entry point is wrong."""
+    origins = build_line_map(source, filename)
+    last = origins[-1] if origins else Origin(filename, 1)
+    if token == "mainImage":
+        defined = re.search(r"\bmainImage\s*\(", source)
+        what = "has the wrong signature" if defined else "is not defined"
+        text = f"mainImage {what}: ShaderToy calls `{MAIN_IMAGE_SIGNATURE}`"
+        return Diagnostic(last.file, last.line, 1, severity, text)
+    if token == "main":
+        text = "do not define `main`: ShaderToy defines it and calls `mainImage`"
+        for index, line in enumerate(split_lines(source)):
+            found = re.search(r"\bmain\s*\(", line)
+            if found:
+                where = origins[index]
+                return Diagnostic(where.file, where.line, found.start() + 1, severity, text)
+        return Diagnostic(last.file, last.line, 1, severity, text)
+    text = f"{message} (in the `main` that ShaderToy appends, which calls `{MAIN_IMAGE_SIGNATURE}`)"
+    return Diagnostic(last.file, last.line, 1, severity, text)
+
+
+def parse_output(output: str, source: str, filename: str, prelude_lines: int) -> list[Diagnostic]:
+    """Turn glslangValidator's output on a wrapped `source` into diagnostics on the user's files."""
+    origins = build_line_map(source, filename)
+    user_lines = split_lines(source)
+    diagnostics: list[Diagnostic] = []
+    for raw in output.splitlines():
+        match = _LINE.match(raw.strip())
+        if not match or _NOISE.search(match.group(3)):
+            continue
+        severity = "error" if match.group(1) == "ERROR" else "warning"
+        token_match = _TOKEN.match(match.group(3))
+        token, message = token_match.groups() if token_match else ("", match.group(3))
+        message = message.strip() or match.group(3)
+        if token and token_match:
+            message = f"'{token}': {message}"
+        if match.group(2) is None:
+            # Link-stage errors name no line; the whole file is at fault.
+            diagnostics.append(Diagnostic(filename, 1, 1, severity, message))
+            continue
+        user_line = int(match.group(2)) - prelude_lines
+        if user_line < 1:
+            diagnostics.append(Diagnostic(filename, 1, 1, severity, f"in the prelude: {message}"))
+        elif user_line > len(origins):
+            diagnostics.append(_epilogue_diagnostic(source, filename, token, message, severity))
+        else:
+            origin = origins[user_line - 1]
+            column = _column(user_lines[user_line - 1], token, message)
+            diagnostics.append(Diagnostic(origin.file, origin.line, column, severity, message))
+    return _unique(diagnostics)
+
+
+def _unique(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    seen: set[str] = set()
+    kept = []
+    for diagnostic in diagnostics:
+        if str(diagnostic) not in seen:
+            seen.add(str(diagnostic))
+            kept.append(diagnostic)
+    return kept
+
+
+def validate(source: str, filename: str = "<input>", target: str = "shadertoy") -> list[Diagnostic]:
+    """Compile `source` as `target` would and return its diagnostics (empty when it is clean)."""
+    wrapped, prelude_lines = wrap_for_target(source, target)
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        result = _compile(wrapped, workdir, [])
+    diagnostics = parse_output(result.stdout + result.stderr, source, filename, prelude_lines)
+    if result.returncode != 0 and not any(d.severity == "error" for d in diagnostics):
+        # A failure we could not parse must not pass silently.
+        detail = (result.stdout + result.stderr).strip() or f"exit status {result.returncode}"
+        diagnostics.append(Diagnostic(filename, 1, 1, "error", f"glslangValidator: {detail}"))
+    return diagnostics
+
+
+def spirv_instruction_count(source: str, target: str = "shadertoy") -> int | None:
+    """Static cost: SPIR-V instructions after `spirv-opt -O`, or None if it does not compile.
+
+    Deterministic, so CI can compare it; without spirv-opt the unoptimised count is returned.
+    """
+    wrapped, _ = wrap_for_target(source, target)
+    # SPIR-V needs ES 3.10; ShaderToy code is valid there, and the count is what matters.
+    wrapped = wrapped.replace("#version 300 es", "#version 310 es", 1)
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        spirv = os.path.join(workdir, "shader.spv")
+        # OpenGL-flavoured SPIR-V (-G); loose uniforms need locations and bindings assigned.
+        flags = ["-G", "--auto-map-bindings", "--auto-map-locations", "-o", spirv]
+        result = _compile(wrapped, workdir, flags)
+        if result.returncode != 0 or not os.path.exists(spirv):
+            return None
+        if os.path.exists(SPIRV_OPT):
+            optimised = os.path.join(workdir, "shader.opt.spv")
+            if _run([SPIRV_OPT, "-O", spirv, "-o", optimised]).returncode == 0:
+                spirv = optimised
+        disassembler = shutil.which("spirv-dis")
+        if disassembler is None:
+            return None
+        listing = _run([disassembler, "--no-header", spirv]).stdout
+        return sum(1 for line in listing.splitlines() if line.strip())
