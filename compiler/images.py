@@ -1,0 +1,114 @@
+"""Rendered images: statistics that show a render is sane, PNG output, and perceptual error.
+
+Images are float32 arrays H x W x C (C = 3 or 4, row 0 at the top) straight from the float
+framebuffer, so they may hold values outside [0, 1], NaN and Inf. Display space is what ShaderToy
+shows and what a PNG stores: RGB clamped to [0, 1] and quantised to 8 bits, NaN shown as magenta.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from typing import Any
+
+import numpy as np
+from glint.compiler.errors import EnvironmentProblem, InputError
+from PIL import Image
+
+# A pixel counts as black or white when every RGB channel is within one 8-bit step of the end.
+BLACK_LEVEL = 1.0 / 255.0
+WHITE_LEVEL = 254.0 / 255.0
+NAN_COLOUR = np.array([1.0, 0.0, 1.0], dtype=np.float32)
+
+
+def _rgb(img: np.ndarray) -> np.ndarray:
+    """The RGB channels as float32; 8-bit input (a loaded PNG) is scaled to [0, 1]."""
+    array = np.asarray(img)
+    if array.ndim == 2:
+        array = np.repeat(array[:, :, None], 3, axis=2)
+    if array.ndim != 3 or array.shape[2] < 3:
+        raise ValueError(f"expected an H x W x 3 or 4 image, got shape {array.shape}")
+    if array.dtype == np.uint8:
+        return array[:, :, :3].astype(np.float32) / 255.0
+    return array[:, :, :3].astype(np.float32)
+
+
+def image_stats(img: np.ndarray) -> dict[str, Any]:
+    """Summarise an image so a test or a report can tell a real render from a blank or broken one.
+
+    `nan`/`inf` count pixels with any such channel (alpha included); the other figures are over
+    the finite RGB values, and are None when there are none.
+    """
+    array = np.asarray(img, dtype=np.float32)
+    channels = array if array.ndim == 3 else array[:, :, None]
+    rgb = _rgb(array)
+    finite = np.isfinite(rgb)
+    values = rgb[finite]
+    all_finite = finite.all(axis=2)
+    masked = np.ma.masked_array(rgb, mask=~finite)
+    black = all_finite & (rgb <= BLACK_LEVEL).all(axis=2)
+    white = all_finite & (rgb >= WHITE_LEVEL).all(axis=2)
+    pixels = max(rgb.shape[0] * rgb.shape[1], 1)
+    has_values = values.size > 0
+    return {
+        "width": int(rgb.shape[1]),
+        "height": int(rgb.shape[0]),
+        "nan": int(np.isnan(channels).any(axis=2).sum()),
+        "inf": int(np.isinf(channels).any(axis=2).sum()),
+        "finite_min": float(values.min()) if has_values else None,
+        "finite_max": float(values.max()) if has_values else None,
+        "mean": [float(v) for v in masked.mean(axis=(0, 1)).filled(np.nan)],
+        "std": [float(v) for v in masked.std(axis=(0, 1)).filled(np.nan)],
+        "black_fraction": float(black.sum()) / pixels,
+        "white_fraction": float(white.sum()) / pixels,
+    }
+
+
+def to_display(img: np.ndarray) -> np.ndarray:
+    """RGB in display space as float32 in [0, 1], on the 8-bit grid that a PNG stores."""
+    rgb = _rgb(img)
+    broken = np.isnan(rgb).any(axis=2)
+    rgb = np.clip(np.nan_to_num(rgb, nan=0.0), 0.0, 1.0)
+    rgb[broken] = NAN_COLOUR
+    return np.round(rgb * 255.0) / 255.0
+
+
+def save_png(img: np.ndarray, path: str) -> None:
+    """Write the image as an 8-bit RGB PNG, atomically: readers see the old file or the new one."""
+    pixels = (to_display(img) * 255.0).round().astype(np.uint8)
+    directory = os.path.dirname(os.path.abspath(path))
+    temp_path = None
+    try:
+        fd, temp_path = tempfile.mkstemp(prefix=".glint-", suffix=".png", dir=directory)
+        with os.fdopen(fd, "wb") as handle:
+            Image.fromarray(pixels, mode="RGB").save(handle, format="PNG")
+        os.replace(temp_path, path)
+    except OSError as exc:
+        if temp_path is not None and os.path.exists(temp_path):
+            os.unlink(temp_path)
+        reason = exc.strerror or str(exc)
+        raise EnvironmentProblem(f"cannot write {path}: {reason}; choose a writable path") from exc
+
+
+def load_png(path: str) -> np.ndarray:
+    """Read a PNG as float32 RGB in [0, 1] (golden images are stored this way)."""
+    try:
+        with Image.open(path) as image:
+            return np.asarray(image.convert("RGB"), dtype=np.float32) / 255.0
+    except OSError as exc:
+        raise InputError(f"cannot read image {path}: {exc}") from exc
+
+
+def flip_error(reference: np.ndarray, test: np.ndarray) -> float:
+    """Mean LDR FLIP error between two images as they are displayed (0 = identical)."""
+    # Imported here: flip_evaluator is only needed when images are compared.
+    import flip_evaluator
+
+    ref, tst = to_display(reference), to_display(test)
+    if ref.shape != tst.shape:
+        raise InputError(
+            f"cannot compare images of different sizes: {ref.shape[1]}x{ref.shape[0]} "
+            f"and {tst.shape[1]}x{tst.shape[0]}"
+        )
+    _, mean, _ = flip_evaluator.evaluate(ref, tst, "LDR", applyMagma=False)
+    return float(mean)
