@@ -1,0 +1,61 @@
+"""Preprocessing tokens: the small lexer the preprocessor works on.
+
+The preprocessor has to see identifiers, numbers and punctuation (to expand macros and to
+evaluate `#if`), but must give back the text it did not touch unchanged, so whitespace is kept
+as tokens too and joining the tokens of a line gives the line back.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+_TOKEN_RE = re.compile(
+    r"""
+    (?P<ws>[ \t\f\v\r]+)
+  | (?P<ident>[A-Za-z_]\w*)
+  | (?P<num>\.?\d(?:[eE][+-]|[\w.])*)      # a pp-number: 1, 1.5e-3, 0x1Fu, 2.f
+  | (?P<op>\#\#|<<=|>>=|\+\+|--|<<|>>|<=|>=|==|!=|&&|\|\||\^\^|[-+*/%&|^]=
+         |[-+*/%&|^!~=<>?:;,.(){}\[\]\#])
+  | (?P<other>.)
+    """,
+    re.VERBOSE,
+)
+
+
+class Tok(NamedTuple):
+    """One preprocessing token; `hide` holds the macros that must not expand it again."""
+
+    kind: str  # ws, ident, num, op, other, or placeholder (an empty `##` operand)
+    text: str
+    col: int = 0  # 1-based column in its line, 0 for tokens made by expansion
+    hide: frozenset[str] = frozenset()
+
+
+def tokenize(text: str) -> list[Tok]:
+    """Split one line of text into tokens, whitespace included."""
+    out: list[Tok] = []
+    for match in _TOKEN_RE.finditer(text):
+        kind = match.lastgroup or "other"
+        out.append(Tok(kind, match.group(), match.start() + 1))
+    return out
+
+
+def join(tokens: list[Tok]) -> str:
+    """Text of a token list, as it will be handed to the parser."""
+    return "".join(t.text for t in tokens)
+
+
+def strip_ws(tokens: list[Tok]) -> list[Tok]:
+    """Drop leading and trailing whitespace tokens."""
+    start, end = 0, len(tokens)
+    while start < end and tokens[start].kind == "ws":
+        start += 1
+    while end > start and tokens[end - 1].kind == "ws":
+        end -= 1
+    return tokens[start:end]
+
+
+def significant(tokens: list[Tok]) -> list[Tok]:
+    """Tokens without whitespace, for directive parsing and `#if` evaluation."""
+    return [t for t in tokens if t.kind != "ws"]
