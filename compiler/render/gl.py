@@ -1,0 +1,143 @@
+"""The OpenGL side of rendering: runs only inside the worker process.
+
+One ShaderToy frame is drawn with a full-screen triangle into an RGBA32F framebuffer, so values
+outside [0, 1], NaN and Inf survive for the checks that follow, and is read back as numpy.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from glint.compiler import shadertoy
+from glint.compiler.glslang import wrap_for_target
+
+# Debian packages that provide headless EGL with Mesa's software rasteriser.
+EGL_PACKAGES = "libegl1 libegl-mesa0 libgl1-mesa-dri"
+# A triangle that covers the viewport; no vertex buffer needed.
+_VERTEX_BODY = (
+    "void main() {\n"
+    "    vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);\n"
+    "    gl_Position = vec4(p, 0.0, 1.0);\n"
+    "}\n"
+)
+# Unbound ShaderToy channels read as black; this is the size of the stand-in texture.
+CHANNEL_SIZE = 1
+_ARRAYS = frozenset({"iChannelTime", "iChannelResolution"})
+
+
+class ContextFailure(Exception):
+    """No OpenGL context could be made: the environment, not the shader, is at fault."""
+
+
+class CompileFailure(Exception):
+    """The driver rejected the shader; the message is its log."""
+
+
+@dataclass
+class Frame:
+    """The ShaderToy inputs of one frame."""
+
+    width: int
+    height: int
+    time: float
+    frame: int
+    mouse: tuple[float, float, float, float]
+    date: tuple[float, float, float, float]
+
+
+def create_context() -> Any:
+    """A headless OpenGL context through EGL."""
+    try:
+        import moderngl
+    except ImportError as exc:
+        raise ContextFailure(f"moderngl cannot be imported: {exc}") from exc
+    try:
+        return moderngl.create_context(standalone=True, backend="egl")
+    except Exception as exc:  # moderngl/glcontext raise plain Exceptions for missing libraries
+        raise ContextFailure(f"cannot create an OpenGL context through EGL: {exc}") from exc
+
+
+def accepts_es3(ctx: Any) -> bool:
+    """Whether a core context compiles `#version 300 es` (GL 4.3 or ARB_ES3_compatibility)."""
+    return ctx.version_code >= 430 or "GL_ARB_ES3_compatibility" in ctx.extensions
+
+
+def glsl_version(ctx: Any) -> str:
+    """The GLSL version the shader is compiled as: ShaderToy's ES 3.00 where the driver can."""
+    return "300 es" if accepts_es3(ctx) else "330"
+
+
+def wrap(source: str, version: str) -> tuple[str, int]:
+    """The complete fragment shader for `version` and the number of lines before the user's."""
+    if version == "300 es":
+        return shadertoy.wrap(source), shadertoy.PRELUDE_LINES
+    return wrap_for_target(source, "desktop")
+
+
+def build_program(ctx: Any, source: str) -> tuple[Any, str]:
+    """Compile the ShaderToy source; return the program and the GLSL version it was built as."""
+    import moderngl
+
+    version = glsl_version(ctx)
+    fragment, _ = wrap(source, version)
+    vertex = f"#version {version}\n" + _VERTEX_BODY
+    try:
+        return ctx.program(vertex_shader=vertex, fragment_shader=fragment), version
+    except moderngl.Error as exc:
+        raise CompileFailure(str(exc).strip()) from exc
+
+
+def _set(program: Any, name: str, values: Any) -> None:
+    """Set a uniform if the program still has it (unused ones are optimised away)."""
+    if name not in program:
+        return
+    uniform = program[name]
+    data = np.asarray(values, dtype=np.int32 if name == "iFrame" else np.float32)
+    if name in _ARRAYS:
+        # The driver keeps the array only up to the last element that is used.
+        data = data[: uniform.array_length]
+    uniform.write(data.tobytes())
+
+
+def set_uniforms(program: Any, frame: Frame) -> None:
+    """Give the program every ShaderToy uniform it uses, with ShaderToy's meaning."""
+    _set(program, "iResolution", (frame.width, frame.height, 1.0))
+    _set(program, "iTime", frame.time)
+    _set(program, "iTimeDelta", 1.0 / 60.0)
+    _set(program, "iFrame", frame.frame)
+    _set(program, "iFrameRate", 60.0)
+    _set(program, "iMouse", frame.mouse)
+    _set(program, "iDate", frame.date)
+    _set(program, "iChannelTime", [frame.time] * 4)
+    _set(program, "iChannelResolution", [(CHANNEL_SIZE, CHANNEL_SIZE, 1.0)] * 4)
+    _set(program, "iSampleRate", 44100.0)
+    for unit in range(4):
+        name = f"iChannel{unit}"
+        if name in program:
+            program[name].value = unit
+
+
+def draw(ctx: Any, program: Any, frame: Frame) -> tuple[np.ndarray, float]:
+    """Draw one frame; return it in image convention (row 0 at the top) and the draw time."""
+    import moderngl
+
+    black = ctx.texture((CHANNEL_SIZE, CHANNEL_SIZE), 4, dtype="f4")
+    for unit in range(4):
+        black.use(location=unit)
+    target = ctx.texture((frame.width, frame.height), 4, dtype="f4")
+    framebuffer = ctx.framebuffer(color_attachments=[target])
+    framebuffer.use()
+    framebuffer.clear(0.0, 0.0, 0.0, 0.0)
+    set_uniforms(program, frame)
+    vertex_array = ctx.vertex_array(program, [])
+    start = time.perf_counter()
+    vertex_array.render(moderngl.TRIANGLES, vertices=3)
+    ctx.finish()
+    seconds = time.perf_counter() - start
+    raw = framebuffer.read(components=4, dtype="f4")
+    pixels = np.frombuffer(raw, dtype=np.float32).reshape(frame.height, frame.width, 4)
+    # GL's origin is the bottom-left corner; images start at the top.
+    return np.ascontiguousarray(pixels[::-1]), seconds

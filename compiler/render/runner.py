@@ -1,0 +1,172 @@
+"""Render a ShaderToy shader in a child process, under a wall-clock limit.
+
+A shader can loop forever and a driver can crash; either must cost the tool one error message,
+never a hang or its own life. So each frame is drawn by `worker.py` in a fresh process, which is
+killed, with everything it started, when the time is up.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass
+
+import numpy as np
+from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
+from glint.compiler.render import gl
+from glint.compiler.sourcemap import split_lines
+
+DEFAULT_TIMEOUT_S = 60.0
+DEFAULT_DATE = (2026.0, 0.0, 1.0, 0.0)  # ShaderToy's iDate: year, month from 0, day, seconds
+_STDERR_TAIL = 2000
+_DRIVER_LINE = re.compile(r"^\d+:(\d+)\((\d+)\):")
+# The headings moderngl puts around the driver's log.
+_BOILERPLATE = re.compile(r"^(GLSL (Compiler|Linker) failed|\w+_shader|=+)\s*$")
+
+
+@dataclass
+class RenderResult:
+    """One rendered frame: float32 H x W x 4, row 0 at the top, and how it was made."""
+
+    image: np.ndarray
+    renderer: str  # GL_RENDERER and version, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (OpenGL 4.5 …)"
+    glsl_version: str  # "300 es", or "330" where the driver lacks ES 3.00 shaders
+    draw_seconds: float  # time of the draw call alone; on llvmpipe this is CPU time
+
+
+def _tail(text: str) -> str:
+    text = text.strip()
+    return text if len(text) <= _STDERR_TAIL else "…" + text[-_STDERR_TAIL:]
+
+
+def _kill(process: subprocess.Popen[bytes]) -> None:
+    """Kill the worker and any thread or child it started (it leads its own process group)."""
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(process.pid, signal.SIGKILL)
+    process.wait()
+
+
+def _run_worker(job: dict[str, object], timeout: float) -> str:
+    """Run the worker on `job`; return its stderr. Raises InputError on timeout."""
+    process = subprocess.Popen(
+        [sys.executable, "-m", "glint.compiler.render.worker"],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
+    try:
+        _, stderr = process.communicate(json.dumps(job).encode(), timeout=timeout)
+    except subprocess.TimeoutExpired:
+        _kill(process)
+        raise InputError(
+            f"rendering did not finish within {timeout:g} s: the shader may loop forever or be "
+            "too slow for the software renderer; bound its loops or raise the time limit"
+        ) from None
+    except BaseException:
+        _kill(process)  # e.g. Ctrl-C: leave no worker behind
+        raise
+    message = stderr.decode(errors="replace")
+    if process.returncode < 0:
+        name = signal.Signals(-process.returncode).name
+        raise InputError(
+            f"the renderer crashed ({name}) while drawing this shader; the driver said: "
+            f"{_tail(message) or 'nothing'}"
+        )
+    if process.returncode != 0:
+        raise InputError(
+            f"the renderer failed (exit status {process.returncode}): {_tail(message) or '?'}"
+        )
+    return message
+
+
+def _outcome(output_dir: str, stderr: str) -> dict[str, object]:
+    path = os.path.join(output_dir, "result.json")
+    try:
+        with open(path, encoding="utf-8") as handle:
+            outcome: dict[str, object] = json.load(handle)
+    except (OSError, ValueError):
+        raise InputError(f"the renderer stopped without a result: {_tail(stderr) or '?'}") from None
+    return outcome
+
+
+def driver_log(log: str, source: str, version: str) -> str:
+    """Mesa's compile log with its line numbers moved from the wrapped shader to the user's code.
+
+    Mesa writes `0:LINE(COLUMN): error: ...`; this becomes `LINE:COLUMN: error: ...`.
+    """
+    _, prelude_lines = gl.wrap(source, version)
+    user_lines = len(split_lines(source))
+
+    def relocate(match: re.Match[str]) -> str:
+        line = int(match.group(1)) - prelude_lines
+        if 1 <= line <= user_lines:
+            return f"{line}:{match.group(2)}:"
+        return "(in the main that ShaderToy appends, which calls mainImage):"
+
+    kept = [line for line in log.splitlines() if line.strip() and not _BOILERPLATE.match(line)]
+    return "\n".join(_DRIVER_LINE.sub(relocate, line) for line in kept) or log
+
+
+def render_full(
+    source: str,
+    width: int = 640,
+    height: int = 360,
+    time: float = 0.0,
+    frame: int = 0,
+    mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
+    timeout: float = DEFAULT_TIMEOUT_S,
+    date: tuple[float, float, float, float] = DEFAULT_DATE,
+) -> RenderResult:
+    """Render one frame of a ShaderToy Image-tab shader; see `render`."""
+    if width < 1 or height < 1:
+        raise UsageError(f"image size must be positive, got {width}x{height}")
+    with tempfile.TemporaryDirectory(prefix="glint-render-") as output_dir:
+        job = {
+            "source": source, "width": width, "height": height, "time": time, "frame": frame,
+            "mouse": list(mouse), "date": list(date), "output_dir": output_dir,
+        }
+        stderr = _run_worker(job, timeout)
+        outcome = _outcome(output_dir, stderr)
+        status, message = outcome.get("status"), str(outcome.get("message", ""))
+        if status == "environment":
+            raise EnvironmentProblem(
+                f"{message}; install {gl.EGL_PACKAGES} (Debian) or run `make setup`"
+            )
+        if status == "compile":
+            log = driver_log(message, source, str(outcome.get("version", "300 es")))
+            raise InputError(f"the OpenGL driver rejected the shader:\n{log}")
+        if status != "ok":
+            raise InputError(f"rendering failed: {message}")
+        image = np.load(os.path.join(output_dir, "image.npy"))
+    return RenderResult(
+        image=image,
+        renderer=str(outcome["renderer"]),
+        glsl_version=str(outcome["glsl_version"]),
+        draw_seconds=float(outcome["seconds"]),  # type: ignore[arg-type]
+    )
+
+
+def render(
+    source: str,
+    width: int = 640,
+    height: int = 360,
+    time: float = 0.0,
+    frame: int = 0,
+    mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
+    timeout: float = DEFAULT_TIMEOUT_S,
+    date: tuple[float, float, float, float] = DEFAULT_DATE,
+) -> np.ndarray:
+    """Render one frame of a ShaderToy Image-tab shader (no #version, no uniforms).
+
+    Returns float32 H x W x 4 with row 0 at the top of the picture. Raises InputError when the
+    shader does not compile, does not finish within `timeout` seconds or crashes the driver, and
+    EnvironmentProblem when no OpenGL context can be created.
+    """
+    return render_full(source, width, height, time, frame, mouse, timeout, date).image

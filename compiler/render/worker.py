@@ -1,0 +1,55 @@
+"""The render worker: `python -m glint.compiler.render.worker`, one frame per process.
+
+It reads a job as JSON on stdin, renders, saves the image as `image.npy` and its outcome as
+`result.json` in the job's directory. Files rather than stdout, because drivers may print there.
+Running in its own process lets the parent kill a shader that never finishes or a crashing driver.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from typing import Any
+
+import numpy as np
+from glint.compiler.render import gl
+
+
+def run_job(job: dict[str, Any]) -> dict[str, Any]:
+    """Render the job; return the outcome to report (status ok, environment, compile or error)."""
+    frame = gl.Frame(
+        width=int(job["width"]),
+        height=int(job["height"]),
+        time=float(job["time"]),
+        frame=int(job["frame"]),
+        mouse=tuple(job["mouse"]),
+        date=tuple(job["date"]),
+    )
+    try:
+        ctx = gl.create_context()
+    except gl.ContextFailure as exc:
+        return {"status": "environment", "message": str(exc)}
+    renderer = f"{ctx.info.get('GL_RENDERER', '?')} (OpenGL {ctx.info.get('GL_VERSION', '?')})"
+    try:
+        program, version = gl.build_program(ctx, job["source"])
+    except gl.CompileFailure as exc:
+        return {"status": "compile", "message": str(exc), "version": gl.glsl_version(ctx)}
+    image, seconds = gl.draw(ctx, program, frame)
+    np.save(os.path.join(job["output_dir"], "image.npy"), image)
+    return {"status": "ok", "renderer": renderer, "glsl_version": version, "seconds": seconds}
+
+
+def main() -> int:
+    job = json.load(sys.stdin)
+    try:
+        outcome = run_job(job)
+    except Exception as exc:  # report anything unexpected to the parent rather than a traceback
+        outcome = {"status": "error", "message": f"{type(exc).__name__}: {exc}"}
+    with open(os.path.join(job["output_dir"], "result.json"), "w", encoding="utf-8") as handle:
+        json.dump(outcome, handle)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
