@@ -45,7 +45,8 @@ def image_stats(img: np.ndarray) -> dict[str, Any]:
     finite = np.isfinite(rgb)
     values = rgb[finite]
     all_finite = finite.all(axis=2)
-    masked = np.ma.masked_array(rgb, mask=~finite)
+    # float64 so that a constant channel has a standard deviation of exactly 0.
+    masked = np.ma.masked_array(rgb.astype(np.float64), mask=~finite)
     black = all_finite & (rgb <= BLACK_LEVEL).all(axis=2)
     white = all_finite & (rgb >= WHITE_LEVEL).all(axis=2)
     pixels = max(rgb.shape[0] * rgb.shape[1], 1)

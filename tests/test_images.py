@@ -1,0 +1,103 @@
+"""Image statistics, atomic PNG output and FLIP comparison."""
+
+from __future__ import annotations
+
+import os
+import stat
+
+import numpy as np
+import pytest
+from glint.compiler.errors import EnvironmentProblem, InputError
+from glint.compiler.images import flip_error, image_stats, load_png, save_png
+
+
+def gradient(width: int = 48, height: int = 32) -> np.ndarray:
+    """A smooth RGBA test picture with values on the 8-bit grid."""
+    y, x = np.mgrid[0:height, 0:width].astype(np.float32)
+    rgb = np.stack([x / (width - 1), y / (height - 1), 0.5 + 0 * x], axis=2)
+    rgba = np.concatenate([rgb, np.ones_like(rgb[:, :, :1])], axis=2)
+    return (np.round(rgba * 255) / 255).astype(np.float32)
+
+
+def test_stats_of_a_gradient() -> None:
+    stats = image_stats(gradient())
+    assert (stats["width"], stats["height"], stats["nan"], stats["inf"]) == (48, 32, 0, 0)
+    assert stats["finite_min"] == 0.0 and stats["finite_max"] == 1.0
+    assert stats["mean"] == pytest.approx([0.5, 0.5, 0.5], abs=0.01)
+    assert stats["std"][2] == 0.0
+    assert stats["black_fraction"] == 0.0 and stats["white_fraction"] == 0.0
+
+
+def test_stats_count_broken_and_blank_pixels() -> None:
+    img = np.zeros((4, 4, 4), dtype=np.float32)
+    img[0, 0, 0] = np.nan
+    img[0, 1, 3] = np.nan  # NaN in alpha counts too
+    img[1, 0, 2] = np.inf
+    img[3, :, :3] = 1.0
+    stats = image_stats(img)
+    assert (stats["nan"], stats["inf"]) == (2, 1)
+    assert stats["black_fraction"] == pytest.approx(10 / 16)
+    assert stats["white_fraction"] == pytest.approx(4 / 16)
+    assert stats["finite_max"] == 1.0
+
+
+def test_png_round_trip(tmp_path: os.PathLike[str]) -> None:
+    img = gradient()
+    img[0, 0, :3] = [2.0, -1.0, 0.5]  # out of range: clamped
+    img[0, 1, 1] = np.nan  # shown as magenta
+    path = os.path.join(tmp_path, "out.png")
+    save_png(img, path)
+    back = load_png(path)
+    assert back.shape == (32, 48, 3)
+    np.testing.assert_array_equal(back[1:], img[1:, :, :3])
+    np.testing.assert_allclose(back[0, 0], [1.0, 0.0, 128 / 255], rtol=1e-6)
+    np.testing.assert_array_equal(back[0, 1], [1.0, 0.0, 1.0])
+    assert os.listdir(tmp_path) == ["out.png"]  # no temporary file left behind
+
+
+def test_unwritable_path_is_an_environment_problem(tmp_path: os.PathLike[str]) -> None:
+    missing = os.path.join(tmp_path, "no", "such", "dir", "out.png")
+    with pytest.raises(EnvironmentProblem, match="choose a writable path") as raised:
+        save_png(gradient(), missing)
+    assert raised.value.exit_code == 2
+    assert not os.path.exists(os.path.dirname(missing))
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root can write to a read-only directory")
+def test_read_only_directory_leaves_nothing(tmp_path: os.PathLike[str]) -> None:
+    locked = os.path.join(tmp_path, "locked")
+    os.mkdir(locked)
+    os.chmod(locked, stat.S_IRUSR | stat.S_IXUSR)
+    try:
+        with pytest.raises(EnvironmentProblem):
+            save_png(gradient(), os.path.join(locked, "out.png"))
+        assert os.listdir(locked) == []
+    finally:
+        os.chmod(locked, stat.S_IRWXU)
+
+
+def test_failed_replace_leaves_no_temporary_file(tmp_path: os.PathLike[str]) -> None:
+    # The target is a directory, so the final rename fails after the PNG was written.
+    target = os.path.join(tmp_path, "taken")
+    os.mkdir(target)
+    with pytest.raises(EnvironmentProblem, match="cannot write"):
+        save_png(gradient(), target)
+    assert os.listdir(tmp_path) == ["taken"]
+
+
+def test_flip_error_of_identical_images_is_zero() -> None:
+    assert flip_error(gradient(), gradient()) == 0.0
+
+
+def test_flip_error_sees_a_difference() -> None:
+    other = gradient()
+    other[8:24, 12:36, :3] = 1.0 - other[8:24, 12:36, :3]
+    error = flip_error(gradient(), other)
+    assert 0.0 < error <= 1.0
+    # A PNG that was written and read back compares equal to the image it came from.
+    assert flip_error(other, np.round(other * 255) / 255) == 0.0
+
+
+def test_flip_error_rejects_different_sizes() -> None:
+    with pytest.raises(InputError, match="different sizes"):
+        flip_error(gradient(48, 32), gradient(32, 48))
