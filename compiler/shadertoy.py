@@ -48,3 +48,20 @@ def wrap(user_source: str) -> str:
     """Return a complete fragment shader: prelude, the user's code unchanged, then `main`."""
     body = user_source if user_source.endswith("\n") else user_source + "\n"
     return PRELUDE + body + EPILOGUE
+
+
+# Desktop GL: the same uniforms under `#version 330`, where precision statements are not needed.
+DESKTOP_PRELUDE = "#version 330\n" + _UNIFORM_BLOCK
+
+
+def wrap_for(target: str, user_source: str) -> str:
+    """The shader as `target` needs it: ShaderToy's Image tab takes the user code as it is;
+    `webgl2` and `desktop` are complete fragment shaders with their own prelude and `main`."""
+    if target == "shadertoy":
+        return user_source
+    body = user_source if user_source.endswith("\n") else user_source + "\n"
+    if target == "webgl2":
+        return PRELUDE + body + EPILOGUE
+    if target == "desktop":
+        return DESKTOP_PRELUDE + body + EPILOGUE
+    raise ValueError(f"unknown target {target!r}")

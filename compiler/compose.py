@@ -1,0 +1,49 @@
+"""Scene to shader: plan, generate the scene's own code, resolve, emit."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from importlib.metadata import version as package_version
+from pathlib import Path
+
+from .catalog import load_catalog
+from .emitter import Shader, emit, parameter_block
+from .planner import plan
+from .resolver import resolve
+from .scene import Scene, load_scene
+from .scenegen import generate
+from .units import generated
+
+
+def glint_version() -> str:
+    return package_version("glint")
+
+
+def compose_scene(
+    scene: Scene,
+    target: str = "shadertoy",
+    tier: str | None = None,
+    overrides: dict[str, str] | None = None,
+) -> Shader:
+    catalog = load_catalog()
+    the_plan = plan(scene, catalog, tier, overrides)
+    code = generate(scene)
+    # The constants come first and provide the light names that snippets may require (SUN_DIR);
+    # their text is written once the resolver has said which snippets' parameters are needed.
+    constants = generated("scene.constants", list(code.defines), [], "", rank=-1)
+    units = resolve([constants, *code.units], catalog, the_plan.choices)
+    block = parameter_block(units, catalog, the_plan, code.defines)
+    units = [replace(u, body=block) if u.id == constants.id else u for u in units]
+    text = emit(scene.name, the_plan, units, target, glint_version())
+    return Shader(text=text, units=units, plan=the_plan)
+
+
+def compose(
+    scene_path: str | Path | None = None,
+    target: str = "shadertoy",
+    tier: str | None = None,
+    overrides: dict[str, str] | None = None,
+) -> Shader:
+    """Compose a scene file (None: the embedded default scene) into one shader."""
+    return compose_scene(load_scene(scene_path), target, tier, overrides)
+

@@ -1,0 +1,101 @@
+"""The planner: which variant fills each slot, and the parameter values the scene sets.
+
+Slots the scene's content decides (camera, background, tone map, output transfer) follow the
+scene; the quality slots follow the tier table in `snippets/tiers.toml`, then the scene's
+`[quality.variants]`, then the command line. Which slots end up in the shader is not decided
+here: the resolver pulls in only what the generated scene code reaches.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+
+from .catalog import Catalog, glsl_value
+from .errors import InputError
+from .scene import LookAtCamera, OrbitCamera, Scene
+from .slots import SLOTS
+
+
+@dataclass
+class Plan:
+    tier: str
+    choices: dict[str, str] = field(default_factory=dict)  # slot -> snippet id
+    reasons: dict[str, str] = field(default_factory=dict)  # slot -> why that variant
+    params: dict[str, str] = field(default_factory=dict)  # #define name -> GLSL value
+
+
+def tier_table() -> dict[str, dict[str, str]]:
+    text = (resources.files("glint.snippets") / "tiers.toml").read_text(encoding="utf-8")
+    return tomllib.loads(text)
+
+
+def plan(
+    scene: Scene,
+    catalog: Catalog,
+    tier: str | None = None,
+    overrides: dict[str, str] | None = None,
+) -> Plan:
+    tier = tier or scene.quality.tier
+    tiers = tier_table()
+    result = Plan(tier=tier)
+
+    def choose(slot: str, variant: str, why: str) -> None:
+        result.choices[slot] = f"{slot}.{variant}"
+        result.reasons[slot] = why
+
+    for slot, variant in tiers["balanced"].items():
+        choose(slot, variant, "balanced tier default")
+    for slot, variant in tiers.get(tier, {}).items():
+        choose(slot, variant, f"{tier} tier")
+    choose("camera", scene.camera.type, f"camera.type = {scene.camera.type!r}")
+    choose("tonemap", scene.post.tonemap, f"post.tonemap = {scene.post.tonemap!r}")
+    choose("output", scene.post.output, f"post.output = {scene.post.output!r}")
+    has_sun = any(light.type == "directional" for light in scene.lights)
+    if scene.background.sun and has_sun:
+        choose("background", "gradient_sun", "background.sun with a directional light")
+    else:
+        choose("background", "gradient", "no sun to draw in the background")
+    for source, table in (
+        ("quality.variants", scene.quality.variants),
+        ("--variant", overrides or {}),
+    ):
+        for slot, variant in table.items():
+            _check_override(catalog, source, slot, variant)
+            choose(slot, variant, f"{source} {slot} = {variant!r}")
+
+    result.params = scene_params(scene)
+    return result
+
+
+def _check_override(catalog: Catalog, source: str, slot: str, variant: str) -> None:
+    if slot not in SLOTS or SLOTS[slot].many:
+        one_variant = [name for name, s in SLOTS.items() if not s.many]
+        raise InputError(f"{source}.{slot}: unknown slot; slots: {', '.join(one_variant)}")
+    variants = sorted(s.variant for s in catalog.in_slot(slot))
+    if variant not in variants:
+        raise InputError(
+            f"{source}.{slot}: unknown variant {variant!r}; variants of {slot}: "
+            + ", ".join(variants)
+        )
+
+
+def scene_params(scene: Scene) -> dict[str, str]:
+    """Values of snippet parameters that the scene sets; snippets' defaults cover the rest."""
+    params: dict[str, str] = {}
+    camera = scene.camera
+    if isinstance(camera, OrbitCamera):
+        params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
+        params["CAMERA_RADIUS"] = glsl_value(camera.radius, "float")
+        params["CAMERA_HEIGHT"] = glsl_value(camera.height, "float")
+        params["CAMERA_SPEED"] = glsl_value(camera.speed, "float")
+        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+    elif isinstance(camera, LookAtCamera):
+        params["CAMERA_POSITION"] = glsl_value(camera.position, "vec3")
+        params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
+        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+    if scene.environment is not None:
+        params["ENV_TOP"] = glsl_value(scene.environment.top, "vec3")
+        params["ENV_BOTTOM"] = glsl_value(scene.environment.bottom, "vec3")
+    return params

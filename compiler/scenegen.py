@@ -1,0 +1,215 @@
+"""GLSL generated from the scene itself: its constants, its distance field, its materials, the
+shading of a hit point and `mainImage`. Everything reusable lives in snippets; this is only the
+scene-specific glue, and it calls slots only through their entry functions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .catalog import glsl_float, glsl_value
+from .errors import InputError
+from .scene import BackLight, Box, DirectionalLight, Material, Plane, Scene, SkyLight, Sphere
+from .units import Unit, generated
+
+
+@dataclass
+class SceneCode:
+    defines: dict[str, str]  # light constants: name -> GLSL expression
+    units: list[Unit]  # map, materials, shading, mainImage
+
+
+def generate(scene: Scene) -> SceneCode:
+    defines, light_calls, light_requires = _lights(scene)
+    materials = _used_materials(scene)
+    units = [_map_unit(scene)]
+    if len(materials) > 1:
+        units.append(_material_index_unit(scene, materials))
+    units.append(_surface_unit(scene, materials))
+    units.append(_shade_unit(scene, light_calls, light_requires))
+    units.append(_main_unit())
+    return SceneCode(defines=defines, units=units)
+
+
+def _vec3(v: list[float]) -> str:
+    return glsl_value(v, "vec3")
+
+
+def _scaled(color: list[float], intensity: float) -> str:
+    return _vec3(color) if intensity == 1.0 else f"({_vec3(color)} * {glsl_float(intensity)})"
+
+
+def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
+    """Constants for each light and the line of `shade` that adds it."""
+    defines: dict[str, str] = {}
+    calls: list[str] = []
+    requires: list[str] = []
+    counts: dict[str, int] = {}
+    key_light = "SUN"  # the first directional light is the sun the background draws
+
+    def name(base: str) -> str:
+        n = counts.get(base, 0)
+        counts[base] = n + 1
+        return base if n == 0 else f"{base}{n}"
+
+    for i, light in enumerate(scene.lights):
+        if isinstance(light, DirectionalLight):
+            ident = name("SUN") if "SUN" not in counts else name("LIGHT")
+            defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            visibility = "1.0"
+            if light.shadow:
+                dist = glsl_float(light.shadow_distance)
+                visibility = f"shadow(s.P, {ident}_DIR, 0.02, {dist})"
+                requires.append("shadow")
+            calls.append(f"directionalLight(s, {ident}_DIR, {ident}_COLOR, {visibility})")
+            requires.append("directionalLight")
+        elif isinstance(light, SkyLight):
+            ident = name("SKY")
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            calls.append(f"skyLight(s, {ident}_COLOR, occlusion)")
+            requires.append("skyLight")
+        elif isinstance(light, BackLight):
+            ident = name("BACK")
+            if light.direction is not None:
+                defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
+            elif "SUN" in counts:
+                # Opposite the sun, horizontal: light bounced back from behind the viewer's side.
+                defines[f"{ident}_DIR"] = f"normalize(vec3(-{key_light}_DIR.x, 0.0, -{key_light}_DIR.z))"
+            else:
+                raise InputError(
+                    f"lights[{i}].direction: a back light needs a direction when the scene "
+                    "has no directional light before it"
+                )
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            calls.append(f"backLight(s, {ident}_DIR, {ident}_COLOR, occlusion)")
+            requires.append("backLight")
+    return defines, calls, requires
+
+
+def _used_materials(scene: Scene) -> list[str]:
+    """Material names in order of first use; unused materials emit nothing."""
+    seen: list[str] = []
+    for obj in scene.objects:
+        if obj.material not in seen:
+            seen.append(obj.material)
+    return seen
+
+
+def _distance(obj: Sphere | Plane | Box) -> tuple[str, str]:
+    """GLSL distance expression of one object at point `p`, and the primitive it calls."""
+    if isinstance(obj, Sphere):
+        return f"sdSphere({_offset(obj.center)}, {glsl_float(obj.radius)})", "sdSphere"
+    if isinstance(obj, Box):
+        return f"sdBox({_offset(obj.center)}, {_vec3(obj.size)})", "sdBox"
+    length = sum(c * c for c in obj.normal) ** 0.5
+    normal = [c / length for c in obj.normal]
+    return f"sdPlane(p, {_vec3(normal)}, {glsl_float(obj.offset / length)})", "sdPlane"
+
+
+def _offset(center: list[float]) -> str:
+    return "p" if not any(center) else f"p - {_vec3(center)}"
+
+
+def _map_unit(scene: Scene) -> Unit:
+    lines = ["// The scene's signed distance: the union of its objects.", "float map(vec3 p) {"]
+    requires = []
+    for i, obj in enumerate(scene.objects):
+        expr, prim = _distance(obj)
+        requires.append(prim)
+        lines.append(f"    float d = {expr};" if i == 0 else f"    d = min(d, {expr});")
+    lines += ["    return d;", "}"]
+    return generated("scene.map", ["map"], requires, "\n".join(lines) + "\n")
+
+
+def _material_index_unit(scene: Scene, materials: list[str]) -> Unit:
+    lines = [
+        "// Index of the material of the object nearest to p.",
+        "int materialAt(vec3 p) {",
+    ]
+    requires = []
+    for i, obj in enumerate(scene.objects):
+        expr, prim = _distance(obj)
+        requires.append(prim)
+        index = materials.index(obj.material)
+        if i == 0:
+            lines += [f"    float best = {expr};", f"    int id = {index};"]
+        else:
+            lines += [
+                f"    float d{i} = {expr};",
+                f"    if (d{i} < best) {{ best = d{i}; id = {index}; }}",
+            ]
+    lines += ["    return id;", "}"]
+    return generated("scene.materials", ["materialAt"], requires, "\n".join(lines) + "\n")
+
+
+def _albedo(material: Material) -> tuple[str, list[str]]:
+    if material.pattern == "checker":
+        assert material.pattern_albedo is not None  # the scene model checks this
+        mixed = f"mix({_vec3(material.albedo)}, {_vec3(material.pattern_albedo)}, checker(P))"
+        return mixed, ["checker"]
+    return _vec3(material.albedo), []
+
+
+def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
+    lines = ["// The material at a hit point.", "Surface surfaceAt(vec3 P, vec3 N, vec3 V) {"]
+    requires = ["Surface", "makeSurface"]
+    if len(materials) > 1:
+        lines.append("    int id = materialAt(P);")
+        requires.append("materialAt")
+    for index in range(len(materials) - 1, -1, -1):
+        material = scene.materials[materials[index]]
+        albedo, needs = _albedo(material)
+        requires += needs
+        call = (
+            f"makeSurface(P, N, V, {albedo}, "
+            f"{glsl_float(material.roughness)}, {glsl_float(material.metallic)})"
+        )
+        if index == 0:
+            lines.append(f"    return {call};")
+        else:
+            lines += [f"    if (id == {index}) {{", f"        return {call};", "    }"]
+    lines.append("}")
+    return generated("scene.surface", ["surfaceAt"], requires, "\n".join(lines) + "\n")
+
+
+def _shade_unit(scene: Scene, light_calls: list[str], light_requires: list[str]) -> Unit:
+    lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
+    requires = ["Surface", *light_requires]
+    uses_occlusion = any("occlusion" in call for call in light_calls)
+    reflection = scene.environment is not None and scene.environment.reflection
+    occlusion = "1.0"
+    if scene.effects.ao and (uses_occlusion or reflection):
+        lines.append("    float occlusion = ambientOcclusion(s.P, s.N);")
+        requires.append("ambientOcclusion")
+        occlusion = "occlusion"
+    lines.append("    vec3 color = vec3(0.0);")
+    for call in light_calls:
+        lines.append(f"    color += {call.replace('occlusion', occlusion)};")
+    if reflection:
+        lines.append(f"    color += environmentLight(s, {occlusion});")
+        requires.append("environmentLight")
+    lines += ["    return color;", "}"]
+    return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n")
+
+
+def _main_unit() -> Unit:
+    body = """void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec3 ro;
+    vec3 rd;
+    cameraRay(fragCoord, ro, rd);
+    vec3 color = background(rd);
+    float t = raymarch(ro, rd);
+    if (t > 0.0) {
+        vec3 P = ro + t * rd;
+        color = shade(surfaceAt(P, calcNormal(P), -rd));
+    }
+    color = outputTransfer(tonemap(color));
+    fragColor = vec4(color, 1.0);
+}
+"""
+    requires = [
+        "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
+        "outputTransfer", "tonemap",
+    ]  # fmt: skip
+    return generated("scene.main", ["mainImage"], requires, body)

@@ -1,0 +1,21 @@
+/* ---
+id = "ao.sdf5"
+slot = "ao"
+summary = "SDF ambient occlusion, 5 taps along the normal"
+provides = ["ambientOcclusion"]
+requires = ["map"]
+params = { AO_STRENGTH = { type = "float", default = 3.0, range = [0.0, 10.0] } }
+sources = ["lighting-model skill, step 9", "Inigo Quilez, SDF ambient occlusion"]
+--- */
+// Compares the distance field at growing heights h along n with h itself: the shortfall is
+// how much nearby geometry closes in. Nearer taps weigh more.
+float ambientOcclusion(vec3 p, vec3 n) {
+    float occ = 0.0;
+    float weight = 1.0;
+    for (int i = 0; i < 5; i++) {
+        float h = 0.01 + 0.12 * float(i) / 4.0;
+        occ += (h - map(p + h * n)) * weight;
+        weight *= 0.95;
+    }
+    return clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
+}

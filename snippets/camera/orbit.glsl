@@ -1,0 +1,19 @@
+/* ---
+id = "camera.orbit"
+slot = "camera"
+summary = "Pinhole camera orbiting CAMERA_TARGET with iTime, looking at it"
+provides = ["cameraRay"]
+requires = []
+params = { CAMERA_RADIUS = { type = "float", default = 3.0, range = [0.01, 1000.0] }, CAMERA_HEIGHT = { type = "float", default = 1.5 }, CAMERA_SPEED = { type = "float", default = 0.3 }, CAMERA_TARGET = { type = "vec3", default = [0.0, 0.0, 0.0] }, CAMERA_FOCAL = { type = "float", default = 1.5, range = [0.1, 100.0] } }
+sources = ["lighting-model skill, complete code template (main function)"]
+--- */
+// Screen coordinates span [-1, 1] vertically; CAMERA_FOCAL is the distance to that screen.
+void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+    float angle = iTime * CAMERA_SPEED;
+    ro = CAMERA_TARGET + vec3(CAMERA_RADIUS * cos(angle), CAMERA_HEIGHT, CAMERA_RADIUS * sin(angle));
+    vec3 ww = normalize(CAMERA_TARGET - ro);
+    vec3 uu = normalize(cross(ww, vec3(0.0, 1.0, 0.0)));
+    vec3 vv = cross(uu, ww);
+    rd = normalize(uv.x * uu + uv.y * vv + CAMERA_FOCAL * ww);
+}

@@ -1,0 +1,9 @@
+/* ---
+id = "core.constants"
+slot = "core"
+summary = "Mathematical constants shared by every snippet"
+provides = ["PI"]
+requires = []
+sources = ["lighting-model skill, complete code template"]
+--- */
+#define PI 3.14159265359

@@ -1,0 +1,57 @@
+/* ---
+id = "core.surface"
+slot = "core"
+summary = "Shading point and the dot products a BRDF term needs, computed once"
+provides = ["Surface", "Dots", "makeSurface", "lightDots", "MIN_NOV", "DIELECTRIC_F0"]
+requires = []
+sources = ["lighting-model skill, steps 1 and 8", "Filament PBR notes, 4.4 (parameterization)"]
+--- */
+// Everything about the point being shaded. Vectors point away from the surface.
+struct Surface {
+    vec3 P;             // position
+    vec3 N;             // unit normal
+    vec3 V;             // unit vector toward the eye
+    vec3 diffuseColor;  // albedo, with the diffuse of metals removed
+    vec3 f0;            // specular reflectance at normal incidence
+    float roughness;    // perceptual roughness
+    float a;            // roughness squared: the one place it is squared
+    float NoV;          // clamped away from 0 so that visibility terms stay finite
+};
+
+// The dot products of one light direction, clamped to where the BRDF is defined.
+struct Dots {
+    float NoL;
+    float NoV;
+    float NoH;
+    float VoH;
+    float LoV;
+};
+
+// Smallest NoV: at exactly 0 the Smith visibility divides 0 by 0 on silhouettes.
+#define MIN_NOV 1e-4
+// Dielectric reflectance at normal incidence (IOR 1.5).
+#define DIELECTRIC_F0 0.04
+
+Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float metallic) {
+    Surface s;
+    s.P = P;
+    s.N = N;
+    s.V = V;
+    s.diffuseColor = albedo * (1.0 - metallic);
+    s.f0 = mix(vec3(DIELECTRIC_F0), albedo, metallic);
+    s.roughness = roughness;
+    s.a = roughness * roughness;
+    s.NoV = max(dot(N, V), MIN_NOV);
+    return s;
+}
+
+Dots lightDots(Surface s, vec3 L) {
+    vec3 H = normalize(s.V + L);
+    Dots d;
+    d.NoL = max(dot(s.N, L), 0.0);
+    d.NoV = s.NoV;
+    d.NoH = max(dot(s.N, H), 0.0);
+    d.VoH = max(dot(s.V, H), 0.0);
+    d.LoV = dot(L, s.V);
+    return d;
+}

@@ -1,0 +1,12 @@
+/* ---
+id = "light.sky"
+slot = "light"
+summary = "Sky fill: the cheap hemisphere integral 0.5 + 0.5·N.y, diffuse only, occluded by AO"
+provides = ["skyLight"]
+requires = ["Surface"]
+sources = ["lighting-model skill, step 8 (sky light)"]
+--- */
+vec3 skyLight(Surface s, vec3 color, float occlusion) {
+    float hemisphere = 0.5 + 0.5 * s.N.y;
+    return s.diffuseColor * color * hemisphere * occlusion;
+}

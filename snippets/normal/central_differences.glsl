@@ -1,0 +1,17 @@
+/* ---
+id = "normal.central_differences"
+slot = "normal"
+summary = "SDF normal by central differences, 6 taps"
+provides = ["calcNormal"]
+requires = ["map"]
+params = { NORMAL_EPS = { type = "float", default = 0.001, range = [1e-6, 0.1] } }
+sources = ["lighting-model skill, step 1"]
+--- */
+vec3 calcNormal(vec3 p) {
+    vec2 e = vec2(NORMAL_EPS, 0.0);
+    return normalize(vec3(
+        map(p + e.xyy) - map(p - e.xyy),
+        map(p + e.yxy) - map(p - e.yxy),
+        map(p + e.yyx) - map(p - e.yyx)
+    ));
+}

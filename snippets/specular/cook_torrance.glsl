@@ -1,0 +1,12 @@
+/* ---
+id = "specular.cook_torrance"
+slot = "specular"
+summary = "Cook-Torrance microfacet lobe assembled from the chosen D, F and V"
+provides = ["specular"]
+requires = ["Surface", "Dots", "D", "V"]
+sources = ["lighting-model skill, step 7", "Cook and Torrance 1982"]
+--- */
+// V already holds G / (4 NoL NoV), so the lobe is a plain product.
+vec3 specular(Surface s, Dots d, vec3 F) {
+    return distribution(d.NoH, s.a) * visibility(d, s.a) * F;
+}
