@@ -1,0 +1,105 @@
+"""The renderer: exact float output, ShaderToy's uniforms and orientation, and its watchdog."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pytest
+from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
+from glint.compiler.render import image_stats, render, render_full
+
+pytestmark = pytest.mark.render
+
+W, H = 64, 36
+
+
+def shader(body: str) -> str:
+    return f"void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n    {body}\n}}\n"
+
+
+def test_constant_colour_is_exact_in_a_float_framebuffer() -> None:
+    result = render_full(shader("fragColor = vec4(0.25, 2.5, -1.5, 0.75);"), W, H)
+    assert result.image.shape == (H, W, 4) and result.image.dtype == np.float32
+    assert (result.image == np.array([0.25, 2.5, -1.5, 0.75], dtype=np.float32)).all()
+    assert result.glsl_version in ("300 es", "330")
+    assert result.draw_seconds >= 0.0
+
+
+def test_rows_start_at_the_top_of_the_picture() -> None:
+    img = render(shader("fragColor = vec4(fragCoord / iResolution.xy, 0.0, 1.0);"), W, H)
+    # fragCoord is at pixel centres, so the bottom row has y = 0.5 / H.
+    assert img[-1, 0, 1] == pytest.approx(0.5 / H)
+    assert img[0, 0, 1] == pytest.approx(1 - 0.5 / H)
+    assert (np.diff(img[:, 0, 1]) < 0).all()  # decreasing down the image
+    assert img[0, 0, 0] == pytest.approx(0.5 / W) and img[0, -1, 0] == pytest.approx(1 - 0.5 / W)
+
+
+def test_uniforms_arrive() -> None:
+    body = (
+        "fragColor = vec4(iTime, float(iFrame), iMouse.x + iMouse.w * 1000.0, "
+        "iResolution.x + iResolution.z * 1000.0);"
+    )
+    img = render(shader(body), W, H, time=2.5, frame=7, mouse=(3.0, 4.0, 5.0, 6.0))
+    np.testing.assert_array_equal(img[0, 0], [2.5, 7.0, 6003.0, W + 1000.0])
+
+
+def test_secondary_uniforms_have_shadertoy_values() -> None:
+    body = (
+        "fragColor = vec4(iTimeDelta * iFrameRate, iSampleRate, iDate.x + iDate.z, "
+        "iChannelTime[2] + iChannelResolution[1].z) + texture(iChannel3, fragCoord);"
+    )
+    img = render(shader(body), 8, 4, time=1.5, date=(2030.0, 5.0, 9.0, 10.0))
+    np.testing.assert_allclose(img[2, 3], [1.0, 44100.0, 2039.0, 2.5], rtol=1e-6)
+
+
+def test_nan_is_reported_by_image_stats() -> None:
+    # Depends on a uniform, so the compiler cannot fold it away.
+    img = render(shader("fragColor = vec4(sqrt(-1.0 - iTime), 0.0, 0.0, 1.0);"), 16, 8)
+    stats = image_stats(img)
+    assert stats["nan"] == 16 * 8
+    assert stats["inf"] == 0
+
+
+def test_non_terminating_shader_is_stopped() -> None:
+    # llvmpipe cuts every loop off after 65535 iterations, so an endless loop alone would
+    # finish; a heavy body (256 sines per iteration) keeps it busy for minutes.
+    source = (
+        "#define X4(s) s s s s\n"
+        + shader(
+            "float a = fragCoord.x;\n"
+            "    while (iTime >= 0.0) { X4(X4(X4(X4(a = sin(a) + 1.0;)))) }\n"
+            "    fragColor = vec4(a);"
+        )
+    )
+    start = time.monotonic()
+    with pytest.raises(InputError, match="did not finish within 5 s") as raised:
+        render(source, W, H, timeout=5)
+    assert time.monotonic() - start < 10
+    assert raised.value.exit_code == 1
+
+
+def test_compile_error_carries_the_driver_log_at_user_lines() -> None:
+    source = shader("vec3 c = vec3(1.0);\n    fragColor = vec4(c, undefinedName);")
+    with pytest.raises(InputError, match="rejected the shader") as raised:
+        render(source, 8, 4)
+    assert "undefinedName" in raised.value.message
+    assert "3:" in raised.value.message  # line 3 of the user's code, not of the prelude
+
+
+def test_missing_main_image_is_an_input_error() -> None:
+    with pytest.raises(InputError, match="mainImage"):
+        render("float helper() { return 1.0; }\n", 8, 4)
+
+
+def test_bad_size_is_a_usage_error() -> None:
+    with pytest.raises(UsageError):
+        render(shader("fragColor = vec4(1.0);"), 0, 4)
+
+
+def test_no_egl_driver_is_an_environment_problem(monkeypatch: pytest.MonkeyPatch) -> None:
+    # An empty list of EGL vendors is what a machine without Mesa's EGL looks like to libglvnd.
+    monkeypatch.setenv("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/egl_vendor.json")
+    with pytest.raises(EnvironmentProblem, match="libegl-mesa0") as raised:
+        render(shader("fragColor = vec4(1.0);"), 8, 4)
+    assert raised.value.exit_code == 2
