@@ -115,26 +115,38 @@ def _column(line_text: str, token: str, message: str) -> int:
     return index + 1 if index >= 0 else 1
 
 
+def _definition(source: str, filename: str, name: str) -> tuple[Origin, int] | None:
+    """Where `name(` first appears in the user's code: its origin and 1-based column."""
+    origins = build_line_map(source, filename)
+    for index, line in enumerate(split_lines(source)):
+        found = re.search(rf"\b{name}\s*\(", line)
+        if found:
+            return Origin(origins[index].file, origins[index].line), found.start() + 1
+    return None
+
+
 def _epilogue_diagnostic(
     source: str, filename: str, token: str, message: str, severity: str
 ) -> Diagnostic:
-    """Explain an error in the `main` that the target appends: the user's entry point is wrong."""
+    """Explain an error in the `main` that the target appends: the user's entry point is wrong.
+
+    It is reported at the user's definition when there is one, else at the last line.
+    """
+    if token == "mainImage":
+        found = _definition(source, filename, "mainImage")
+        what = "has the wrong signature" if found else "is not defined"
+        text = f"mainImage {what}: ShaderToy calls `{MAIN_IMAGE_SIGNATURE}`"
+    elif token == "main":
+        found = _definition(source, filename, "main")
+        text = "do not define `main`: ShaderToy defines it and calls `mainImage`"
+    else:
+        found = None
+        text = f"{message} (in the `main` that ShaderToy appends, which calls mainImage)"
+    if found:
+        origin, column = found
+        return Diagnostic(origin.file, origin.line, column, severity, text)
     origins = build_line_map(source, filename)
     last = origins[-1] if origins else Origin(filename, 1)
-    if token == "mainImage":
-        defined = re.search(r"\bmainImage\s*\(", source)
-        what = "has the wrong signature" if defined else "is not defined"
-        text = f"mainImage {what}: ShaderToy calls `{MAIN_IMAGE_SIGNATURE}`"
-        return Diagnostic(last.file, last.line, 1, severity, text)
-    if token == "main":
-        text = "do not define `main`: ShaderToy defines it and calls `mainImage`"
-        for index, line in enumerate(split_lines(source)):
-            found = re.search(r"\bmain\s*\(", line)
-            if found:
-                where = origins[index]
-                return Diagnostic(where.file, where.line, found.start() + 1, severity, text)
-        return Diagnostic(last.file, last.line, 1, severity, text)
-    text = f"{message} (in the `main` that ShaderToy appends, which calls `{MAIN_IMAGE_SIGNATURE}`)"
     return Diagnostic(last.file, last.line, 1, severity, text)
 
 

@@ -104,7 +104,7 @@ def test_missing_main_image_is_explained() -> None:
 @needs_glslang
 def test_wrong_main_image_signature_is_explained() -> None:
     [diagnostic] = validate("void mainImage(out vec4 c) {\n    c = vec4(1.0);\n}\n", "m.glsl")
-    assert diagnostic.line == 3
+    assert (diagnostic.line, diagnostic.column) == (1, 6)  # at the user's definition
     assert "wrong signature" in diagnostic.message
 
 
