@@ -133,7 +133,9 @@ def _check_keys(meta: dict[str, Any], relpath: str) -> None:
         raise InputError(f"{relpath}: front matter lacks {', '.join(sorted(missing))}")
     if unknown:
         allowed = ", ".join(sorted(REQUIRED_KEYS | OPTIONAL_KEYS))
-        raise InputError(f"{relpath}: unknown front-matter key {sorted(unknown)}; allowed: {allowed}")
+        raise InputError(
+            f"{relpath}: unknown front-matter key {sorted(unknown)}; allowed: {allowed}"
+        )
     for key in ("provides", "requires", "sources"):
         if not isinstance(meta[key], list) or not all(isinstance(v, str) for v in meta[key]):
             raise InputError(f"{relpath}: '{key}' must be a list of strings")
@@ -142,7 +144,8 @@ def _check_keys(meta: dict[str, Any], relpath: str) -> None:
 def _params(raw: dict[str, Any], relpath: str) -> dict[str, Param]:
     params = {}
     for name, spec in raw.items():
-        if not isinstance(spec, dict) or spec.get("type") not in PARAM_TYPES or "default" not in spec:
+        typed = isinstance(spec, dict) and spec.get("type") in PARAM_TYPES
+        if not typed or "default" not in spec:
             raise InputError(
                 f"{relpath}: param '{name}' needs a type ({', '.join(sorted(PARAM_TYPES))}) "
                 "and a default"

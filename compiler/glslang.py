@@ -63,22 +63,15 @@ def find_validator() -> str:
     return path
 
 
-def desktop_prelude() -> str:
-    """The ShaderToy uniforms for desktop GLSL 3.30 (no precision statements needed)."""
-    return "#version 330\n" + "".join(f"uniform {ty} {decl};\n" for ty, decl in shadertoy.UNIFORMS)
-
-
 def wrap_for_target(source: str, target: str) -> tuple[str, int]:
     """Return the complete fragment shader for `target` and how many prelude lines precede the
-    user's first line."""
-    if target in ("shadertoy", "webgl2"):
-        # WebGL2 compiles the same ES 3.00 fragment shader that ShaderToy does.
-        return shadertoy.wrap(source), shadertoy.PRELUDE_LINES
-    if target == "desktop":
-        prelude = desktop_prelude()
-        body = source if source.endswith("\n") else source + "\n"
-        return prelude + body + shadertoy.EPILOGUE, prelude.count("\n")
-    raise UsageError(f"unknown target {target!r}; expected one of: {', '.join(TARGETS)}")
+    user's first line. A source that already opens with `#version` is complete as it is."""
+    if target not in TARGETS:
+        raise UsageError(f"unknown target {target!r}; expected one of: {', '.join(TARGETS)}")
+    if shadertoy.is_complete(source):
+        return source, 0
+    wrap_as = "webgl2" if target == "shadertoy" else target
+    return shadertoy.wrap_for(wrap_as, source), shadertoy.prelude_lines(wrap_as)
 
 
 def _run(args: list[str]) -> subprocess.CompletedProcess[str]:

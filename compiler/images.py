@@ -7,13 +7,14 @@ shows and what a PNG stores: RGB clamped to [0, 1] and quantised to 8 bits, NaN 
 
 from __future__ import annotations
 
-import os
-import tempfile
+import io
 from typing import Any
 
 import numpy as np
-from glint.compiler.errors import EnvironmentProblem, InputError
 from PIL import Image
+
+from glint.compiler.errors import InputError
+from glint.compiler.outputs import write_atomic
 
 # A pixel counts as black or white when every RGB channel is within one 8-bit step of the end.
 BLACK_LEVEL = 1.0 / 255.0
@@ -77,18 +78,9 @@ def to_display(img: np.ndarray) -> np.ndarray:
 def save_png(img: np.ndarray, path: str) -> None:
     """Write the image as an 8-bit RGB PNG, atomically: readers see the old file or the new one."""
     pixels = (to_display(img) * 255.0).round().astype(np.uint8)
-    directory = os.path.dirname(os.path.abspath(path))
-    temp_path = None
-    try:
-        fd, temp_path = tempfile.mkstemp(prefix=".glint-", suffix=".png", dir=directory)
-        with os.fdopen(fd, "wb") as handle:
-            Image.fromarray(pixels, mode="RGB").save(handle, format="PNG")
-        os.replace(temp_path, path)
-    except OSError as exc:
-        if temp_path is not None and os.path.exists(temp_path):
-            os.unlink(temp_path)
-        reason = exc.strerror or str(exc)
-        raise EnvironmentProblem(f"cannot write {path}: {reason}; choose a writable path") from exc
+    buffer = io.BytesIO()
+    Image.fromarray(pixels, mode="RGB").save(buffer, format="PNG")
+    write_atomic(path, buffer.getvalue())
 
 
 def load_png(path: str) -> np.ndarray:

@@ -104,7 +104,8 @@ def _topological(order: list[str], edges: dict[str, set[str]], units: dict[str, 
         for dependent in dependents[uid]:
             waiting[dependent].discard(uid)
             if not waiting[dependent]:
-                heapq.heappush(ready, _rank(units[dependent], order.index(dependent)) + (dependent,))
+                rank = _rank(units[dependent], order.index(dependent))
+                heapq.heappush(ready, rank + (dependent,))
     if len(out) < len(order):
         raise InputError("dependency cycle: " + _find_cycle(waiting))
     return out

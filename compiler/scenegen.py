@@ -75,7 +75,8 @@ def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
                 defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
             elif "SUN" in counts:
                 # Opposite the sun, horizontal: light bounced back from behind the viewer's side.
-                defines[f"{ident}_DIR"] = f"normalize(vec3(-{key_light}_DIR.x, 0.0, -{key_light}_DIR.z))"
+                key = key_light
+                defines[f"{ident}_DIR"] = f"normalize(vec3(-{key}_DIR.x, 0.0, -{key}_DIR.z))"
             else:
                 raise InputError(
                     f"lights[{i}].direction: a back light needs a direction when the scene "

@@ -26,7 +26,12 @@ UNIFORMS: tuple[tuple[str, str], ...] = (
 
 UNIFORM_NAMES: frozenset[str] = frozenset(decl.split("[")[0] for _, decl in UNIFORMS)
 
-_HEADER = "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
+_HEADER = (
+    "#version 300 es\n"
+    "precision highp float;\n"
+    "precision highp int;\n"
+    "precision mediump sampler3D;\n"
+)
 
 _UNIFORM_BLOCK = "".join(f"uniform {ty} {decl};\n" for ty, decl in UNIFORMS)
 
@@ -52,6 +57,16 @@ def wrap(user_source: str) -> str:
 
 # Desktop GL: the same uniforms under `#version 330`, where precision statements are not needed.
 DESKTOP_PRELUDE = "#version 330\n" + _UNIFORM_BLOCK
+
+
+def prelude_lines(target: str) -> int:
+    """How many lines `wrap_for(target, ...)` puts before the user's first line."""
+    return {"shadertoy": 0, "webgl2": PRELUDE_LINES, "desktop": DESKTOP_PRELUDE.count("\n")}[target]
+
+
+def is_complete(source: str) -> bool:
+    """Whether the source is a whole shader (opens with #version) rather than Image-tab code."""
+    return source.lstrip().startswith("#version")
 
 
 def wrap_for(target: str, user_source: str) -> str:

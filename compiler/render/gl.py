@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
 from glint.compiler import shadertoy
 from glint.compiler.glslang import wrap_for_target
 
@@ -72,6 +73,8 @@ def glsl_version(ctx: Any) -> str:
 
 def wrap(source: str, version: str) -> tuple[str, int]:
     """The complete fragment shader for `version` and the number of lines before the user's."""
+    if shadertoy.is_complete(source):
+        return source, 0
     if version == "300 es":
         return shadertoy.wrap(source), shadertoy.PRELUDE_LINES
     return wrap_for_target(source, "desktop")

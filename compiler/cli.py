@@ -1,0 +1,244 @@
+"""The `glint` command line: compose, validate, render and catalog.
+
+Exit codes: 0 success, 1 a problem with the input (scene, shader), 2 usage or environment.
+Every failure is one message on stderr; no traceback reaches the user.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from .errors import GlintError, UsageError
+
+PROG = "glint"
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    handler: Callable[[argparse.Namespace], int] = args.handler
+    try:
+        return handler(args)
+    except GlintError as exc:
+        print(f"{PROG}: {exc.message}", file=sys.stderr)
+        return exc.exit_code
+    except KeyboardInterrupt:
+        print(f"{PROG}: interrupted", file=sys.stderr)
+        return 2
+    except Exception as exc:  # a bug of glint's own: say so in one line, never a traceback
+        print(
+            f"{PROG}: internal error: {type(exc).__name__}: {exc}; please report it",
+            file=sys.stderr,
+        )
+        return 2
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog=PROG,
+        description="Compose, validate and render ShaderToy lighting shaders.",
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    compose = sub.add_parser("compose", help="compose a scene into one shader")
+    compose.add_argument("scene", nargs="?", help="scene TOML file (default: the embedded scene)")
+    compose.add_argument("-o", "--output", help="write the shader here instead of stdout")
+    _add_target(compose)
+    _add_quality(compose)
+    compose.set_defaults(handler=cmd_compose)
+
+    validate = sub.add_parser("validate", help="check a shader with glslangValidator")
+    validate.add_argument("file", help="ShaderToy Image-tab shader (.glsl)")
+    _add_target(validate)
+    validate.set_defaults(handler=cmd_validate)
+
+    render = sub.add_parser("render", help="render a shader or a scene to a PNG")
+    render.add_argument("input", help="shader file, or scene .toml to compose first")
+    render.add_argument("-o", "--output", required=True, help="PNG file to write")
+    render.add_argument("--size", default="640x360", type=_size, help="WxH (default 640x360)")
+    render.add_argument("--time", type=float, default=0.0, help="iTime in seconds")
+    render.add_argument("--frame", type=int, default=0, help="iFrame")
+    render.add_argument("--mouse", type=_mouse, default=(0.0, 0.0, 0.0, 0.0), help="x,y,z,w")
+    render.add_argument("--timeout", type=float, default=60.0, help="seconds before giving up")
+    render.add_argument("--json", action="store_true", help="print the report as JSON")
+    _add_quality(render)
+    render.set_defaults(handler=cmd_render)
+
+    catalog = sub.add_parser("catalog", help="list the snippet catalog")
+    catalog.add_argument("--json", action="store_true", help="one JSON object per snippet")
+    catalog.set_defaults(handler=cmd_catalog)
+    return parser
+
+
+def _add_target(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--target",
+        choices=("shadertoy", "webgl2", "desktop"),
+        default="shadertoy",
+        help="shadertoy: the Image tab (default); webgl2: ES 3.00; desktop: #version 330",
+    )
+
+
+def _add_quality(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--tier", choices=("fast", "balanced", "reference"), help="quality tier")
+    parser.add_argument(
+        "--variant",
+        action="append",
+        default=[],
+        metavar="SLOT=VARIANT",
+        help="choose a variant for a slot (repeatable), e.g. --variant shadow=hard",
+    )
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected WxH such as 640x360, got {text!r}") from None
+    if not (1 <= w <= 8192 and 1 <= h <= 8192):
+        raise argparse.ArgumentTypeError(f"width and height must be 1..8192, got {text!r}")
+    return w, h
+
+
+def _mouse(text: str) -> tuple[float, float, float, float]:
+    try:
+        values = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        values = ()
+    if len(values) != 4:
+        raise argparse.ArgumentTypeError(f"expected four numbers x,y,z,w, got {text!r}")
+    return values  # type: ignore[return-value]
+
+
+def _overrides(pairs: list[str]) -> dict[str, str]:
+    result = {}
+    for pair in pairs:
+        slot, sep, variant = pair.partition("=")
+        if not sep or not slot or not variant:
+            raise UsageError(f"--variant expects SLOT=VARIANT, got {pair!r}")
+        result[slot.strip()] = variant.strip()
+    return result
+
+
+def _version() -> str:
+    from .compose import glint_version
+
+    return glint_version()
+
+
+def _read_text(path: str) -> str:
+    from .errors import InputError
+
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise InputError(f"{path}: is a folder, expected a shader file") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{path}: not UTF-8 text; is it a shader?") from None
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read: {exc.strerror}") from None
+
+
+def cmd_compose(args: argparse.Namespace) -> int:
+    from .compose import compose
+    from .outputs import write_atomic
+
+    shader = compose(args.scene, args.target, args.tier, _overrides(args.variant))
+    if args.output:
+        write_atomic(args.output, shader.text.encode("utf-8"))
+        snippets = sum(1 for u in shader.units if u.slot != "scene")
+        print(
+            f"wrote {args.output}: {args.target} shader, {snippets} snippets, "
+            f"tier {shader.plan.tier}",
+            file=sys.stderr,
+        )
+    else:
+        sys.stdout.write(shader.text)
+    return 0
+
+
+def cmd_validate(args: argparse.Namespace) -> int:
+    from .glslang import validate
+
+    source = _read_text(args.file)
+    diagnostics = validate(source, args.file, args.target)
+    for diagnostic in diagnostics:
+        print(diagnostic)
+    errors = sum(1 for d in diagnostics if d.severity == "error")
+    if errors:
+        print(f"{args.file}: {errors} error{'s' if errors > 1 else ''}", file=sys.stderr)
+        return 1
+    print(f"{args.file}: valid {args.target} shader (glslangValidator)")
+    return 0
+
+
+def cmd_render(args: argparse.Namespace) -> int:
+    from .compose import compose
+    from .render import image_stats, render_full, save_png
+
+    if args.input.endswith(".toml"):
+        source = compose(args.input, "shadertoy", args.tier, _overrides(args.variant)).text
+    else:
+        source = _read_text(args.input)
+    width, height = args.size
+    result = render_full(
+        source, width, height, args.time, args.frame, args.mouse, timeout=args.timeout
+    )
+    save_png(result.image, args.output)
+    stats = image_stats(result.image)
+    report = {
+        "input": args.input,
+        "output": args.output,
+        "renderer": result.renderer,
+        "glsl_version": result.glsl_version,
+        "draw_seconds": result.draw_seconds,
+        "time": args.time,
+        "frame": args.frame,
+        **stats,
+    }
+    if args.json:
+        print(json.dumps(report, indent=2))
+    else:
+        print(f"wrote {args.output} ({width}x{height}, iTime {args.time}) with {result.renderer}")
+        print(
+            f"  NaN pixels: {stats['nan']}, Inf pixels: {stats['inf']}, "
+            f"range [{_num(stats['finite_min'])}, {_num(stats['finite_max'])}], "
+            f"mean RGB {', '.join(_num(v) for v in stats['mean'])}"
+        )
+    return 1 if stats["nan"] or stats["inf"] else 0
+
+
+def _num(value: float | None) -> str:
+    return "n/a" if value is None else f"{value:.4g}"
+
+
+def cmd_catalog(args: argparse.Namespace) -> int:
+    from .catalog_info import catalog_entries
+
+    entries = catalog_entries()
+    if args.json:
+        print(json.dumps(entries, indent=2))
+        return 0
+    for entry in entries:
+        print(f"{entry['id']}  [{entry['slot']}]  {entry['summary']}")
+        for signature in entry["signature"]:
+            print(f"    {signature}")
+        if entry["requires"]:
+            print(f"    requires: {', '.join(entry['requires'])}")
+        if entry["params"]:
+            knobs = ", ".join(f"{p['name']}={p['default']}" for p in entry["params"])
+            print(f"    params: {knobs}")
+        print(f"    sources: {'; '.join(entry['sources'])}")
+        print(f"    file: {entry['file']}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
