@@ -5,6 +5,7 @@ from __future__ import annotations
 import shutil
 
 import pytest
+
 from glint.compiler.errors import EnvironmentProblem, UsageError
 from glint.compiler.glslang import find_validator, spirv_instruction_count, validate
 from glint.compiler.sourcemap import Origin, build_line_map

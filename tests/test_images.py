@@ -7,6 +7,7 @@ import stat
 
 import numpy as np
 import pytest
+
 from glint.compiler.errors import EnvironmentProblem, InputError
 from glint.compiler.images import flip_error, image_stats, load_png, save_png
 

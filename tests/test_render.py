@@ -6,6 +6,7 @@ import time
 
 import numpy as np
 import pytest
+
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
 from glint.compiler.render import image_stats, render, render_full
 

@@ -18,6 +18,7 @@ import tempfile
 from dataclasses import dataclass
 
 import numpy as np
+
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
 from glint.compiler.render import gl
 from glint.compiler.sourcemap import split_lines

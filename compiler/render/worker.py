@@ -13,6 +13,7 @@ import sys
 from typing import Any
 
 import numpy as np
+
 from glint.compiler.render import gl
 
 
