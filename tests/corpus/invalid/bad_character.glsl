@@ -1,0 +1,5 @@
+// unknown character
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    fragColor = vec4(1.0) @ 2.0;
+}

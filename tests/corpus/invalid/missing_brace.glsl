@@ -1,0 +1,4 @@
+// missing closing brace
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    fragColor = vec4(1.0);

@@ -1,0 +1,6 @@
+// an operator missing its operand
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    float a = 1.0 * ;
+    fragColor = vec4(a);
+}

@@ -1,0 +1,6 @@
+// struct member without its semicolon
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    fragColor = vec4(1.0);
+}
+struct { float a } broken;

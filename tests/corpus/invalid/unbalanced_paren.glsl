@@ -1,0 +1,5 @@
+// unbalanced parentheses
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    fragColor = vec4((fragCoord.x, 0.0, 0.0, 1.0);
+}

@@ -1,0 +1,5 @@
+// unterminated block comment
+void mainImage(out vec4 fragColor, in vec2 fragCoord)
+{
+    fragColor = vec4(1.0); /* never closed
+}
