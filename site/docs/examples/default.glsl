@@ -1,0 +1,333 @@
+// glint 0.1.0 - scene 'default', tier balanced, target shadertoy
+// Paste into the Image tab of https://www.shadertoy.com/new as it is.
+// Snippets, in order:
+//   core.constants              Mathematical constants shared by every snippet
+//   core.surface                Shading point and the dot products a BRDF term needs, computed once
+//   sdf.plane                   Signed distance to an infinite plane with unit normal n, offset h from the origin
+//   sdf.sphere                  Signed distance to a sphere centred at the origin
+//   pattern.checker             Checkerboard on the xz plane: 0 or 1 per unit cell
+//   light.back                  Back (rim) fill from a horizontal direction, wrapped half-Lambert, occluded by AO
+//   light.sky                   Sky fill: the cheap hemisphere integral 0.5 + 0.5·N.y, diffuse only, occluded by AO
+//   D.ggx                       GGX / Trowbridge-Reitz normal distribution
+//   F.schlick                   Schlick's Fresnel approximation with pow
+//   V.smith_ggx_correlated      Height-correlated Smith visibility for GGX, G / (4 NoL NoV), exact form
+//   diffuse.lambert             Lambert diffuse BRDF, albedo / π (energy conserving)
+//   specular.cook_torrance      Cook-Torrance microfacet lobe assembled from the chosen D, F and V
+//   light.directional           Directional light: diffuse and specular BRDF times radiance, N·L and visibility
+//   specocc.power               Specular occlusion from AO: clamp((NoV + ao)^a − 1 + ao)
+//   env.gradient                Environment as a vertical gradient from ENV_BOTTOM (down) to ENV_TOP (up)
+//   ibl.simple_reflection       Environment seen along the mirror direction, weighted by Fresnel(NoV) and specular occlusion
+//   camera.orbit                Pinhole camera orbiting CAMERA_TARGET with iTime, looking at it
+//   background.gradient_sun     The environment gradient plus a glow and a disc around the sun
+//   tonemap.reinhard            Reinhard tone map, c / (c + 1) per channel
+//   output.gamma22              Display encoding with a pure 2.2 gamma
+//   ao.sdf5                     SDF ambient occlusion, 5 taps along the normal
+//   shadow.soft                 Soft shadow by sphere tracing toward the light, penumbra k·h/t
+//   normal.central_differences  SDF normal by central differences, 6 taps
+//   raymarch.sphere_tracing     Sphere tracing: distance along the ray to the first hit, or -1
+
+// source: <generated>:1
+// Scene constants (light directions point toward the light).
+#define SUN_DIR normalize(vec3(0.6, 0.8, -0.5))
+#define SUN_COLOR (vec3(1.0, 0.95, 0.85) * 2.0)
+#define SKY_COLOR (vec3(0.2, 0.5, 1.0) * 0.4)
+#define BACK_DIR normalize(vec3(-SUN_DIR.x, 0.0, -SUN_DIR.z))
+#define BACK_COLOR vec3(0.15, 0.1, 0.08)
+// Parameters of the snippets below.
+#define ENV_TOP vec3(0.5, 0.7, 1.0)
+#define ENV_BOTTOM vec3(0.8, 0.85, 0.9)
+#define CAMERA_RADIUS 3.0
+#define CAMERA_HEIGHT 1.5
+#define CAMERA_SPEED 0.3
+#define CAMERA_TARGET vec3(0.0, 0.0, 0.0)
+#define CAMERA_FOCAL 1.5
+#define AO_STRENGTH 3.0
+#define SHADOW_STEPS 24
+#define SHADOW_K 8.0
+#define NORMAL_EPS 0.001
+#define MARCH_STEPS 128
+#define MARCH_EPSILON 0.001
+#define MARCH_FAR 50.0
+
+// source: snippets/core/constants.glsl:9
+#define PI 3.14159265359
+
+// source: snippets/core/surface.glsl:9
+// Everything about the point being shaded. Vectors point away from the surface.
+struct Surface {
+    vec3 P;             // position
+    vec3 N;             // unit normal
+    vec3 V;             // unit vector toward the eye
+    vec3 diffuseColor;  // albedo, with the diffuse of metals removed
+    vec3 f0;            // specular reflectance at normal incidence
+    float roughness;    // perceptual roughness
+    float a;            // roughness squared: the one place it is squared
+    float NoV;          // clamped away from 0 so that visibility terms stay finite
+};
+
+// The dot products of one light direction, clamped to where the BRDF is defined.
+struct Dots {
+    float NoL;
+    float NoV;
+    float NoH;
+    float VoH;
+    float LoV;
+};
+
+// Smallest NoV: at exactly 0 the Smith visibility divides 0 by 0 on silhouettes.
+#define MIN_NOV 1e-4
+// Dielectric reflectance at normal incidence (IOR 1.5).
+#define DIELECTRIC_F0 0.04
+
+Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float metallic) {
+    Surface s;
+    s.P = P;
+    s.N = N;
+    s.V = V;
+    s.diffuseColor = albedo * (1.0 - metallic);
+    s.f0 = mix(vec3(DIELECTRIC_F0), albedo, metallic);
+    s.roughness = roughness;
+    s.a = roughness * roughness;
+    s.NoV = max(dot(N, V), MIN_NOV);
+    return s;
+}
+
+Dots lightDots(Surface s, vec3 L) {
+    vec3 H = normalize(s.V + L);
+    Dots d;
+    d.NoL = max(dot(s.N, L), 0.0);
+    d.NoV = s.NoV;
+    d.NoH = max(dot(s.N, H), 0.0);
+    d.VoH = max(dot(s.V, H), 0.0);
+    d.LoV = dot(L, s.V);
+    return d;
+}
+
+// source: snippets/sdf/plane.glsl:9
+float sdPlane(vec3 p, vec3 n, float h) {
+    return dot(p, n) + h;
+}
+
+// source: snippets/sdf/sphere.glsl:9
+float sdSphere(vec3 p, float radius) {
+    return length(p) - radius;
+}
+
+// source: snippets/pattern/checker.glsl:9
+float checker(vec3 p) {
+    return mod(floor(p.x) + floor(p.z), 2.0);
+}
+
+// source: snippets/light/back.glsl:9
+vec3 backLight(Surface s, vec3 dir, vec3 color, float occlusion) {
+    float wrapped = clamp(dot(s.N, dir) * 0.5 + 0.5, 0.0, 1.0);
+    return s.diffuseColor * color * wrapped * occlusion;
+}
+
+// source: snippets/light/sky.glsl:9
+vec3 skyLight(Surface s, vec3 color, float occlusion) {
+    float hemisphere = 0.5 + 0.5 * s.N.y;
+    return s.diffuseColor * color * hemisphere * occlusion;
+}
+
+// source: snippets/D/ggx.glsl:10
+// D(h) = a² / (π ((n·h)² (a² − 1) + 1)²). Takes a = roughness², never roughness.
+float distribution(float NoH, float a) {
+    float a2 = a * a;
+    float d = NoH * NoH * (a2 - 1.0) + 1.0;
+    return a2 / (PI * d * d);
+}
+
+// source: snippets/F/schlick.glsl:10
+// cosTheta is V·H for a light, N·V for the environment; never N·L.
+vec3 fresnel(vec3 f0, float cosTheta) {
+    return f0 + (1.0 - f0) * pow(1.0 - cosTheta, 5.0);
+}
+
+// source: snippets/V/smith_ggx_correlated.glsl:10
+// Smallest denominator: both terms vanish when NoL = NoV = 0.
+#define MIN_VIS_DENOM 1e-5
+
+float visibility(Dots d, float a) {
+    float a2 = a * a;
+    float gv = d.NoL * sqrt(d.NoV * d.NoV * (1.0 - a2) + a2);
+    float gl = d.NoV * sqrt(d.NoL * d.NoL * (1.0 - a2) + a2);
+    return 0.5 / max(gv + gl, MIN_VIS_DENOM);
+}
+
+// source: snippets/diffuse/lambert.glsl:9
+vec3 diffuse(Surface s, Dots d) {
+    return s.diffuseColor * (1.0 / PI);
+}
+
+// source: snippets/specular/cook_torrance.glsl:9
+// V already holds G / (4 NoL NoV), so the lobe is a plain product.
+vec3 specular(Surface s, Dots d, vec3 F) {
+    return distribution(d.NoH, s.a) * visibility(d, s.a) * F;
+}
+
+// source: snippets/light/directional.glsl:9
+// The diffuse share is what the Fresnel term does not reflect (energy split).
+vec3 directionalLight(Surface s, vec3 L, vec3 radiance, float visibility) {
+    Dots d = lightDots(s, L);
+    vec3 F = fresnel(s.f0, d.VoH);
+    vec3 brdf = (1.0 - F) * diffuse(s, d) + specular(s, d, F);
+    return brdf * radiance * d.NoL * visibility;
+}
+
+// source: snippets/specocc/power.glsl:10
+float specularOcclusion(float NoV, float ao, float a) {
+    return clamp(pow(NoV + ao, a) - 1.0 + ao, 0.0, 1.0);
+}
+
+// source: snippets/env/gradient.glsl:10
+vec3 environment(vec3 dir) {
+    return mix(ENV_BOTTOM, ENV_TOP, clamp(dir.y * 0.5 + 0.5, 0.0, 1.0));
+}
+
+// source: snippets/ibl/simple_reflection.glsl:9
+// No prefiltering: rough surfaces dim the reflection instead of blurring it.
+vec3 environmentLight(Surface s, float ao) {
+    vec3 R = reflect(-s.V, s.N);
+    vec3 F = fresnel(s.f0, s.NoV);
+    float occlusion = specularOcclusion(s.NoV, ao, s.a);
+    return F * environment(R) * occlusion * (1.0 - s.roughness * 0.7);
+}
+
+// source: snippets/camera/orbit.glsl:10
+// Screen coordinates span [-1, 1] vertically; CAMERA_FOCAL is the distance to that screen.
+void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+    float angle = iTime * CAMERA_SPEED;
+    ro = CAMERA_TARGET + vec3(CAMERA_RADIUS * cos(angle), CAMERA_HEIGHT, CAMERA_RADIUS * sin(angle));
+    vec3 ww = normalize(CAMERA_TARGET - ro);
+    vec3 uu = normalize(cross(ww, vec3(0.0, 1.0, 0.0)));
+    vec3 vv = cross(uu, ww);
+    rd = normalize(uv.x * uu + uv.y * vv + CAMERA_FOCAL * ww);
+}
+
+// source: snippets/background/gradient_sun.glsl:9
+vec3 background(vec3 rd) {
+    float sun = clamp(dot(rd, SUN_DIR), 0.0, 1.0);
+    vec3 col = environment(rd);
+    col += SUN_COLOR * 0.3 * pow(sun, 8.0);
+    col += SUN_COLOR * pow(sun, 256.0);
+    return col;
+}
+
+// source: snippets/tonemap/reinhard.glsl:9
+vec3 tonemap(vec3 color) {
+    return color / (color + vec3(1.0));
+}
+
+// source: snippets/output/gamma22.glsl:9
+// max() keeps pow defined: its base must not be negative.
+vec3 outputTransfer(vec3 color) {
+    return pow(max(color, 0.0), vec3(1.0 / 2.2));
+}
+
+// source: <generated>:1
+// The scene's signed distance: the union of its objects.
+float map(vec3 p) {
+    float d = sdSphere(p, 1.0);
+    d = min(d, sdPlane(p, vec3(0.0, 1.0, 0.0), 1.0));
+    return d;
+}
+
+// source: snippets/ao/sdf5.glsl:10
+// Compares the distance field at growing heights h along n with h itself: the shortfall is
+// how much nearby geometry closes in. Nearer taps weigh more.
+float ambientOcclusion(vec3 p, vec3 n) {
+    float occ = 0.0;
+    float weight = 1.0;
+    for (int i = 0; i < 5; i++) {
+        float h = 0.01 + 0.12 * float(i) / 4.0;
+        occ += (h - map(p + h * n)) * weight;
+        weight *= 0.95;
+    }
+    return clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
+}
+
+// source: snippets/shadow/soft.glsl:10
+// The nearest miss h at distance t along the ray bounds the visible part of the light;
+// larger SHADOW_K gives harder edges.
+float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
+    float res = 1.0;
+    float t = tmin;
+    for (int i = 0; i < SHADOW_STEPS; i++) {
+        float h = map(ro + rd * t);
+        res = min(res, SHADOW_K * h / t);
+        t += clamp(h, 0.02, 0.2);
+        if (res < 0.001 || t > tmax) break;
+    }
+    return clamp(res, 0.0, 1.0);
+}
+
+// source: snippets/normal/central_differences.glsl:10
+vec3 calcNormal(vec3 p) {
+    vec2 e = vec2(NORMAL_EPS, 0.0);
+    return normalize(vec3(
+        map(p + e.xyy) - map(p - e.xyy),
+        map(p + e.yxy) - map(p - e.yxy),
+        map(p + e.yyx) - map(p - e.yyx)
+    ));
+}
+
+// source: snippets/raymarch/sphere_tracing.glsl:10
+float raymarch(vec3 ro, vec3 rd) {
+    float t = 0.0;
+    for (int i = 0; i < MARCH_STEPS; i++) {
+        float d = map(ro + rd * t);
+        if (d < MARCH_EPSILON) return t;
+        t += d;
+        if (t > MARCH_FAR) break;
+    }
+    return -1.0;
+}
+
+// source: <generated>:1
+// Index of the material of the object nearest to p.
+int materialAt(vec3 p) {
+    float best = sdSphere(p, 1.0);
+    int id = 0;
+    float d1 = sdPlane(p, vec3(0.0, 1.0, 0.0), 1.0);
+    if (d1 < best) { best = d1; id = 1; }
+    return id;
+}
+
+// source: <generated>:1
+// Light arriving at the eye from a surface point.
+vec3 shade(Surface s) {
+    float occlusion = ambientOcclusion(s.P, s.N);
+    vec3 color = vec3(0.0);
+    color += directionalLight(s, SUN_DIR, SUN_COLOR, shadow(s.P, SUN_DIR, 0.02, 5.0));
+    color += skyLight(s, SKY_COLOR, occlusion);
+    color += backLight(s, BACK_DIR, BACK_COLOR, occlusion);
+    color += environmentLight(s, occlusion);
+    return color;
+}
+
+// source: <generated>:1
+// The material at a hit point.
+Surface surfaceAt(vec3 P, vec3 N, vec3 V) {
+    int id = materialAt(P);
+    if (id == 1) {
+        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), 0.8, 0.0);
+    }
+    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), 0.35, 0.0);
+}
+
+// source: <generated>:1
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec3 ro;
+    vec3 rd;
+    cameraRay(fragCoord, ro, rd);
+    vec3 color = background(rd);
+    float t = raymarch(ro, rd);
+    if (t > 0.0) {
+        vec3 P = ro + t * rd;
+        color = shade(surfaceAt(P, calcNormal(P), -rd));
+    }
+    color = outputTransfer(tonemap(color));
+    fragColor = vec4(color, 1.0);
+}

@@ -1,0 +1,155 @@
+"""The `glint` command as a user runs it: output, exit codes, and one clear line on failure."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from glint.compiler.compose import compose
+
+GLINT = [sys.executable, "-m", "glint.compiler.cli"]
+
+
+def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([*GLINT, *args], capture_output=True, text=True, cwd=cwd, timeout=120)
+
+
+def assert_one_clear_line(result: subprocess.CompletedProcess[str]) -> None:
+    assert "Traceback" not in result.stderr
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert lines and lines[0].startswith("glint: ")
+
+
+def test_compose_to_stdout_is_the_default_scene() -> None:
+    result = run("compose")
+    assert result.returncode == 0
+    assert result.stdout == compose().text
+
+
+def test_compose_to_file(tmp_path: Path) -> None:
+    out = tmp_path / "shader.glsl"
+    result = run("compose", "-o", str(out), "--target", "webgl2")
+    assert result.returncode == 0, result.stderr
+    assert out.read_text().startswith("#version 300 es")
+    assert f"wrote {out}" in result.stderr
+
+
+def test_compose_to_unwritable_path_fails_cleanly(tmp_path: Path) -> None:
+    out = tmp_path / "missing-folder" / "shader.glsl"
+    result = run("compose", "-o", str(out))
+    assert result.returncode == 2
+    assert_one_clear_line(result)
+    assert "cannot write" in result.stderr and "choose a writable path" in result.stderr
+    assert not out.parent.exists()
+
+
+def test_bad_scene_exit_1_names_the_key(tmp_path: Path) -> None:
+    scene = tmp_path / "bad.toml"
+    scene.write_text('[[objects]]\nshape = "sphere"\nradius = "big"\nmaterial = "m"\n'
+                     '[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n')
+    result = run("compose", str(scene))
+    assert result.returncode == 1
+    assert_one_clear_line(result)
+    assert "objects[0].radius" in result.stderr and "'big'" in result.stderr
+
+
+def test_missing_scene_file(tmp_path: Path) -> None:
+    result = run("compose", str(tmp_path / "nope.toml"))
+    assert result.returncode == 1
+    assert_one_clear_line(result)
+
+
+def test_usage_error_exit_2() -> None:
+    result = run("compose", "--variant", "shadow")
+    assert result.returncode == 2
+    assert_one_clear_line(result)
+    assert run("frobnicate").returncode == 2
+
+
+def test_validate_clean_and_broken(tmp_path: Path) -> None:
+    good = tmp_path / "good.glsl"
+    good.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0, 1); }\n")
+    result = run("validate", str(good))
+    assert result.returncode == 0 and "valid shadertoy shader" in result.stdout
+
+    bad = tmp_path / "bad.glsl"
+    bad.write_text("void mainImage(out vec4 c, in vec2 p) {\n    c = texture2D(iChannel0, p);\n}\n")
+    result = run("validate", str(bad))
+    assert result.returncode == 1
+    assert f"{bad}:2:" in result.stdout and "texture2D" in result.stdout
+
+
+def test_validate_maps_composed_errors_to_the_snippet(tmp_path: Path) -> None:
+    text = compose().text.replace("return a2 / (PI * d * d);", "return a2 / (PI * d * d)")
+    shader = tmp_path / "broken.glsl"
+    shader.write_text(text)
+    result = run("validate", str(shader))
+    assert result.returncode == 1
+    ggx = Path("snippets/D/ggx.glsl").read_text().splitlines()
+    line = next(i for i, t in enumerate(ggx, 1) if "return a2 / (PI * d * d);" in t)
+    assert f"snippets/D/ggx.glsl:{line}" in result.stdout or f"snippets/D/ggx.glsl:{line + 1}" in (
+        result.stdout
+    )
+
+
+def test_validate_missing_file() -> None:
+    result = run("validate", "no/such/file.glsl")
+    assert result.returncode == 1
+    assert_one_clear_line(result)
+
+
+@pytest.mark.render
+def test_render_scene_writes_png_and_json(tmp_path: Path) -> None:
+    out = tmp_path / "default.png"
+    result = run("render", "snippets/scenes/default.toml", "-o", str(out), "--size", "96x54",
+                 "--time", "1", "--json")
+    assert result.returncode == 0, result.stderr
+    report = json.loads(result.stdout)
+    assert report["nan"] == 0 and report["inf"] == 0
+    assert (report["width"], report["height"]) == (96, 54)
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.render
+def test_render_nan_is_reported_with_exit_1(tmp_path: Path) -> None:
+    shader = tmp_path / "nan.glsl"
+    shader.write_text(
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(sqrt(-1.0 - iTime), 0.0, 0.0, 1.0); }\n"
+    )
+    result = run("render", str(shader), "-o", str(tmp_path / "nan.png"), "--size", "8x8")
+    assert result.returncode == 1
+    assert "NaN pixels: 64" in result.stdout
+
+
+@pytest.mark.render
+def test_render_endless_loop_times_out(tmp_path: Path) -> None:
+    shader = tmp_path / "loop.glsl"
+    body = " ".join("x = sin(x + 1.0);" for _ in range(64))
+    shader.write_text(
+        "void mainImage(out vec4 c, in vec2 p) {\n"
+        "    float x = p.x;\n"
+        f"    for (int i = 0; i >= 0; i += int(iTime + 1.0)) {{ {body} }}\n"
+        "    c = vec4(x);\n}\n"
+    )
+    result = run("render", str(shader), "-o", str(tmp_path / "loop.png"), "--timeout", "3",
+                 "--size", "64x64")
+    assert result.returncode == 1
+    assert_one_clear_line(result)
+    assert "did not finish within" in result.stderr
+    assert not (tmp_path / "loop.png").exists()
+
+
+def test_catalog_json_is_a_stable_interface() -> None:
+    result = run("catalog", "--json")
+    assert result.returncode == 0, result.stderr
+    entries = json.loads(result.stdout)
+    by_id = {e["id"]: e for e in entries}
+    for entry in entries:
+        assert {"id", "slot", "provides", "requires", "signature", "file"} <= entry.keys()
+        assert Path(entry["file"]).exists()
+    assert by_id["D.ggx"]["signature"] == ["float distribution(float NoH, float a)"]
+    assert by_id["D.ggx"]["provides"] == ["distribution"]

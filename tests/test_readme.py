@@ -1,0 +1,41 @@
+"""The README tells the truth: its commands, its shader excerpt and its picture are current."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from glint.compiler.compose import compose
+from glint.compiler.render import flip_error, load_png, render
+
+ROOT = Path(__file__).parent.parent
+README = (ROOT / "README.md").read_text()
+EXAMPLE = ROOT / "site" / "docs" / "examples" / "default.glsl"
+
+
+def test_the_two_commands_come_first() -> None:
+    first_block = re.search(r"```sh\n(.*?)```", README, re.S)
+    assert first_block is not None
+    assert README.index("```sh") < 20
+    commands = [line.split("#")[0].strip() for line in first_block.group(1).splitlines()]
+    assert commands == ["make demo", "make test"]
+    assert "make test" in (ROOT / ".ci" / "run").read_text()
+
+
+def test_shader_excerpt_is_what_compose_emits() -> None:
+    excerpt = re.search(r"```glsl\n(.*?)```", README, re.S)
+    assert excerpt is not None
+    assert excerpt.group(1) in compose().text
+
+
+def test_example_shader_is_current() -> None:
+    assert EXAMPLE.read_text() == compose().text, "regenerate with: glint compose -o " + str(EXAMPLE)
+
+
+@pytest.mark.render
+def test_example_picture_is_the_default_scene() -> None:
+    picture = load_png(str(EXAMPLE.with_suffix(".png")))
+    fresh = render(compose().text, 640, 360, time=1.0)
+    assert flip_error(picture, fresh) <= 0.001
