@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 from glint.compiler.compose import compose
-from glint.compiler.render import flip_error, load_png, render
+from glint.compiler.images import flip_error, load_png
+from glint.compiler.render import render
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()
