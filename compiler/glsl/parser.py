@@ -64,29 +64,51 @@ class _ReservedWord(Exception):
 
 class _TypeNamePostLex(PostLex):
     """Retypes identifiers that are really keywords or type names, so LALR can tell
-    a declaration (`S x;`) from an expression (`a * b;`). Struct names are learnt as
-    `struct NAME` goes by; scopes are ignored, as shaders rarely reuse a struct's name."""
+    a declaration (`S x;`) from an expression (`a * b;`).
+
+    Struct names are learnt as `struct NAME` goes by. A snippet may also use a struct that
+    another snippet defines; no expression has two identifiers in a row, so an unknown name
+    followed by an identifier is taken as a type (`Material m`) and remembered as one.
+    Scopes are ignored, as shaders rarely reuse a type's name for anything else."""
 
     always_accept = ()
 
     def process(self, stream: Iterator[Token]) -> Iterator[Token]:
-        structs: set[str] = set()
+        types: set[str] = set()
         after_struct = False
-        for tok in stream:
+        tokens = iter(stream)
+        tok = next(tokens, None)
+        while tok is not None:
+            nxt = next(tokens, None)  # one token of lookahead
             if tok.type == "IDENTIFIER":
-                text = tok.value
-                if text in BUILTIN_TYPES:
-                    tok.type = "BUILTIN_TYPE"
-                elif text in QUALIFIER_GROUPS:
-                    tok.type = QUALIFIER_GROUPS[text]
-                elif text in RESERVED_WORDS or "__" in text:
-                    raise _ReservedWord(tok)
-                elif after_struct:
-                    structs.add(text)
-                elif text in structs:
-                    tok.type = "TYPE_NAME"
+                self._retype(tok, nxt, types, after_struct)
             after_struct = tok.type == "STRUCT"
             yield tok
+            tok = nxt
+
+    @staticmethod
+    def _retype(tok: Token, nxt: Token | None, types: set[str], after_struct: bool) -> None:
+        text = tok.value
+        if text in BUILTIN_TYPES:
+            tok.type = "BUILTIN_TYPE"
+        elif text in QUALIFIER_GROUPS:
+            tok.type = QUALIFIER_GROUPS[text]
+        elif text in RESERVED_WORDS or "__" in text:
+            raise _ReservedWord(tok)
+        elif after_struct:
+            types.add(text)
+        elif text in types or _is_plain_identifier(nxt):
+            tok.type = "TYPE_NAME"
+            types.add(text)
+
+
+def _is_plain_identifier(tok: Token | None) -> bool:
+    return (
+        tok is not None
+        and tok.type == "IDENTIFIER"
+        and tok.value not in BUILTIN_TYPES
+        and tok.value not in QUALIFIER_GROUPS
+    )
 
 
 @functools.cache

@@ -202,7 +202,9 @@ class _Collector:
         names: set[str] = set()
         for line in range(meta.line, meta.end_line + 1):
             names |= self.pre.expansions.get(line, set())
-        return names
+        # macros the caller predefined are given, like builtins, not dependencies
+        defines = self.pre.defines
+        return {n for n in names if n not in defines or defines[n].file != "<predefined>"}
 
 
 # -- tree helpers ---------------------------------------------------------------------------
