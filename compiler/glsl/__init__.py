@@ -1,0 +1,26 @@
+"""The GLSL front end shared by the compiler and the linter.
+
+preprocess (with a line map) -> parse (lark LALR, positions on every node) -> symbols.
+"""
+
+from __future__ import annotations
+
+from .parser import GLSLSyntaxError, parse, parse_source
+from .preprocessor import Macro, Preprocessed, PreprocessorError, SourceLocation, preprocess
+from .symbols import FunctionDef, ModuleSymbols, Param, analyze, reachable
+
+__all__ = [
+    "FunctionDef",
+    "GLSLSyntaxError",
+    "Macro",
+    "ModuleSymbols",
+    "Param",
+    "Preprocessed",
+    "PreprocessorError",
+    "SourceLocation",
+    "analyze",
+    "parse",
+    "parse_source",
+    "preprocess",
+    "reachable",
+]
