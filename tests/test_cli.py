@@ -72,7 +72,7 @@ def test_usage_error_exit_2() -> None:
 
 def test_validate_clean_and_broken(tmp_path: Path) -> None:
     good = tmp_path / "good.glsl"
-    good.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0, 1); }\n")
+    good.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0, 1); }")
     result = run("validate", str(good))
     assert result.returncode == 0 and "valid shadertoy shader" in result.stdout
 

@@ -32,7 +32,8 @@ def test_shader_excerpt_is_what_compose_emits() -> None:
 
 
 def test_example_shader_is_current() -> None:
-    assert EXAMPLE.read_text() == compose().text, "regenerate with: glint compose -o " + str(EXAMPLE)
+    hint = f"regenerate with: glint compose -o {EXAMPLE}"
+    assert EXAMPLE.read_text() == compose().text, hint
 
 
 @pytest.mark.render
