@@ -28,7 +28,7 @@ from .slots import SLOTS
 OPEN = "/* ---"
 CLOSE = "--- */"
 REQUIRED_KEYS = {"id", "slot", "summary", "provides", "requires", "sources"}
-OPTIONAL_KEYS = {"params", "domain", "reference", "cost"}
+OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost"}
 PARAM_TYPES = {"float", "int", "bool", "vec3"}
 
 
@@ -53,6 +53,7 @@ class Snippet:
     params: dict[str, Param]
     domain: dict[str, Any]
     reference: str
+    error_budget: dict[str, float]  # bounds of the error against `reference`, e.g. max_abs
     cost: str
     relpath: str  # e.g. "snippets/D/ggx.glsl": how errors and headers name the file
     body: str  # the GLSL after the front matter
@@ -119,6 +120,7 @@ def parse_snippet(text: str, relpath: str) -> Snippet:
         params=_params(meta.get("params", {}), relpath),
         domain=dict(meta.get("domain", {})),
         reference=meta.get("reference", ""),
+        error_budget=dict(meta.get("error_budget", {})),
         cost=meta.get("cost", ""),
         relpath=relpath,
         body="\n".join(lines[end + 1 :]) + "\n",

@@ -36,6 +36,7 @@ def entry(snippet: Snippet) -> dict[str, Any]:
         ],
         "domain": snippet.domain,
         "reference": snippet.reference,
+        "error_budget": snippet.error_budget,
         "cost": snippet.cost,
         "sources": list(snippet.sources),
         "file": snippet.relpath,
