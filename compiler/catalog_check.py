@@ -11,27 +11,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .catalog import Catalog, Snippet, load_catalog
-from .emitter import emit, parameter_block
 from .glsl.symbols import ModuleSymbols, analyze
 from .glslang import Diagnostic, validate
-from .planner import Plan, tier_table
-from .resolver import resolve
 from .slots import SCENE_SYMBOLS, SLOTS
-from .units import generated
-
-# Stand-ins for what the composer generates from a scene, so that a snippet that needs the
-# scene (`map`, the key light) compiles on its own.
-_SCENE_STUB = """float map(vec3 p) { return min(length(p) - 1.0, p.y + 1.0); }
-int materialAt(vec3 p) { return 0; }
-"""
-_SCENE_DEFINES = {"SUN_DIR": "normalize(vec3(0.6, 0.8, -0.5))", "SUN_COLOR": "vec3(2.0)"}
-# Choices for the scene-content slots when a snippet needs one of them.
-_CONTENT_CHOICES = {
-    "camera": "camera.orbit",
-    "background": "background.gradient",
-    "tonemap": "tonemap.none",
-    "output": "output.gamma22",
-}
+from .standalone import standalone_source
 
 
 @dataclass
@@ -89,28 +72,6 @@ def check_front_matter(snippet: Snippet, catalog: Catalog) -> list[Problem]:
                 f"entry `{entry.prototype}` must have the slot's prototype `{slot.prototype}`"
             )
     return [Problem(snippet.relpath, message) for message in problems]
-
-
-def standalone_source(snippet: Snippet, catalog: Catalog) -> str:
-    """The snippet with everything it requires, stand-ins for the scene and a `mainImage`,
-    as one ShaderToy shader."""
-    choices = {slot: f"{slot}.{v}" for slot, v in tier_table()["balanced"].items()}
-    choices |= _CONTENT_CHOICES
-    if not SLOTS[snippet.slot].many:
-        choices[snippet.slot] = snippet.id
-    scene = generated("scene.stub", ["map", "materialAt"], [], _SCENE_STUB)
-    constants = generated("scene.constants", list(_SCENE_DEFINES), [], "", rank=-1)
-    main = generated(
-        "scene.main",
-        ["mainImage"],
-        list(snippet.provides),
-        "void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(0.0); }\n",
-    )
-    units = resolve([constants, scene, main], catalog, choices)
-    plan = Plan(tier="balanced", choices=choices)
-    block = parameter_block(units, catalog, plan, _SCENE_DEFINES)
-    units = [u if u.id != constants.id else generated(u.id, [], [], block, -1) for u in units]
-    return emit(snippet.id, plan, units, "shadertoy", "check")
 
 
 def compile_alone(snippet: Snippet, catalog: Catalog) -> list[Diagnostic]:

@@ -47,6 +47,9 @@ class Frame:
     frame: int
     mouse: tuple[float, float, float, float]
     date: tuple[float, float, float, float]
+    # Float data for iChannel0..3, each H x W x 4; texel (x, y) is array[y, x], no flip, so
+    # a probe shader can read its inputs with texelFetch. Unset channels are black.
+    channels: tuple[np.ndarray, ...] = ()
 
 
 def create_context() -> Any:
@@ -115,7 +118,9 @@ def set_uniforms(program: Any, frame: Frame) -> None:
     _set(program, "iMouse", frame.mouse)
     _set(program, "iDate", frame.date)
     _set(program, "iChannelTime", [frame.time] * 4)
-    _set(program, "iChannelResolution", [(CHANNEL_SIZE, CHANNEL_SIZE, 1.0)] * 4)
+    sizes = [(c.shape[1], c.shape[0], 1.0) for c in frame.channels]
+    sizes += [(CHANNEL_SIZE, CHANNEL_SIZE, 1.0)] * (4 - len(sizes))
+    _set(program, "iChannelResolution", sizes)
     _set(program, "iSampleRate", 44100.0)
     for unit in range(4):
         name = f"iChannel{unit}"
@@ -130,6 +135,11 @@ def draw(ctx: Any, program: Any, frame: Frame) -> tuple[np.ndarray, float]:
     black = ctx.texture((CHANNEL_SIZE, CHANNEL_SIZE), 4, dtype="f4")
     for unit in range(4):
         black.use(location=unit)
+    for unit, data in enumerate(frame.channels):
+        rows, cols = data.shape[:2]
+        texture = ctx.texture((cols, rows), 4, np.ascontiguousarray(data, np.float32), dtype="f4")
+        texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
+        texture.use(location=unit)
     target = ctx.texture((frame.width, frame.height), 4, dtype="f4")
     framebuffer = ctx.framebuffer(color_attachments=[target])
     framebuffer.use()

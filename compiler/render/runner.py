@@ -15,6 +15,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -115,6 +116,20 @@ def driver_log(log: str, source: str, version: str) -> str:
     return "\n".join(_DRIVER_LINE.sub(relocate, line) for line in kept) or log
 
 
+def _save_channels(channels: Sequence[np.ndarray], output_dir: str) -> list[str]:
+    """Write channel data where the worker can load it; at most four, each H x W x 4."""
+    if len(channels) > 4:
+        raise UsageError(f"ShaderToy has four channels, got {len(channels)}")
+    paths = []
+    for unit, data in enumerate(channels):
+        if data.ndim != 3 or data.shape[2] != 4:
+            raise UsageError(f"iChannel{unit} data must be H x W x 4, got shape {data.shape}")
+        path = os.path.join(output_dir, f"channel{unit}.npy")
+        np.save(path, data.astype(np.float32))
+        paths.append(path)
+    return paths
+
+
 def render_full(
     source: str,
     width: int = 640,
@@ -124,6 +139,7 @@ def render_full(
     mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
     timeout: float = DEFAULT_TIMEOUT_S,
     date: tuple[float, float, float, float] = DEFAULT_DATE,
+    channels: Sequence[np.ndarray] = (),
 ) -> RenderResult:
     """Render one frame of a ShaderToy Image-tab shader; see `render`."""
     if width < 1 or height < 1:
@@ -132,6 +148,7 @@ def render_full(
         job = {
             "source": source, "width": width, "height": height, "time": time, "frame": frame,
             "mouse": list(mouse), "date": list(date), "output_dir": output_dir,
+            "channels": _save_channels(channels, output_dir),
         }
         stderr = _run_worker(job, timeout)
         outcome = _outcome(output_dir, stderr)
@@ -163,6 +180,7 @@ def render(
     mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
     timeout: float = DEFAULT_TIMEOUT_S,
     date: tuple[float, float, float, float] = DEFAULT_DATE,
+    channels: Sequence[np.ndarray] = (),
 ) -> np.ndarray:
     """Render one frame of a ShaderToy Image-tab shader (no #version, no uniforms).
 
@@ -170,4 +188,4 @@ def render(
     shader does not compile, does not finish within `timeout` seconds or crashes the driver, and
     EnvironmentProblem when no OpenGL context can be created.
     """
-    return render_full(source, width, height, time, frame, mouse, timeout, date).image
+    return render_full(source, width, height, time, frame, mouse, timeout, date, channels).image

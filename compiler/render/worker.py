@@ -26,6 +26,7 @@ def run_job(job: dict[str, Any]) -> dict[str, Any]:
         frame=int(job["frame"]),
         mouse=tuple(job["mouse"]),
         date=tuple(job["date"]),
+        channels=tuple(np.load(path) for path in job.get("channels", [])),
     )
     try:
         ctx = gl.create_context()

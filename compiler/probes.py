@@ -1,0 +1,130 @@
+"""GPU probes: a snippet's entry function evaluated on the GPU over a list of inputs.
+
+The inputs travel as float textures (iChannel0 and iChannel1, four floats per texel each, so up to
+eight scalars per sample); one pixel evaluates one sample and writes the result into a float
+framebuffer. This runs the snippet's own GLSL through the real driver, so it can be compared with
+its float64 reference in `compiler/references`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import shadertoy
+from .catalog import Catalog, Snippet, load_catalog
+from .errors import InputError
+from .glsl.symbols import FunctionDef, analyze
+from .render import render
+from .slots import SLOTS
+from .standalone import standalone_source
+
+PROBE_PRELUDE = (
+    "#version 300 es\n"
+    "precision highp float;\n"
+    "precision highp int;\n"
+    "uniform vec3 iResolution;\n"
+    "uniform highp sampler2D iChannel0;\n"
+    "uniform highp sampler2D iChannel1;\n"
+)
+# Struct arguments are passed field by field, in declaration order (see snippets/core).
+STRUCT_FIELDS: dict[str, tuple[str, ...]] = {"Dots": ("NoL", "NoV", "NoH", "VoH", "LoV")}
+_SIZES = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
+_SLOTS_PER_SAMPLE = 8  # two RGBA channels
+_ROW = 256  # texels per row of the input textures and the framebuffer
+
+
+@dataclass(frozen=True)
+class Argument:
+    """One scalar input of a probe: `name` is a parameter, or `param.field` for a struct."""
+
+    name: str
+    glsl: str  # how the probe shader reads it, e.g. "in0.x"
+
+
+def entry_function(snippet: Snippet) -> FunctionDef:
+    slot = SLOTS[snippet.slot]
+    if slot.entry is None:
+        raise InputError(f"{snippet.id}: slot {slot.name} has no entry function to probe")
+    symbols = analyze(snippet.body, snippet.relpath)
+    return next(f for f in symbols.functions if f.name == slot.entry)
+
+
+def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
+    """The scalar input names a probe of `function` takes, and the GLSL call that uses them."""
+    names: list[str] = []
+    args: list[str] = []
+
+    def scalar(name: str) -> str:
+        index = len(names)
+        names.append(name)
+        return f"in{index // 4}.{'xyzw'[index % 4]}"
+
+    for param in function.params:
+        if "out" in param.qualifier.split():
+            raise InputError(f"{function.name}: cannot probe an out parameter ({param.name})")
+        if param.type in _SIZES:
+            size = _SIZES[param.type]
+            if size == 1:
+                args.append(scalar(param.name))
+            else:
+                parts = [scalar(f"{param.name}{i}") for i in range(size)]
+                args.append(f"{param.type}({', '.join(parts)})")
+        elif param.type in STRUCT_FIELDS:
+            fields = [scalar(f"{param.name}.{f}") for f in STRUCT_FIELDS[param.type]]
+            args.append(f"{param.type}({', '.join(fields)})")
+        else:
+            raise InputError(f"{function.name}: cannot probe a parameter of type {param.type}")
+    if len(names) > _SLOTS_PER_SAMPLE:
+        raise InputError(f"{function.name}: {len(names)} scalar inputs, a probe takes at most 8")
+    return names, f"{function.name}({', '.join(args)})"
+
+
+def probe_shader(snippet: Snippet, catalog: Catalog) -> tuple[str, list[str], int]:
+    """The probe's source, its scalar input names and the width of its result (1 or 3)."""
+    function = entry_function(snippet)
+    names, call = probe_inputs(function)
+    if function.return_type == "float":
+        result, width = f"vec4({call}, 0.0, 0.0, 1.0)", 1
+    elif function.return_type == "vec3":
+        result, width = f"vec4({call}, 1.0)", 3
+    else:
+        raise InputError(f"{function.name}: cannot probe a {function.return_type} result")
+    main = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    ivec2 texel = ivec2(fragCoord);\n"
+        "    vec4 in0 = texelFetch(iChannel0, texel, 0);\n"
+        "    vec4 in1 = texelFetch(iChannel1, texel, 0);\n"
+        f"    fragColor = {result};\n"
+        "}\n"
+    )
+    # A complete shader with its own prelude: ShaderToy's declares iChannel0..3 without a
+    # precision, so they default to lowp, and Mesa then returns texel values at half precision.
+    code = standalone_source(snippet, catalog, main)
+    return PROBE_PRELUDE + code + shadertoy.EPILOGUE, names, width
+
+
+def run_probe(
+    snippet_id: str, inputs: dict[str, np.ndarray], catalog: Catalog | None = None
+) -> np.ndarray:
+    """Evaluate the snippet's entry on the GPU for every sample: `inputs` maps each scalar input
+    name (see `probe_inputs`) to an array of shape (N,). Returns float32 (N,) or (N, 3)."""
+    catalog = catalog or load_catalog()
+    snippet = catalog.get(snippet_id)
+    source, names, width = probe_shader(snippet, catalog)
+    missing = [n for n in names if n not in inputs]
+    if missing:
+        raise InputError(f"{snippet_id}: probe inputs missing: {', '.join(missing)}")
+    count = len(np.asarray(inputs[names[0]]))
+    rows = max(1, math.ceil(count / _ROW))
+    cols = min(count, _ROW)
+    data = np.zeros((rows * cols, _SLOTS_PER_SAMPLE), dtype=np.float32)
+    for index, name in enumerate(names):
+        data[:count, index] = np.asarray(inputs[name], dtype=np.float32)
+    channels = [data[:, 0:4].reshape(rows, cols, 4), data[:, 4:8].reshape(rows, cols, 4)]
+    image = render(source, cols, rows, channels=channels)
+    # Rendered rows come top-first; texel row 0 (the first samples) is the bottom row.
+    values = image[::-1].reshape(rows * cols, 4)[:count]
+    return values[:, 0] if width == 1 else values[:, :3]
