@@ -2,14 +2,22 @@
 id = "D.ggx"
 slot = "D"
 summary = "GGX / Trowbridge-Reitz normal distribution"
-provides = ["distribution"]
+provides = ["distribution", "MIN_GGX_DENOM"]
 requires = ["PI"]
-domain = { NoH = [0, 1], a = [0, 1] }
-sources = ["lighting-model skill, step 5", "Walter et al. 2007"]
+domain = { NoH = [0, 1], a = [0.002, 1] }
+reference = "D_ggx"
+error_budget = { max_abs = 2e3, max_rel = 0.05 }
+sources = ["lighting-model skill, step 5", "Walter et al. 2007, eq. 33"]
 --- */
+// Floor of (NoH² (a² − 1) + 1): it is 0 at a = 0, NoH = 1, where D is a Dirac spike (0/0).
+#define MIN_GGX_DENOM 1e-15
+
 // D(h) = a² / (π ((n·h)² (a² − 1) + 1)²). Takes a = roughness², never roughness.
+// In float32 the denominator loses digits by cancellation next to NoH = 1 at low roughness
+// (about 3% at a = 0.002); D.ggx_mediump avoids it.
 float distribution(float NoH, float a) {
+    NoH = clamp(NoH, 0.0, 1.0);
     float a2 = a * a;
-    float d = NoH * NoH * (a2 - 1.0) + 1.0;
+    float d = max(NoH * NoH * (a2 - 1.0) + 1.0, MIN_GGX_DENOM);
     return a2 / (PI * d * d);
 }

@@ -4,15 +4,21 @@ slot = "V"
 summary = "Height-correlated Smith visibility for GGX, G / (4 NoL NoV), exact form"
 provides = ["visibility", "MIN_VIS_DENOM"]
 requires = ["Dots"]
-domain = { NoV = [0, 1], NoL = [0, 1], a = [0, 1] }
-sources = ["lighting-model skill, step 6 method 2", "Heitz 2014", "Filament PBR notes 4.4.2"]
+domain = { NoV = [0.001, 1], NoL = [0, 1], a = [0.002, 1] }
+reference = "V_smith_ggx_correlated"
+error_budget = { max_abs = 1e-3, max_rel = 1e-5 }
+sources = ["lighting-model skill, step 6 method 2", "Heitz 2014, eq. 99", "Filament PBR notes 4.4.2"]
 --- */
 // Smallest denominator: both terms vanish when NoL = NoV = 0.
 #define MIN_VIS_DENOM 1e-5
 
+// V = G2 / (4 NoL NoV) with G2 = 1 / (1 + Λ(v) + Λ(l)), Λ of GGX, multiplied out so that it is
+// finite at NoL = 0 (Heitz 2014, Filament). The cosines are clamped to [0, 1].
 float visibility(Dots d, float a) {
+    float NoL = clamp(d.NoL, 0.0, 1.0);
+    float NoV = clamp(d.NoV, 0.0, 1.0);
     float a2 = a * a;
-    float gv = d.NoL * sqrt(d.NoV * d.NoV * (1.0 - a2) + a2);
-    float gl = d.NoV * sqrt(d.NoL * d.NoL * (1.0 - a2) + a2);
+    float gv = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
+    float gl = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
     return 0.5 / max(gv + gl, MIN_VIS_DENOM);
 }

@@ -1,0 +1,25 @@
+/* ---
+id = "V.cook_torrance"
+slot = "V"
+summary = "Cook-Torrance's V-groove geometry term, min(1, 2NoH NoV/VoH, 2NoH NoL/VoH) / (4 NoL NoV)"
+provides = ["visibility", "MIN_CT_COS"]
+requires = ["Dots"]
+domain = { NoV = [0.001, 1], NoL = [0.001, 1], NoH = [0, 1], VoH = [0.001, 1] }
+reference = "V_cook_torrance"
+error_budget = { max_abs = 1e-3, max_rel = 1e-5 }
+sources = ["Cook & Torrance 1982, eq. 7", "Blinn 1977"]
+--- */
+// Smallest cosine in a denominator: NoL, NoV and VoH can each be 0 at grazing.
+#define MIN_CT_COS 1e-5
+
+// G = min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH) (Cook & Torrance 1982), divided by 4 NoL NoV
+// term by term, V = min(1/(4 NoL NoV), NoH/(2 VoH NoL), NoH/(2 VoH NoV)), so that the 0/0 of
+// NoL → 0 becomes its finite limit. It does not depend on the roughness a.
+float visibility(Dots d, float a) {
+    float NoL = max(clamp(d.NoL, 0.0, 1.0), MIN_CT_COS);
+    float NoV = max(clamp(d.NoV, 0.0, 1.0), MIN_CT_COS);
+    float NoH = clamp(d.NoH, 0.0, 1.0);
+    float VoH = max(clamp(d.VoH, 0.0, 1.0), MIN_CT_COS);
+    float h = 0.5 * NoH / VoH;
+    return min(0.25 / (NoL * NoV), min(h / NoL, h / NoV));
+}
