@@ -1,0 +1,408 @@
+"""Statements and calls, run over lanes with masks instead of branches.
+
+Divergent control flow runs every path that any lane takes: an `if` runs its branches with
+complementary masks, `return`/`break`/`continue` drop lanes from the mask until the function
+or loop ends, and a loop repeats while any lane is still in it. Statements are skipped once no
+lane is active, so uniform control flow costs what it would on the GPU.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from lark import Token, Tree
+
+from ..glsl.parser import parse_source
+from ..slots import SCENE_SYMBOLS
+from .builtins import UNSUPPORTED, call_builtin
+from .expressions import ExpressionEvaluator, Frame, Loop
+from .values import (
+    AnyValue,
+    StructValue,
+    Value,
+    base_of,
+    copy_value,
+    is_matrix,
+    mat_shape,
+    np_dtype,
+    select,
+    stack,
+    vec_size,
+)
+
+MAX_ITERATIONS = 10_000  # a loop still running after this many iterations is an error
+_LAYOUT_WORDS = {"in", "out", "inout"}
+
+
+@dataclass
+class Function:
+    name: str
+    return_type: str
+    params: list[tuple[str, str, str]]  # (in | out | inout, type, name)
+    body: Tree
+
+
+class Interpreter(ExpressionEvaluator):
+    """One parsed module at one float precision."""
+
+    def __init__(
+        self,
+        source: str,
+        filename: str = "<input>",
+        predefined: dict[str, str] | None = None,
+        dtype: Any = np.float32,
+        externals: dict[str, Any] | None = None,
+    ) -> None:
+        tree, self.pre = parse_source(source, filename, predefined)
+        self.text = self.pre.text
+        self.ft = np.dtype(dtype).type
+        self.structs = {}
+        self.functions: dict[str, list[Function]] = {}
+        self.prototypes: dict[str, str] = {}  # return types of functions declared, not defined
+        self.externals = dict(externals or {})
+        self.globals = {}
+        self.mask = np.asarray(True)
+        self.frame = Frame([self.globals], "void", np.asarray(False))
+        for name, ext in self.externals.items():
+            if not callable(ext):
+                self.globals[name] = self._external_value(name, ext)
+        with np.errstate(all="ignore"):
+            for node in tree.children:
+                self._top_level(node)
+
+    # ---- module --------------------------------------------------------------------------
+
+    def _top_level(self, node: Tree) -> None:
+        if node.data == "function_definition":
+            fn = self._function(node.children[0], node.children[1])
+            self.functions.setdefault(fn.name, []).append(fn)
+        elif node.data == "function_prototype":
+            self.prototypes[str(node.children[1])] = self.type_of(_spec(node.children[0]))
+        elif node.data == "variable_declaration":
+            qualifiers = _qualifiers(node.children[0])
+            if qualifiers & {"uniform", "in", "out"}:  # shader inputs come from externals
+                self.type_of(_spec(node.children[0]))
+                return
+            self._s_variable_declaration(node)
+
+    def _function(self, proto: Tree, body: Tree) -> Function:
+        params: list[tuple[str, str, str]] = []
+        for child in proto.children[2:]:
+            for param in child.children:
+                spec = _spec(param)
+                names = [c for c in param.children if isinstance(c, Token)]
+                quals = _qualifiers(param) & _LAYOUT_WORDS
+                if not names:  # `float f(void)` or an unnamed parameter
+                    if self.type_of(spec) == "void":
+                        continue
+                    names = [Token("IDENTIFIER", f"_arg{len(params)}")]
+                params.append((quals.pop() if quals else "in", self.type_of(spec), str(names[0])))
+        return Function(
+            str(proto.children[1]), self.type_of(_spec(proto.children[0])), params, body
+        )
+
+    # ---- calls -------------------------------------------------------------------------------
+
+    def call(
+        self, name: str, args: Sequence[Any] | dict[str, Any]
+    ) -> tuple[AnyValue, dict[str, AnyValue]]:
+        """Call `name` from Python: (return value, out/inout parameters by name)."""
+        fns = self.functions.get(name)
+        if not fns:
+            raise KeyError(f"no function '{name}' in the module")
+        fn = fns[0] if len(fns) == 1 else self._overload(fns, len(args))
+        if isinstance(args, dict):
+            missing = [p for _, _, p in fn.params if p not in args]
+            if missing:
+                raise TypeError(f"{name}: missing arguments {missing}")
+            args = [args[p] for _, _, p in fn.params]
+        if len(args) != len(fn.params):
+            raise TypeError(f"{name} takes {len(fn.params)} arguments, got {len(args)}")
+        values = [self.from_python(a, t) for (_, t, _), a in zip(fn.params, args, strict=True)]
+        with np.errstate(all="ignore"):
+            return self._run(fn, values)
+
+    def _overload(
+        self, fns: list[Function], count: int, types: list[str] | None = None
+    ) -> Function:
+        for fn in fns:
+            if len(fn.params) == count and (types is None or [t for _, t, _ in fn.params] == types):
+                return fn
+        for fn in fns:
+            if len(fn.params) == count:
+                return fn
+        raise KeyError(f"no overload of '{fns[0].name}' takes {count} arguments")
+
+    def _run(self, fn: Function, values: list[AnyValue]) -> tuple[AnyValue, dict[str, AnyValue]]:
+        scope: dict[str, AnyValue] = {}
+        for (qual, type_, pname), v in zip(fn.params, values, strict=True):
+            scope[pname] = self.zero(type_) if qual == "out" else self.coerce(v, type_, fn.body)
+        frame = Frame([self.globals, scope], fn.return_type, np.asarray(False))
+        saved_frame, saved_mask = self.frame, self.mask
+        self.frame = frame
+        try:
+            self._s_compound_statement(fn.body)
+        finally:
+            self.frame, self.mask = saved_frame, saved_mask
+        result = frame.result if frame.result is not None else self.zero(fn.return_type)
+        outs = {p: scope[p] for q, _, p in fn.params if q != "in"}
+        return result, outs
+
+    def _e_call(self, node: Tree) -> AnyValue:
+        callee = node.children[0]
+        arg_nodes = list(node.children[1].children) if len(node.children) > 1 else []
+        if callee.data != "variable":
+            raise self.error(node, "method calls such as .length() are not supported", True)
+        name = str(callee.children[0])
+        if name in self.functions:
+            return self._call_user(name, arg_nodes, node)
+        if name in self.externals and callable(self.externals[name]):
+            return self._call_external(name, [self.expr(a) for a in arg_nodes], node)
+        if name in UNSUPPORTED:
+            raise self.error(node, f"'{name}' cannot be evaluated on the CPU", True)
+        args = [self.value(a) for a in arg_nodes]
+        try:
+            return call_builtin(name, args, self.ft)
+        except KeyError:
+            raise self.error(node, f"unknown function '{name}' (pass it in externals?)") from None
+        except (IndexError, ValueError) as exc:
+            raise self.error(node, f"bad arguments to {name}: {exc}") from None
+
+    def _call_user(self, name: str, arg_nodes: list[Tree], node: Tree) -> AnyValue:
+        fns = self.functions[name]
+        args = [
+            None if self._is_out(fns, i, len(arg_nodes)) else self.expr(a)
+            for i, a in enumerate(arg_nodes)
+        ]
+        types = [a.type if a is not None else "" for a in args]
+        fn = fns[0] if len(fns) == 1 else self._overload(fns, len(args), types)
+        values = [
+            a if a is not None else self.zero(t)
+            for a, (_, t, _) in zip(args, fn.params, strict=True)
+        ]
+        result, outs = self._run(fn, values)
+        for (qual, _, pname), arg in zip(fn.params, arg_nodes, strict=True):
+            if qual != "in":  # copy out, in the caller's active lanes
+                self.assign(self.lvalue(arg), outs[pname], arg)
+        return result
+
+    def _is_out(self, fns: list[Function], i: int, count: int) -> bool:
+        fn = next((f for f in fns if len(f.params) == count), fns[0])
+        return i < len(fn.params) and fn.params[i][0] == "out"
+
+    def _call_external(self, name: str, args: list[AnyValue], node: Tree) -> AnyValue:
+        from .values import to_numpy
+
+        result = self.externals[name](*[to_numpy(a) for a in args])
+        type_ = self.prototypes.get(name) or _scene_type(name)
+        if type_ is None:  # guess: one more axis than the lanes is a vector
+            arr = np.asarray(result)
+            lane_dims = max(
+                (
+                    np.asarray(to_numpy(a)).ndim - (vec_size(a.type) > 1)
+                    for a in args
+                    if isinstance(a, Value)
+                ),
+                default=0,
+            )
+            type_ = f"vec{arr.shape[-1]}" if arr.ndim > lane_dims else "float"
+        return self.from_python(result, type_)
+
+    def _external_value(self, name: str, value: Any) -> AnyValue:
+        if isinstance(value, Value | StructValue):
+            return value
+        type_ = _scene_type(name)
+        arr = np.asarray(value)
+        if type_ is None:
+            type_ = f"vec{arr.shape[-1]}" if arr.ndim == 1 and 2 <= arr.shape[0] <= 4 else "float"
+        return self.from_python(value, type_)
+
+    def from_python(self, value: Any, type_: str) -> AnyValue:
+        """numpy arrays or numbers as a value of `type_`: a vecK from an array (..., K) or a
+        sequence of K lane arrays; a struct from a dict of its fields."""
+        if isinstance(value, Value | StructValue):
+            return value
+        if type_ in self.structs:
+            if not isinstance(value, dict):
+                raise TypeError(f"a {type_} is passed as a dict of its fields")
+            return StructValue(
+                type_, {n: self.from_python(value[n], t) for n, t in self.structs[type_]}
+            )
+        dtype = np_dtype(base_of(type_), self.ft)
+        size = vec_size(type_)
+        if size > 1 and isinstance(value, list | tuple) and len(value) == size:
+            return Value(type_, stack([np.asarray(v) for v in value], dtype))
+        arr = np.asarray(value).astype(dtype)
+        want = mat_shape(type_) if is_matrix(type_) else (size,) if size > 1 else ()
+        if want and arr.shape[arr.ndim - len(want) :] != want:
+            raise TypeError(f"a {type_} needs trailing shape {want}, got {arr.shape}")
+        return Value(type_, arr)
+
+    # ---- statements --------------------------------------------------------------------------
+
+    def stmt(self, node: Tree) -> None:
+        if not self.mask.any():
+            return
+        handler = getattr(self, "_s_" + node.data, None)
+        if handler is None:
+            raise self.error(node, f"'{node.data}' is not supported", True)
+        handler(node)
+
+    def _scoped(self, node: Tree) -> None:
+        self.frame.scopes.append({})
+        try:
+            self.stmt(node)
+        finally:
+            self.frame.scopes.pop()
+
+    def _s_compound_statement(self, node: Tree) -> None:
+        self.frame.scopes.append({})
+        try:
+            for child in node.children:
+                self.stmt(child)
+        finally:
+            self.frame.scopes.pop()
+
+    def _s_declaration_statement(self, node: Tree) -> None:
+        self.stmt(node.children[0])
+
+    def _s_precision_declaration(self, node: Tree) -> None:
+        pass
+
+    def _s_empty_statement(self, node: Tree) -> None:
+        pass
+
+    def _s_expression_statement(self, node: Tree) -> None:
+        self.expr(node.children[0])
+
+    def _s_variable_declaration(self, node: Tree) -> None:
+        type_ = self.type_of(_spec(node.children[0]))
+        scope = self.frame.scopes[-1]
+        for decl in node.children[1:]:
+            name = str(decl.children[0])
+            rest = decl.children[1:]
+            if rest and rest[0].data == "array_specifier":
+                raise self.error(decl, "arrays are not supported by the evaluator", True)
+            value = self.coerce(self.expr(rest[0]), type_, decl) if rest else self.zero(type_)
+            scope[name] = value
+
+    def _s_if_statement(self, node: Tree) -> None:
+        cond = self.truth(node.children[0])
+        entry = self.mask
+        exits = []
+        for lanes_, branch in (
+            (cond, node.children[1]),
+            (~cond, node.children[2] if len(node.children) > 2 else None),
+        ):
+            self.mask = entry & lanes_
+            if branch is not None:
+                self._scoped(branch)
+            exits.append(self.mask)
+        self.mask = exits[0] | exits[1]
+
+    def _s_jump_statement(self, node: Tree) -> None:
+        kind = str(node.children[0])
+        if kind == "return":
+            if len(node.children) > 1:
+                value = self.coerce(self.expr(node.children[1]), self.frame.return_type, node)
+                prev = self.frame.result
+                self.frame.result = value if prev is None else select(self.mask, value, prev)
+            self.frame.returned = self.frame.returned | self.mask
+        elif kind in ("break", "continue"):
+            if not self.frame.loops:
+                raise self.error(node, f"'{kind}' outside a loop")
+            loop = self.frame.loops[-1]
+            if kind == "break":
+                loop.broken = loop.broken | self.mask
+            else:
+                loop.continued = loop.continued | self.mask
+        else:
+            raise self.error(node, f"'{kind}' is not supported", True)
+        self.mask = self.mask & False  # these lanes run nothing more in this block
+
+    def _s_for_statement(self, node: Tree) -> None:
+        init, *middle, body = node.children
+        cond = incr = None
+        for part in middle:  # which of the optional parts is there: count the `;` before it
+            if self.text.count(";", node.meta.start_pos, part.meta.start_pos) >= 2:
+                incr = part
+            else:
+                cond = part
+        self.frame.scopes.append({})
+        try:
+            self.stmt(init)
+            self._loop(node, cond, body, incr)
+        finally:
+            self.frame.scopes.pop()
+
+    def _s_while_statement(self, node: Tree) -> None:
+        if node.children[0].data == "condition_declaration":
+            raise self.error(node, "declarations in a while condition are not supported", True)
+        self._loop(node, node.children[0], node.children[1], None)
+
+    def _s_do_statement(self, node: Tree) -> None:
+        self._loop(node, node.children[1], node.children[0], None, test_first=False)
+
+    def _loop(
+        self, node: Tree, cond: Tree | None, body: Tree, incr: Tree | None, test_first: bool = True
+    ) -> None:
+        entry = self.mask
+        loop = Loop(np.asarray(False), np.asarray(False))
+        self.frame.loops.append(loop)
+        alive = entry
+        try:
+            for iteration in range(MAX_ITERATIONS + 1):
+                if iteration == MAX_ITERATIONS:
+                    raise self.error(node, f"loop still running after {MAX_ITERATIONS} iterations")
+                if cond is not None and (test_first or iteration > 0):
+                    self.mask = alive
+                    alive = alive & self.truth(cond)
+                if not alive.any():
+                    break
+                self.mask = alive
+                self._scoped(body)
+                alive = self.mask | loop.continued  # `continue` lanes go on to the increment
+                loop.continued = np.asarray(False)
+                if incr is not None and alive.any():
+                    self.mask = alive
+                    self.expr(incr)
+        finally:
+            self.frame.loops.pop()
+        # lanes that left by the condition or `break` go on; those that returned do not
+        self.mask = entry & ~self.frame.returned
+
+    def _s_switch_statement(self, node: Tree) -> None:
+        raise self.error(node, "switch statements are not supported", True)
+
+
+def _spec(node: Tree) -> Tree:
+    """The type_specifier inside a fully_specified_type or parameter."""
+    for child in node.children:
+        if isinstance(child, Tree) and child.data == "type_specifier":
+            return child
+        if isinstance(child, Tree) and child.data == "fully_specified_type":
+            return _spec(child)
+    raise ValueError(f"no type in {node.data}")
+
+
+def _qualifiers(node: Tree) -> set[str]:
+    quals = next(
+        (c for c in node.children if isinstance(c, Tree) and c.data == "type_qualifier"), None
+    )
+    return {str(t) for t in quals.children if isinstance(t, Token)} if quals is not None else set()
+
+
+def _scene_type(name: str) -> str | None:
+    """Types of the scene's symbols, from their descriptions in slots.SCENE_SYMBOLS."""
+    text = SCENE_SYMBOLS.get(name)
+    if text is None:
+        return None
+    first = text.split()[0]
+    return first if first in ("float", "int", "vec3", "vec2", "vec4", "bool") else None
+
+
+Externals = dict[str, Callable[..., Any] | Any]
+_ = (copy_value, StructValue)
