@@ -6,7 +6,7 @@ provides = ["distribution", "MIN_BECKMANN_DENOM"]
 requires = ["PI"]
 domain = { NoH = [0, 1], a = [0.002, 1] }
 reference = "D_beckmann"
-error_budget = { max_abs = 1.0, max_rel = 1e-4 }
+error_budget = { max_abs = 0.05, max_rel = 1e-4 }
 sources = ["Beckmann & Spizzichino 1963", "Walter et al. 2007, eq. 25", "BRDF functions page (seed 004)"]
 --- */
 // Floor of π a² NoH⁴: it is 0 at grazing (NoH = 0) and for a mirror (a = 0).

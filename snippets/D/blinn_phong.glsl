@@ -6,7 +6,7 @@ provides = ["distribution", "MIN_BLINN_PHONG_A"]
 requires = ["PI"]
 domain = { NoH = [0, 1], a = [0.002, 1] }
 reference = "D_blinn_phong"
-error_budget = { max_abs = 50.0, max_rel = 0.05 }
+error_budget = { max_abs = 0.05, max_rel = 1e-3 }
 sources = ["Blinn 1977", "Walter et al. 2007, section 5.2 (n = 2/a² − 2)", "lighting-model skill, Blinn-Phong"]
 --- */
 // Smallest a: 2/a² is the exponent, and at a = 0 pow(1, ∞) is undefined.

@@ -6,7 +6,7 @@ provides = ["distribution", "MIN_GAUSSIAN_A"]
 requires = ["PI"]
 domain = { NoH = [0, 1], a = [0.002, 1] }
 reference = "D_gaussian"
-error_budget = { max_abs = 50.0, max_rel = 2e-3 }
+error_budget = { max_abs = 0.05, max_rel = 1e-3 }
 sources = ["BRDF functions page (seed 004), Gaussian", "Walter et al. 2007, eq. 4 (normalisation)"]
 --- */
 // Smallest a: θ/a at θ = 0, a = 0 is 0/0.

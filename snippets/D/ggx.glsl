@@ -6,7 +6,7 @@ provides = ["distribution", "MIN_GGX_DENOM"]
 requires = ["PI"]
 domain = { NoH = [0, 1], a = [0.002, 1] }
 reference = "D_ggx"
-error_budget = { max_abs = 2e3, max_rel = 0.05 }
+error_budget = { max_abs = 2.5e3, max_rel = 0.03 }
 sources = ["lighting-model skill, step 5", "Walter et al. 2007, eq. 33"]
 --- */
 // Floor of (NoH² (a² − 1) + 1): it is 0 at a = 0, NoH = 1, where D is a Dirac spike (0/0).

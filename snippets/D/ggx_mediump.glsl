@@ -6,7 +6,7 @@ provides = ["distribution", "MIN_GGX_MEDIUMP_DENOM", "MEDIUMP_FLT_MAX"]
 requires = ["PI"]
 domain = { NoH = [0, 1], a = [0.0025, 1] }
 reference = "D_ggx"
-error_budget = { max_abs = 50.0, max_rel = 1e-3 }
+error_budget = { max_abs = 0.05, max_rel = 1e-5 }
 sources = ["Filament, shaders/src/brdf.fs, D_GGX", "Filament PBR notes 4.4.1", "Walter et al. 2007"]
 --- */
 // Floor of the denominator: 0 at a = 0, NoH = 1, where D is a Dirac spike.

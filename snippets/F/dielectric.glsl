@@ -6,7 +6,7 @@ provides = ["fresnel", "MAX_SQRT_F0", "MIN_FRESNEL_DENOM"]
 requires = []
 domain = { f0 = [0, 0.99], cosTheta = [0, 1] }
 reference = "F_dielectric"
-error_budget = { max_abs = 1e-5, max_rel = 1e-3 }
+error_budget = { max_abs = 1e-5, max_rel = 1e-4 }
 sources = ["Walter et al. 2007, eq. 22", "Born & Wolf, Principles of Optics, 1.5.2"]
 --- */
 // Largest √f0: η = (1 + √f0)/(1 − √f0) is infinite at f0 = 1; 0.9999 keeps η² ≈ 4·10⁸.

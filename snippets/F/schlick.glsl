@@ -6,7 +6,7 @@ provides = ["fresnel"]
 requires = []
 domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
-error_budget = { max_abs = 0.11, max_rel = 0.5 }
+error_budget = { max_abs = 0.1, max_rel = 0.25 }
 sources = ["lighting-model skill, step 4", "Schlick 1994"]
 --- */
 // F = f0 + (1 − f0)(1 − cosθ)⁵ (Schlick 1994), an approximation of the exact dielectric

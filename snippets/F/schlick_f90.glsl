@@ -6,7 +6,7 @@ provides = ["fresnel", "F90_FROM_F0"]
 requires = []
 domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
-error_budget = { max_abs = 0.11, max_rel = 0.5 }
+error_budget = { max_abs = 0.1, max_rel = 0.25 }
 sources = ["Filament PBR notes 4.4.3 and 4.8.3.3 (pre-baked occlusion)", "Schlick 1994"]
 --- */
 // Scale from f0 to f90: a reflectance below 2% is taken as no specular at all, so grazing

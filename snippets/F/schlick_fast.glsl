@@ -6,7 +6,7 @@ provides = ["fresnel"]
 requires = []
 domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
-error_budget = { max_abs = 0.11, max_rel = 0.5 }
+error_budget = { max_abs = 0.1, max_rel = 0.25 }
 sources = ["Schlick 1994", "Filament, shaders/src/brdf.fs, F_Schlick (pow5)"]
 --- */
 // Schlick's F with x⁵ as x²·x²·x: three multiplies, where pow is exp2(5 log2 x) and undefined

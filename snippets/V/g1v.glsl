@@ -4,9 +4,9 @@ slot = "V"
 summary = "Hable's G1V visibility: Schlick-GGX with k = a/2, normalised as G / (4 NoL NoV)"
 provides = ["visibility", "MIN_G1V_DENOM"]
 requires = ["Dots"]
-domain = { NoV = [0.001, 1], NoL = [0, 1], a = [0.002, 1] }
+domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_separable"
-error_budget = { max_abs = 1.0, max_rel = 0.5 }
+error_budget = { max_abs = 700.0, max_rel = 0.36 }
 sources = ["Hable 2014, Optimizing GGX Shaders with dot(L,H) (seed 004)", "lighting-model skill, step 6 method 3"]
 --- */
 // Smallest G1V denominator NoX (1 − k) + k: it is 0 at NoX = 0 with a = 0.

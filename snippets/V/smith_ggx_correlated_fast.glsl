@@ -4,9 +4,9 @@ slot = "V"
 summary = "Hammon's linear approximation of height-correlated Smith GGX visibility"
 provides = ["visibility", "MIN_VIS_FAST_DENOM"]
 requires = ["Dots"]
-domain = { NoV = [0.001, 1], NoL = [0, 1], a = [0.002, 1] }
+domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_correlated"
-error_budget = { max_abs = 1.0, max_rel = 0.5 }
+error_budget = { max_abs = 600.0, max_rel = 0.3 }
 sources = ["Hammon 2017, PBR Diffuse Lighting for GGX+Smith Microsurfaces (GDC)", "Heitz 2014"]
 --- */
 // Smallest denominator: it vanishes when NoL = NoV = 0.
