@@ -1,7 +1,7 @@
 """Float64 references for the visibility term (slot V): V = G2 / (4 NoL NoV).
 
 Each takes the fields of the `Dots` struct and `a` by keyword (NoL, NoV, NoH, VoH, LoV, a), like
-`float visibility(Dots d, float a)`; the ones that do not need a field accept and ignore it.
+`float visibility(Dots d, float a)`; a field a model does not use is optional and ignored.
 
 Smith's masking is written with Λ (Heitz 2014, "Understanding the Masking-Shadowing Function",
 section 5): G1 = 1 / (1 + Λ), height-correlated G2 = 1 / (1 + Λ(v) + Λ(l)), separable
@@ -58,21 +58,39 @@ def _separable(c_lambda: CLambda, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike) 
 
 
 def V_smith_ggx_correlated(
-    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_: ArrayLike
+    *,
+    NoL: ArrayLike,
+    NoV: ArrayLike,
+    a: ArrayLike,
+    NoH: ArrayLike | None = None,
+    VoH: ArrayLike | None = None,
+    LoV: ArrayLike | None = None,
 ) -> np.ndarray:
     """Height-correlated Smith for GGX (Heitz 2014, eq. 99)."""
     return _correlated(c_lambda_ggx, NoL, NoV, a)
 
 
 def V_smith_ggx_separable(
-    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_: ArrayLike
+    *,
+    NoL: ArrayLike,
+    NoV: ArrayLike,
+    a: ArrayLike,
+    NoH: ArrayLike | None = None,
+    VoH: ArrayLike | None = None,
+    LoV: ArrayLike | None = None,
 ) -> np.ndarray:
     """Separable Smith for GGX, G1(l)·G1(v): what Schlick-GGX with k = a/2 fits (Karis 2013)."""
     return _separable(c_lambda_ggx, NoL, NoV, a)
 
 
 def V_smith_ggx_separable_remapped(
-    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_: ArrayLike
+    *,
+    NoL: ArrayLike,
+    NoV: ArrayLike,
+    a: ArrayLike,
+    NoH: ArrayLike | None = None,
+    VoH: ArrayLike | None = None,
+    LoV: ArrayLike | None = None,
 ) -> np.ndarray:
     """Separable Smith GGX at the roughness UE4 uses for analytic lights, r' = (r + 1)/2 with
     r = √a, so a' = ((√a + 1)/2)² (Karis 2013, "Real Shading in Unreal Engine 4", p. 3).
@@ -82,21 +100,39 @@ def V_smith_ggx_separable_remapped(
 
 
 def V_smith_beckmann_correlated(
-    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_: ArrayLike
+    *,
+    NoL: ArrayLike,
+    NoV: ArrayLike,
+    a: ArrayLike,
+    NoH: ArrayLike | None = None,
+    VoH: ArrayLike | None = None,
+    LoV: ArrayLike | None = None,
 ) -> np.ndarray:
     """Height-correlated Smith for Beckmann with the exact (erf) Λ (Heitz 2014, eq. 99, 69)."""
     return _correlated(c_lambda_beckmann, NoL, NoV, a)
 
 
 def V_smith_beckmann_separable(
-    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_: ArrayLike
+    *,
+    NoL: ArrayLike,
+    NoV: ArrayLike,
+    a: ArrayLike,
+    NoH: ArrayLike | None = None,
+    VoH: ArrayLike | None = None,
+    LoV: ArrayLike | None = None,
 ) -> np.ndarray:
     """Separable Smith for Beckmann, G1(l)·G1(v) with the exact Λ."""
     return _separable(c_lambda_beckmann, NoL, NoV, a)
 
 
 def V_cook_torrance(
-    *, NoL: ArrayLike, NoV: ArrayLike, NoH: ArrayLike, VoH: ArrayLike, **_: ArrayLike
+    *,
+    NoL: ArrayLike,
+    NoV: ArrayLike,
+    NoH: ArrayLike,
+    VoH: ArrayLike,
+    a: ArrayLike | None = None,
+    LoV: ArrayLike | None = None,
 ) -> np.ndarray:
     """Cook-Torrance's V-groove term over 4 NoL NoV (Cook & Torrance 1982, eq. 7):
     G = min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH), divided through so that it stays finite at
