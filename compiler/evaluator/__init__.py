@@ -9,6 +9,8 @@ from __future__ import annotations
 from .api import FLOAT_DTYPES, evaluate
 from .errors import EvaluationError, UnsupportedError
 from .interpreter import MAX_ITERATIONS, Interpreter
+from .precision import precision_report, survey
+from .snippets import evaluate_snippet, snippet_source
 from .values import StructValue, Value
 
 __all__ = [
@@ -20,4 +22,8 @@ __all__ = [
     "UnsupportedError",
     "Value",
     "evaluate",
+    "evaluate_snippet",
+    "precision_report",
+    "snippet_source",
+    "survey",
 ]

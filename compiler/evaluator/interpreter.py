@@ -8,7 +8,7 @@ lane is active, so uniform control flow costs what it would on the GPU.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -24,17 +24,17 @@ from .values import (
     StructValue,
     Value,
     base_of,
-    copy_value,
     is_matrix,
     mat_shape,
     np_dtype,
     select,
     stack,
+    to_numpy,
     vec_size,
 )
 
 MAX_ITERATIONS = 10_000  # a loop still running after this many iterations is an error
-_LAYOUT_WORDS = {"in", "out", "inout"}
+_DIRECTIONS = {"in", "out", "inout"}
 
 
 @dataclass
@@ -94,7 +94,7 @@ class Interpreter(ExpressionEvaluator):
             for param in child.children:
                 spec = _spec(param)
                 names = [c for c in param.children if isinstance(c, Token)]
-                quals = _qualifiers(param) & _LAYOUT_WORDS
+                quals = _qualifiers(param) & _DIRECTIONS
                 if not names:  # `float f(void)` or an unnamed parameter
                     if self.type_of(spec) == "void":
                         continue
@@ -194,8 +194,6 @@ class Interpreter(ExpressionEvaluator):
         return i < len(fn.params) and fn.params[i][0] == "out"
 
     def _call_external(self, name: str, args: list[AnyValue], node: Tree) -> AnyValue:
-        from .values import to_numpy
-
         result = self.externals[name](*[to_numpy(a) for a in args])
         type_ = self.prototypes.get(name) or _scene_type(name)
         if type_ is None:  # guess: one more axis than the lanes is a vector
@@ -402,7 +400,3 @@ def _scene_type(name: str) -> str | None:
         return None
     first = text.split()[0]
     return first if first in ("float", "int", "vec3", "vec2", "vec4", "bool") else None
-
-
-Externals = dict[str, Callable[..., Any] | Any]
-_ = (copy_value, StructValue)

@@ -163,3 +163,23 @@ def test_float16_rounds_and_overflows() -> None:
     out = ev(src, "f", np.array([2.0, 20.0]), dtype=np.float16)
     assert out.dtype == np.float16
     assert out[0] == 16.0 and np.isinf(out[1])  # 160000 > 65504, the float16 maximum
+
+
+def test_do_while_and_return_inside_a_loop() -> None:
+    src = """
+    float march(float start) {
+        float t = start;
+        for (int i = 0; i < 100; i++) {
+            float d = 5.0 - t;
+            if (d < 0.5) return t;
+            t += d * 0.5;
+            if (t > 4.0) break;
+        }
+        return -1.0;
+    }
+    int count(int n) { int k = 0; do { k++; n -= 2; } while (n > 0); return k; }
+    """
+    out = ev(src, "march", np.array([0.0, 4.6, 4.9]))
+    assert out[1] == 4.6 and out[2] == 4.9  # returned on the first iteration
+    assert out[0] == -1.0  # t passes 4 and the loop breaks before d < 0.5
+    np.testing.assert_array_equal(ev(src, "count", np.array([0, 1, 5], np.int32)), [1, 1, 3])
