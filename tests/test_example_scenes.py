@@ -34,3 +34,27 @@ def test_example_renders_finite(scene: Path, tier: str) -> None:
     stats = image_stats(image)
     assert stats["nan"] == 0 and stats["inf"] == 0
     assert max(stats["std"]) > 0.02  # something is in the picture
+
+
+def _swappable() -> list[str]:
+    from glint.compiler.catalog import load_catalog
+    from glint.compiler.slots import SLOTS
+
+    # Slots the default scene exercises; the camera, background and post slots follow the scene.
+    scene_slots = {"D", "F", "V", "diffuse", "specular", "ao", "specocc", "shadow", "env", "ibl",
+                   "normal", "raymarch", "tonemap", "output"}
+    return sorted(
+        s.id for s in load_catalog().snippets.values()
+        if not SLOTS[s.slot].many and s.slot in scene_slots
+    )
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("snippet_id", _swappable())
+def test_every_variant_composes_into_the_default_scene(snippet_id: str) -> None:
+    slot, variant = snippet_id.split(".", 1)
+    shader = compose(None, overrides={slot: variant})
+    assert snippet_id in {u.id for u in shader.units}
+    assert [str(d) for d in validate(shader.text, f"{snippet_id}.glsl")] == []
+    stats = image_stats(render(shader.text, 96, 54, time=1.0))
+    assert stats["nan"] == 0 and stats["inf"] == 0
