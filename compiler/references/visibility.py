@@ -58,39 +58,21 @@ def _separable(c_lambda: CLambda, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike) 
 
 
 def V_smith_ggx_correlated(
-    *,
-    NoL: ArrayLike,
-    NoV: ArrayLike,
-    a: ArrayLike,
-    NoH: ArrayLike | None = None,
-    VoH: ArrayLike | None = None,
-    LoV: ArrayLike | None = None,
+    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_other_dots: ArrayLike
 ) -> np.ndarray:
     """Height-correlated Smith for GGX (Heitz 2014, eq. 99)."""
     return _correlated(c_lambda_ggx, NoL, NoV, a)
 
 
 def V_smith_ggx_separable(
-    *,
-    NoL: ArrayLike,
-    NoV: ArrayLike,
-    a: ArrayLike,
-    NoH: ArrayLike | None = None,
-    VoH: ArrayLike | None = None,
-    LoV: ArrayLike | None = None,
+    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_other_dots: ArrayLike
 ) -> np.ndarray:
     """Separable Smith for GGX, G1(l)·G1(v): what Schlick-GGX with k = a/2 fits (Karis 2013)."""
     return _separable(c_lambda_ggx, NoL, NoV, a)
 
 
 def V_smith_ggx_separable_remapped(
-    *,
-    NoL: ArrayLike,
-    NoV: ArrayLike,
-    a: ArrayLike,
-    NoH: ArrayLike | None = None,
-    VoH: ArrayLike | None = None,
-    LoV: ArrayLike | None = None,
+    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_other_dots: ArrayLike
 ) -> np.ndarray:
     """Separable Smith GGX at the roughness UE4 uses for analytic lights, r' = (r + 1)/2 with
     r = √a, so a' = ((√a + 1)/2)² (Karis 2013, "Real Shading in Unreal Engine 4", p. 3).
@@ -100,26 +82,14 @@ def V_smith_ggx_separable_remapped(
 
 
 def V_smith_beckmann_correlated(
-    *,
-    NoL: ArrayLike,
-    NoV: ArrayLike,
-    a: ArrayLike,
-    NoH: ArrayLike | None = None,
-    VoH: ArrayLike | None = None,
-    LoV: ArrayLike | None = None,
+    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_other_dots: ArrayLike
 ) -> np.ndarray:
     """Height-correlated Smith for Beckmann with the exact (erf) Λ (Heitz 2014, eq. 99, 69)."""
     return _correlated(c_lambda_beckmann, NoL, NoV, a)
 
 
 def V_smith_beckmann_separable(
-    *,
-    NoL: ArrayLike,
-    NoV: ArrayLike,
-    a: ArrayLike,
-    NoH: ArrayLike | None = None,
-    VoH: ArrayLike | None = None,
-    LoV: ArrayLike | None = None,
+    *, NoL: ArrayLike, NoV: ArrayLike, a: ArrayLike, **_other_dots: ArrayLike
 ) -> np.ndarray:
     """Separable Smith for Beckmann, G1(l)·G1(v) with the exact Λ."""
     return _separable(c_lambda_beckmann, NoL, NoV, a)
