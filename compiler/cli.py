@@ -13,6 +13,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from .errors import GlintError, UsageError
+from .shadertoy import TARGETS
 
 PROG = "glint"
 
@@ -78,7 +79,7 @@ def build_parser() -> argparse.ArgumentParser:
 def _add_target(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--target",
-        choices=("shadertoy", "webgl2", "desktop"),
+        choices=TARGETS,
         default="shadertoy",
         help="shadertoy: the Image tab (default); webgl2: ES 3.00; desktop: #version 330",
     )

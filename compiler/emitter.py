@@ -15,7 +15,7 @@ from .catalog import Catalog, glsl_value
 from .planner import Plan
 from .units import GENERATED, Unit
 
-TARGETS = ("shadertoy", "webgl2", "desktop")
+TARGETS = shadertoy.TARGETS
 
 
 @dataclass

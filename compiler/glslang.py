@@ -18,7 +18,7 @@ from glint.compiler import shadertoy
 from glint.compiler.errors import EnvironmentProblem, UsageError
 from glint.compiler.sourcemap import Origin, build_line_map, split_lines
 
-TARGETS = ("shadertoy", "webgl2", "desktop")
+TARGETS = shadertoy.TARGETS
 TIMEOUT_S = 30.0
 SPIRV_OPT = "/usr/bin/spirv-opt"
 MAIN_IMAGE_SIGNATURE = "void mainImage(out vec4 fragColor, in vec2 fragCoord)"

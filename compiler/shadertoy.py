@@ -44,6 +44,9 @@ EPILOGUE = (
     "}\n"
 )
 
+# Where a composed or validated shader is meant to run; `wrap_for` gives each its prelude.
+TARGETS = ("shadertoy", "webgl2", "desktop")
+
 PRELUDE = _HEADER + _UNIFORM_BLOCK
 # Number of lines the prelude adds in front of the user's first line.
 PRELUDE_LINES = PRELUDE.count("\n")

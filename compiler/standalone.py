@@ -27,12 +27,18 @@ CONTENT_CHOICES = {
 EMPTY_MAIN = "void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(0.0); }\n"
 
 
-def standalone_source(snippet: Snippet, catalog: Catalog, main: str = EMPTY_MAIN) -> str:
-    """The snippet and its dependencies (balanced-tier choices for other slots) with `main`."""
+def standalone_choices(snippet: Snippet) -> dict[str, str]:
+    """Balanced-tier variants for every slot, with the snippet itself filling its own slot."""
     choices = {slot: f"{slot}.{v}" for slot, v in tier_table()["balanced"].items()}
     choices |= CONTENT_CHOICES
     if not SLOTS[snippet.slot].many:
         choices[snippet.slot] = snippet.id
+    return choices
+
+
+def standalone_source(snippet: Snippet, catalog: Catalog, main: str = EMPTY_MAIN) -> str:
+    """The snippet and its dependencies (balanced-tier choices for other slots) with `main`."""
+    choices = standalone_choices(snippet)
     scene = generated("scene.stub", ["map", "materialAt"], [], SCENE_STUB)
     constants = generated("scene.constants", list(SCENE_DEFINES), [], "", rank=-1)
     entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)

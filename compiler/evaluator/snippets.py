@@ -7,49 +7,21 @@ from typing import Any
 import numpy as np
 
 from ..catalog import Catalog, Snippet, glsl_value, load_catalog
-from ..planner import tier_table
-from ..slots import SLOTS
+from ..resolver import resolve
+from ..slots import SCENE_SYMBOLS, SLOTS
+from ..standalone import standalone_choices
+from ..units import from_snippet, generated
 from .api import evaluate
 
 
-def _provider(req: str, catalog: Catalog, chosen: dict[str, str]) -> Snippet | None:
-    """The snippet a requirement resolves to, as the balanced tier would choose it; None for
-    the scene's own symbols (`map`, `SUN_DIR`), which come from externals."""
-    if req in SLOTS:
-        variant = chosen.get(req)
-        if variant is not None:
-            return catalog.get(f"{req}.{variant}")
-        options = catalog.in_slot(req)
-        return options[0] if options else None
-    providers = catalog.providers(req)
-    if not providers:
-        return None
-    preferred = [p for p in providers if chosen.get(p.slot) == p.variant]
-    return (preferred or sorted(providers, key=lambda p: p.id))[0]
-
-
 def snippet_units(snippet_id: str, catalog: Catalog | None = None) -> list[Snippet]:
-    """The snippet and everything it requires, dependencies first."""
+    """The snippet and everything it requires, dependencies first, resolved as the composer
+    does; the scene's own symbols (`map`, `SUN_DIR`) come from `externals` instead."""
     catalog = catalog or load_catalog()
-    chosen = dict(tier_table()["balanced"])
     root = catalog.get(snippet_id)
-    if not SLOTS[root.slot].many:
-        chosen[root.slot] = root.variant  # the snippet itself fills its slot
-    order: list[Snippet] = []
-    seen: set[str] = set()
-
-    def visit(snippet: Snippet) -> None:
-        if snippet.id in seen:
-            return
-        seen.add(snippet.id)
-        for req in snippet.requires:
-            dep = _provider(req, catalog, chosen)
-            if dep is not None:
-                visit(dep)
-        order.append(snippet)
-
-    visit(root)
-    return order
+    scene = generated("scene.externals", list(SCENE_SYMBOLS), [], "")
+    units = resolve([scene, from_snippet(root)], catalog, standalone_choices(root))
+    return [catalog.snippets[u.id] for u in units if u.id in catalog.snippets]
 
 
 def snippet_source(snippet_id: str, catalog: Catalog | None = None) -> tuple[str, dict[str, str]]:
