@@ -41,12 +41,25 @@ SLOTS: dict[str, Slot] = {
             "visibility",
             "float visibility(Dots d, float a)",
         ),
-        Slot("diffuse", "diffuse BRDF", "diffuse", "vec3 diffuse(Surface s, Dots d)"),
+        # The two lobes return reflectance times their own cosine factor (BRDF · N·L), so
+        # that wrapped and stylised models, which reshape the cosine, fill the same slot.
+        Slot(
+            "diffuse",
+            "diffuse lobe: BRDF times its cosine factor",
+            "diffuse",
+            "vec3 diffuse(Surface s, Dots d)",
+        ),
         Slot(
             "specular",
-            "specular BRDF lobe, given the Fresnel term",
+            "specular lobe, given the Fresnel term: BRDF times its cosine factor",
             "specular",
             "vec3 specular(Surface s, Dots d, vec3 F)",
+        ),
+        Slot(
+            "attenuation",
+            "distance falloff of a point light with a range",
+            "attenuation",
+            "float attenuation(float dist, float range)",
         ),
         Slot(
             "ao",
@@ -77,6 +90,30 @@ SLOTS: dict[str, Slot] = {
             "image-based (environment) specular lighting",
             "environmentLight",
             "vec3 environmentLight(Surface s, float ao)",
+        ),
+        Slot(
+            "irradiance",
+            "diffuse light from the environment: cosine-weighted irradiance over π",
+            "irradiance",
+            "vec3 irradiance(vec3 n)",
+        ),
+        Slot(
+            "sss",
+            "light transmitted through thin parts of the SDF toward L",
+            "subsurface",
+            "float subsurface(vec3 p, vec3 L)",
+        ),
+        Slot(
+            "phase",
+            "phase function of a scattering medium",
+            "phase",
+            "float phase(float cosTheta, float g)",
+        ),
+        Slot(
+            "media",
+            "radiance after a distance through a participating medium (extinction, in-scatter)",
+            "medium",
+            "vec3 medium(vec3 color, float dist)",
         ),
         Slot("normal", "surface normal of the SDF", "calcNormal", "vec3 calcNormal(vec3 p)"),
         Slot(

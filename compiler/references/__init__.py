@@ -4,29 +4,32 @@ A snippet names its reference in front matter (`reference = "D_ggx"`); the probe
 GLSL on a grid of its `domain` and compare with `reference(name)(**inputs)`. Every reference
 takes its inputs by keyword, named like the GLSL entry's parameters (V takes the `Dots` fields
 NoL, NoV, NoH, VoH, LoV and a), and broadcasts them as numpy does.
+
+Each module of this package contributes a `REFERENCES` dict (name -> function); the registry is
+their union, so adding a family of references is adding one module.
 """
 
 from __future__ import annotations
 
+import importlib
+import pkgutil
 from collections.abc import Callable
 
 import numpy as np
 
-from . import distribution, fresnel, visibility
 
-REFERENCES: dict[str, Callable[..., np.ndarray]] = {
-    "D_ggx": distribution.D_ggx,
-    "D_beckmann": distribution.D_beckmann,
-    "D_blinn_phong": distribution.D_blinn_phong,
-    "D_gaussian": distribution.D_gaussian,
-    "F_dielectric": fresnel.F_dielectric,
-    "V_smith_ggx_correlated": visibility.V_smith_ggx_correlated,
-    "V_smith_ggx_separable": visibility.V_smith_ggx_separable,
-    "V_smith_ggx_separable_remapped": visibility.V_smith_ggx_separable_remapped,
-    "V_smith_beckmann_correlated": visibility.V_smith_beckmann_correlated,
-    "V_smith_beckmann_separable": visibility.V_smith_beckmann_separable,
-    "V_cook_torrance": visibility.V_cook_torrance,
-}
+def _collect() -> dict[str, Callable[..., np.ndarray]]:
+    found: dict[str, Callable[..., np.ndarray]] = {}
+    for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name):
+        module = importlib.import_module(f"{__name__}.{info.name}")
+        for name, function in getattr(module, "REFERENCES", {}).items():
+            if name in found:
+                raise RuntimeError(f"reference '{name}' defined twice (in {info.name})")
+            found[name] = function
+    return found
+
+
+REFERENCES: dict[str, Callable[..., np.ndarray]] = _collect()
 
 
 def reference(name: str) -> Callable[..., np.ndarray]:

@@ -82,3 +82,12 @@ def D_gaussian(*, NoH: ArrayLike, a: ArrayLike) -> np.ndarray:
     norm = gaussian_norm(a_flat)[inverse].reshape(a.shape)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.exp(-((theta / a) ** 2)) * norm
+
+
+# The references this module contributes to the registry, by the name snippets use.
+REFERENCES = {
+    "D_ggx": D_ggx,
+    "D_beckmann": D_beckmann,
+    "D_blinn_phong": D_blinn_phong,
+    "D_gaussian": D_gaussian,
+}

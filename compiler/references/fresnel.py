@@ -53,3 +53,9 @@ def F_dielectric(*, f0: ArrayLike, cosTheta: ArrayLike) -> np.ndarray:
     stand-in (their f0 has no real IOR), which is how the F slot treats every f0.
     """
     return fresnel_dielectric_ior(eta=ior_from_f0(f0), cosTheta=np.clip(cosTheta, 0.0, 1.0))
+
+
+# The references this module contributes to the registry, by the name snippets use.
+REFERENCES = {
+    "F_dielectric": F_dielectric,
+}

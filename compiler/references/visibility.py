@@ -128,3 +128,14 @@ def G1_smith_beckmann(*, NoV: ArrayLike, a: ArrayLike) -> np.ndarray:
     v = _cos(NoV)
     with np.errstate(divide="ignore", invalid="ignore"):
         return v / (v + c_lambda_beckmann(v, np.asarray(a, np.float64)))
+
+
+# The references this module contributes to the registry, by the name snippets use.
+REFERENCES = {
+    "V_smith_ggx_correlated": V_smith_ggx_correlated,
+    "V_smith_ggx_separable": V_smith_ggx_separable,
+    "V_smith_ggx_separable_remapped": V_smith_ggx_separable_remapped,
+    "V_smith_beckmann_correlated": V_smith_beckmann_correlated,
+    "V_smith_beckmann_separable": V_smith_beckmann_separable,
+    "V_cook_torrance": V_cook_torrance,
+}
