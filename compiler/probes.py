@@ -19,7 +19,7 @@ from .errors import InputError
 from .glsl.symbols import FunctionDef, analyze
 from .render import render
 from .slots import SLOTS
-from .standalone import standalone_source
+from .standalone import SCENE_STUB, standalone_source
 
 PROBE_PRELUDE = (
     "#version 300 es\n"
@@ -82,8 +82,11 @@ def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
     return names, f"{function.name}({', '.join(args)})"
 
 
-def probe_shader(snippet: Snippet, catalog: Catalog) -> tuple[str, list[str], int]:
-    """The probe's source, its scalar input names and the width of its result (1 or 3)."""
+def probe_shader(
+    snippet: Snippet, catalog: Catalog, scene_stub: str = SCENE_STUB
+) -> tuple[str, list[str], int]:
+    """The probe's source, its scalar input names and the width of its result (1 or 3).
+    `scene_stub` defines `map` (and `materialAt`) for snippets that query the scene."""
     function = entry_function(snippet)
     names, call = probe_inputs(function)
     if function.return_type == "float":
@@ -102,18 +105,23 @@ def probe_shader(snippet: Snippet, catalog: Catalog) -> tuple[str, list[str], in
     )
     # A complete shader with its own prelude: ShaderToy's declares iChannel0..3 without a
     # precision, so they default to lowp, and Mesa then returns texel values at half precision.
-    code = standalone_source(snippet, catalog, main)
+    code = standalone_source(snippet, catalog, main, scene_stub)
     return PROBE_PRELUDE + code + shadertoy.EPILOGUE, names, width
 
 
 def run_probe(
-    snippet_id: str, inputs: dict[str, np.ndarray], catalog: Catalog | None = None
+    snippet_id: str,
+    inputs: dict[str, np.ndarray],
+    catalog: Catalog | None = None,
+    scene_stub: str = SCENE_STUB,
 ) -> np.ndarray:
     """Evaluate the snippet's entry on the GPU for every sample: `inputs` maps each scalar input
-    name (see `probe_inputs`) to an array of shape (N,). Returns float32 (N,) or (N, 3)."""
+    name (see `probe_inputs`) to an array of shape (N,). Returns float32 (N,) or (N, 3).
+    `scene_stub` is GLSL defining `map(vec3)` and `materialAt(vec3)` for snippets that need the
+    scene (AO, shadows, normals); by default a unit sphere above the plane y = -1."""
     catalog = catalog or load_catalog()
     snippet = catalog.get(snippet_id)
-    source, names, width = probe_shader(snippet, catalog)
+    source, names, width = probe_shader(snippet, catalog, scene_stub)
     missing = [n for n in names if n not in inputs]
     if missing:
         raise InputError(f"{snippet_id}: probe inputs missing: {', '.join(missing)}")

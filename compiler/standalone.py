@@ -36,10 +36,13 @@ def standalone_choices(snippet: Snippet) -> dict[str, str]:
     return choices
 
 
-def standalone_source(snippet: Snippet, catalog: Catalog, main: str = EMPTY_MAIN) -> str:
-    """The snippet and its dependencies (balanced-tier choices for other slots) with `main`."""
+def standalone_source(
+    snippet: Snippet, catalog: Catalog, main: str = EMPTY_MAIN, scene_stub: str = SCENE_STUB
+) -> str:
+    """The snippet and its dependencies (balanced-tier choices for other slots) with `main`.
+    `scene_stub` stands in for the scene: it defines `map` and `materialAt`."""
     choices = standalone_choices(snippet)
-    scene = generated("scene.stub", ["map", "materialAt"], [], SCENE_STUB)
+    scene = generated("scene.stub", ["map", "materialAt"], [], scene_stub)
     constants = generated("scene.constants", list(SCENE_DEFINES), [], "", rank=-1)
     entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)
     units = resolve([constants, scene, entry], catalog, choices)
