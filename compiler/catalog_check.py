@@ -71,7 +71,7 @@ def check_front_matter(snippet: Snippet, catalog: Catalog) -> list[Problem]:
             problems.append(
                 f"entry `{entry.prototype}` must have the slot's prototype `{slot.prototype}`"
             )
-    return [Problem(snippet.relpath, message) for message in problems]
+    return [Problem(snippet.file, message) for message in problems]
 
 
 def compile_alone(snippet: Snippet, catalog: Catalog) -> list[Diagnostic]:

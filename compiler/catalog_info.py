@@ -39,7 +39,8 @@ def entry(snippet: Snippet) -> dict[str, Any]:
         "error_budget": snippet.error_budget,
         "cost": snippet.cost,
         "sources": list(snippet.sources),
-        "file": snippet.relpath,
+        "file": snippet.file,
+        "preset_of": snippet.preset_of,  # the base variant whose body a preset runs, or ""
     }
 
 
