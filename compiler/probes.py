@@ -1,7 +1,7 @@
 """GPU probes: a snippet's entry function evaluated on the GPU over a list of inputs.
 
-The inputs travel as float textures (iChannel0 and iChannel1, four floats per texel each, so up to
-eight scalars per sample); one pixel evaluates one sample and writes the result into a float
+The inputs travel as float textures (iChannel0..3, four floats per texel each, so up to sixteen
+scalars per sample); one pixel evaluates one sample and writes the result into a float
 framebuffer. This runs the snippet's own GLSL through the real driver, so it can be compared with
 its float64 reference in `compiler/references`.
 """
@@ -28,11 +28,20 @@ PROBE_PRELUDE = (
     "uniform vec3 iResolution;\n"
     "uniform highp sampler2D iChannel0;\n"
     "uniform highp sampler2D iChannel1;\n"
+    "uniform highp sampler2D iChannel2;\n"
+    "uniform highp sampler2D iChannel3;\n"
 )
 # Struct arguments are passed field by field, in declaration order (see snippets/core).
-STRUCT_FIELDS: dict[str, tuple[str, ...]] = {"Dots": ("NoL", "NoV", "NoH", "VoH", "LoV")}
+STRUCT_FIELDS: dict[str, tuple[str, ...]] = {
+    "Dots": ("NoL", "NoV", "NoH", "VoH", "LoV", "NoLsigned")
+}
+# A Surface is built from two inputs, its perceptual roughness and N·V; the rest is fixed: a
+# white diffuse albedo, the dielectric f0, N = V = +z at the origin, and a = roughness².
+SURFACE_INPUTS = ("roughness", "NoV")
+SURFACE_FIXED = "vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0), vec3(0.04)"
 _SIZES = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
-_SLOTS_PER_SAMPLE = 8  # two RGBA channels
+_CHANNELS = 4
+_SLOTS_PER_SAMPLE = 4 * _CHANNELS
 _ROW = 256  # texels per row of the input textures and the framebuffer
 
 
@@ -75,10 +84,16 @@ def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
         elif param.type in STRUCT_FIELDS:
             fields = [scalar(f"{param.name}.{f}") for f in STRUCT_FIELDS[param.type]]
             args.append(f"{param.type}({', '.join(fields)})")
+        elif param.type == "Surface":
+            rough, nov = (scalar(f"{param.name}.{f}") for f in SURFACE_INPUTS)
+            args.append(f"Surface({SURFACE_FIXED}, {rough}, {rough} * {rough}, {nov})")
         else:
             raise InputError(f"{function.name}: cannot probe a parameter of type {param.type}")
     if len(names) > _SLOTS_PER_SAMPLE:
-        raise InputError(f"{function.name}: {len(names)} scalar inputs, a probe takes at most 8")
+        raise InputError(
+            f"{function.name}: {len(names)} scalar inputs, a probe takes at most "
+            f"{_SLOTS_PER_SAMPLE}"
+        )
     return names, f"{function.name}({', '.join(args)})"
 
 
@@ -100,6 +115,8 @@ def probe_shader(
         "    ivec2 texel = ivec2(fragCoord);\n"
         "    vec4 in0 = texelFetch(iChannel0, texel, 0);\n"
         "    vec4 in1 = texelFetch(iChannel1, texel, 0);\n"
+        "    vec4 in2 = texelFetch(iChannel2, texel, 0);\n"
+        "    vec4 in3 = texelFetch(iChannel3, texel, 0);\n"
         f"    fragColor = {result};\n"
         "}\n"
     )
@@ -131,7 +148,7 @@ def run_probe(
     data = np.zeros((rows * cols, _SLOTS_PER_SAMPLE), dtype=np.float32)
     for index, name in enumerate(names):
         data[:count, index] = np.asarray(inputs[name], dtype=np.float32)
-    channels = [data[:, 0:4].reshape(rows, cols, 4), data[:, 4:8].reshape(rows, cols, 4)]
+    channels = [data[:, 4 * c : 4 * c + 4].reshape(rows, cols, 4) for c in range(_CHANNELS)]
     image = render(source, cols, rows, channels=channels)
     # Rendered rows come top-first; texel row 0 (the first samples) is the bottom row.
     values = image[::-1].reshape(rows * cols, 4)[:count]

@@ -29,7 +29,7 @@ COSINE_EXTREMES = [-1.0, -1e-7, 0.0, 1e-7, 0.5, 1.0, 1.0 + 1e-6]
 ROUGHNESS_EXTREMES = [0.0, 0.002, 0.045, 0.5, 1.0]
 F0_EXTREMES = [0.0, 0.04, 1.0]
 # Dots fields a variant's domain does not name get a plausible fixed value.
-DOTS_DEFAULTS = {"NoL": 0.5, "NoV": 0.5, "NoH": 1.0, "VoH": 1.0, "LoV": 0.0}
+DOTS_DEFAULTS = {"NoL": 0.5, "NoV": 0.5, "NoH": 1.0, "VoH": 1.0, "LoV": 0.0, "NoLsigned": 0.5}
 
 
 def scalar_names(snippet: Snippet) -> list[str]:

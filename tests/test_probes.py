@@ -18,8 +18,11 @@ def test_probe_inputs_flatten_vectors_and_structs() -> None:
     assert names == ["f00", "f01", "f02", "cosTheta"]
     assert call == "fresnel(vec3(in0.x, in0.y, in0.z), in0.w)"
     names, call = probe_inputs(entry_function(catalog.get("V.smith_ggx_correlated")))
-    assert names == ["d.NoL", "d.NoV", "d.NoH", "d.VoH", "d.LoV", "a"]
-    assert call.startswith("visibility(Dots(in0.x, in0.y, in0.z, in0.w, in1.x), in1.y)")
+    assert names == ["d.NoL", "d.NoV", "d.NoH", "d.VoH", "d.LoV", "d.NoLsigned", "a"]
+    assert call == "visibility(Dots(in0.x, in0.y, in0.z, in0.w, in1.x, in1.y), in1.z)"
+    names, call = probe_inputs(entry_function(catalog.get("specular.cook_torrance")))
+    assert names[:2] == ["s.roughness", "s.NoV"] and names[-3:] == ["F0", "F1", "F2"]
+    assert call.startswith("specular(Surface(") and "in0.x * in0.x, in0.y)" in call
 
 
 def test_ggx_probe_matches_its_closed_form() -> None:
@@ -46,7 +49,8 @@ def test_visibility_probe_passes_the_dots_struct() -> None:
     nol, nov = (g.ravel() for g in np.meshgrid(np.linspace(0.05, 1, 20), np.linspace(0.05, 1, 20)))
     a = np.full_like(nol, 0.4)
     zeros = np.zeros_like(nol)
-    inputs = {"d.NoL": nol, "d.NoV": nov, "d.NoH": zeros, "d.VoH": zeros, "d.LoV": zeros, "a": a}
+    inputs = {"d.NoL": nol, "d.NoV": nov, "d.NoH": zeros, "d.VoH": zeros, "d.LoV": zeros,
+              "d.NoLsigned": nol, "a": a}
     gpu = run_probe("V.smith_ggx_correlated", inputs)
     a2 = a * a
     lambda_v = nol * np.sqrt(nov * nov * (1 - a2) + a2)

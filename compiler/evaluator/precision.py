@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from ..catalog import load_catalog
+from .errors import UnsupportedError
 from .interpreter import Interpreter
 from .snippets import entry_of, evaluate_snippet, snippet_source
 
@@ -84,7 +85,9 @@ def default_grid(snippet_id: str, points: int = 4096, seed: int = 0) -> dict[str
 
 def _dots(s: dict[str, np.ndarray], lanes: int) -> dict[str, np.ndarray]:
     mid = np.full(lanes, 0.5)
-    return {k: s.get(k, mid) for k in ("NoL", "NoV", "NoH", "VoH", "LoV")}
+    dots = {k: s.get(k, mid) for k in ("NoL", "NoV", "NoH", "VoH", "LoV")}
+    dots["NoLsigned"] = s.get("NoLsigned", dots["NoL"])
+    return dots
 
 
 def _surface(s: dict[str, np.ndarray], lanes: int) -> dict[str, np.ndarray]:
@@ -135,7 +138,8 @@ def precision_report(
 
 def survey(points: int = 4096) -> dict[str, dict[str, dict[str, Any]]]:
     """`precision_report` of every snippet whose slot entry takes only float, vec3, Dots and
-    Surface parameters."""
+    Surface parameters. Snippets that only a GPU can run (screen-space derivatives) are left
+    out."""
     out: dict[str, dict[str, dict[str, Any]]] = {}
     for snippet in load_catalog().snippets.values():
         try:
@@ -143,5 +147,8 @@ def survey(points: int = 4096) -> dict[str, dict[str, dict[str, Any]]]:
         except ValueError:
             continue  # a library slot: no entry
         if all(q == "in" and t in SIMPLE_TYPES for q, t, _ in params):
-            out[snippet.id] = precision_report(snippet.id, default_grid(snippet.id, points))
+            try:
+                out[snippet.id] = precision_report(snippet.id, default_grid(snippet.id, points))
+            except UnsupportedError:
+                continue
     return out

@@ -101,8 +101,7 @@ def V_cook_torrance(
     NoV: ArrayLike,
     NoH: ArrayLike,
     VoH: ArrayLike,
-    a: ArrayLike | None = None,
-    LoV: ArrayLike | None = None,
+    **_other_dots: ArrayLike,
 ) -> np.ndarray:
     """Cook-Torrance's V-groove term over 4 NoL NoV (Cook & Torrance 1982, eq. 7):
     G = min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH), divided through so that it stays finite at

@@ -18,13 +18,15 @@ struct Surface {
     float NoV;          // clamped away from 0 so that visibility terms stay finite
 };
 
-// The dot products of one light direction, clamped to where the BRDF is defined.
+// The dot products of one light direction, clamped to where the BRDF is defined, and N·L
+// before clamping, for the models that wrap light past the terminator (half-Lambert, toon).
 struct Dots {
     float NoL;
     float NoV;
     float NoH;
     float VoH;
     float LoV;
+    float NoLsigned;
 };
 
 // Smallest NoV: at exactly 0 the Smith visibility divides 0 by 0 on silhouettes.
@@ -48,7 +50,8 @@ Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float 
 Dots lightDots(Surface s, vec3 L) {
     vec3 H = normalize(s.V + L);
     Dots d;
-    d.NoL = max(dot(s.N, L), 0.0);
+    d.NoLsigned = dot(s.N, L);
+    d.NoL = max(d.NoLsigned, 0.0);
     d.NoV = s.NoV;
     d.NoH = max(dot(s.N, H), 0.0);
     d.VoH = max(dot(s.V, H), 0.0);

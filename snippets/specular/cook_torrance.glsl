@@ -6,7 +6,7 @@ provides = ["specular"]
 requires = ["Surface", "Dots", "D", "V"]
 sources = ["lighting-model skill, step 7", "Cook and Torrance 1982"]
 --- */
-// V already holds G / (4 NoL NoV), so the lobe is a plain product.
+// V already holds G / (4 NoL NoV), so the lobe is a plain product, times its cosine N·L.
 vec3 specular(Surface s, Dots d, vec3 F) {
-    return distribution(d.NoH, s.a) * visibility(d, s.a) * F;
+    return distribution(d.NoH, s.a) * visibility(d, s.a) * F * d.NoL;
 }

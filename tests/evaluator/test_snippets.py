@@ -31,7 +31,7 @@ def test_ggx_matches_the_closed_form() -> None:
 def test_smith_ggx_correlated_with_a_dots_struct() -> None:
     nov, a = grid(32)
     nol = nov[::-1].copy()
-    dots = {"NoL": nol, "NoV": nov, "NoH": nov, "VoH": nov, "LoV": nov}
+    dots = {"NoL": nol, "NoV": nov, "NoH": nov, "VoH": nov, "LoV": nov, "NoLsigned": nol}
     out = evaluate_snippet("V.smith_ggx_correlated", args=[dots, a], dtype=np.float64)
     a2 = a * a
     gv = nol * np.sqrt(nov * nov * (1 - a2) + a2)
