@@ -5,6 +5,8 @@ summary = "SDF normal by central differences, 6 taps"
 provides = ["calcNormal"]
 requires = ["map"]
 params = { NORMAL_EPS = { type = "float", default = 0.001, range = [1e-6, 0.1] } }
+reference = "sdf_normal"
+error_budget = { max_deg = 0.2, mean_deg = 0.005 }
 sources = ["lighting-model skill, step 1"]
 --- */
 vec3 calcNormal(vec3 p) {
