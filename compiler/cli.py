@@ -70,9 +70,15 @@ def build_parser() -> argparse.ArgumentParser:
     _add_quality(render)
     render.set_defaults(handler=cmd_render)
 
-    catalog = sub.add_parser("catalog", help="list the snippet catalog")
+    catalog = sub.add_parser("catalog", help="list the snippet catalog, or show one snippet")
     catalog.add_argument("--json", action="store_true", help="one JSON object per snippet")
     catalog.set_defaults(handler=cmd_catalog)
+    actions = catalog.add_subparsers(dest="action", metavar="ACTION")
+    show = actions.add_parser(
+        "show", help="print a snippet with its dependencies as one pasteable GLSL block"
+    )
+    show.add_argument("id", metavar="ID", help="snippet id, e.g. D.ggx (see `glint catalog`)")
+    show.set_defaults(handler=cmd_catalog_show)
     return parser
 
 
@@ -238,6 +244,13 @@ def cmd_catalog(args: argparse.Namespace) -> int:
             print(f"    params: {knobs}")
         print(f"    sources: {'; '.join(entry['sources'])}")
         print(f"    file: {entry['file']}")
+    return 0
+
+
+def cmd_catalog_show(args: argparse.Namespace) -> int:
+    from .catalog_show import show_source
+
+    sys.stdout.write(show_source(args.id))
     return 0
 
 
