@@ -1,0 +1,39 @@
+/* ---
+id = "ibl.env_brdf_approx"
+slot = "ibl"
+summary = "Environment along the mirror direction times Karis's analytic split-sum fit f0·A + B, with specular occlusion"
+provides = ["environmentLight", "envBRDFApprox"]
+requires = ["Surface", "env", "specocc"]
+error_budget = { max_abs = 0.5 }
+sources = [
+    "lighting-model skill, common variants (IBL: EnvBRDFApprox)",
+    "Karis 2014, Physically Based Shading on Mobile (EnvBRDFApprox)",
+    "Karis 2013, Real Shading in Unreal Engine 4 (split sum)",
+]
+--- */
+// The split sum (Karis 2013) factors specular environment light into the environment seen
+// around the mirror direction times the BRDF's directional albedo, f0·A + B. Here A and B
+// come from Karis's analytic fit instead of a lookup table, and the environment is sampled
+// once along R without prefiltering (fine for a smooth sky, too sharp for a rough mirror of
+// a detailed one).
+//
+// Error of (A, B) against the float64 split sum with GGX, height-correlated Smith and Schlick
+// (compiler/references/environment.dfg_split_sum), roughness and NoV in [0, 1]: see
+// tests/test_environment_light.py. The fit was made for a table with a different masking
+// term, so it is close at normal incidence and far off at grazing angles on rough surfaces,
+// where height-correlated Smith keeps much more energy: |f0·A + B| off by up to 0.5 (metals,
+// NoV → 0, roughness 1), 0.08 for f0 = 0.04.
+
+// (A, B) such that the directional albedo is f0·A + B. Perceptual roughness, as Karis fits it.
+vec2 envBRDFApprox(float NoV, float roughness) {
+    vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+    float grazing = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+    return vec2(-1.04, 1.04) * grazing + r.zw;
+}
+
+vec3 environmentLight(Surface s, float ao) {
+    vec3 R = reflect(-s.V, s.N);
+    vec2 AB = envBRDFApprox(s.NoV, s.roughness);
+    float occlusion = specularOcclusion(s.NoV, ao, s.a);
+    return (s.f0 * AB.x + AB.y) * environment(R) * occlusion;
+}

@@ -1,0 +1,15 @@
+/* ---
+id = "phase.isotropic"
+slot = "phase"
+summary = "Isotropic scattering, 1/4π in every direction (Henyey-Greenstein at g = 0; g is ignored)"
+provides = ["phase"]
+requires = ["PI"]
+domain = { cosTheta = [-1, 1], g = [0, 0] }
+reference = "phase_henyey_greenstein"
+error_budget = { max_abs = 1e-8 }
+sources = ["Pharr, Jakob and Humphreys, PBRT 3rd ed., 11.2 (phase functions)"]
+--- */
+
+float phase(float cosTheta, float g) {
+    return 0.25 / PI;
+}
