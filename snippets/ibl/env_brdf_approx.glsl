@@ -4,7 +4,7 @@ slot = "ibl"
 summary = "Environment along the mirror direction times Karis's analytic split-sum fit f0·A + B, with specular occlusion"
 provides = ["environmentLight", "envBRDFApprox"]
 requires = ["Surface", "env", "specocc"]
-error_budget = { max_abs = 0.5 }
+error_budget = { max_abs = 0.55 }
 sources = [
     "lighting-model skill, common variants (IBL: EnvBRDFApprox)",
     "Karis 2014, Physically Based Shading on Mobile (EnvBRDFApprox)",
@@ -21,7 +21,7 @@ sources = [
 // (compiler/references/environment.dfg_split_sum), roughness and NoV in [0, 1]: see
 // tests/test_environment_light.py. The fit was made for a table with a different masking
 // term, so it is close at normal incidence and far off at grazing angles on rough surfaces,
-// where height-correlated Smith keeps much more energy: |f0·A + B| off by up to 0.5 (metals,
+// where height-correlated Smith keeps much more energy: f0·A + B off by up to 0.55 (metals,
 // NoV → 0, roughness 1), 0.08 for f0 = 0.04.
 
 // (A, B) such that the directional albedo is f0·A + B. Perceptual roughness, as Karis fits it.
