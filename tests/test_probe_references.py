@@ -3,6 +3,7 @@ budget of its front matter over its domain, and finite and non-negative at the e
 
 from __future__ import annotations
 
+import inspect
 import itertools
 
 import numpy as np
@@ -56,6 +57,19 @@ def domain_samples(snippet: Snippet, per_axis: int) -> dict[str, np.ndarray]:
     return grid(axes)
 
 
+def unit_directions(samples: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """A unit-vector input (`n` of irradiance: n0, n1, n2 in the domain) is the grid over the
+    cube pushed onto the sphere, without its centre: the entry takes directions, not points."""
+    if not {"n0", "n1", "n2"} <= samples.keys():
+        return samples
+    n = np.stack([samples["n0"], samples["n1"], samples["n2"]], -1)
+    length = np.linalg.norm(n, axis=-1)
+    keep = length > 1e-3
+    n = n[keep] / length[keep, None]
+    rest = {key: values[keep] for key, values in samples.items()}
+    return rest | {"n0": n[:, 0], "n1": n[:, 1], "n2": n[:, 2]}
+
+
 def probe_values(snippet: Snippet, base: dict[str, np.ndarray]) -> np.ndarray:
     count = len(next(iter(base.values())))
     inputs = {}
@@ -71,6 +85,9 @@ def reference_values(snippet: Snippet, base: dict[str, np.ndarray]) -> np.ndarra
     if snippet.slot == "V":
         args = {key: base.get(key, DOTS_DEFAULTS[key]) for key in DOTS_DEFAULTS}
         args["a"] = base.get("a", 0.5)
+    # A reference may take the snippet's own parameters by name: it gets their defaults.
+    accepted = inspect.signature(reference(snippet.reference)).parameters
+    args |= {name: p.default for name, p in snippet.params.items() if name in accepted}
     result = np.asarray(reference(snippet.reference)(**args), dtype=np.float64)
     return result
 
@@ -81,7 +98,7 @@ def test_variant_within_its_error_budget(snippet_id: str) -> None:
     per_axis = 48 if len(snippet.domain) <= 2 else 20 if len(snippet.domain) == 3 else 10
     # The GPU receives float32 inputs; the reference gets the same values, so that what is
     # measured is the snippet's arithmetic, not how 0.9999999 rounds on the way in.
-    samples = domain_samples(snippet, per_axis)
+    samples = unit_directions(domain_samples(snippet, per_axis))
     base = {k: v.astype(np.float32).astype(np.float64) for k, v in samples.items()}
     gpu = probe_values(snippet, base).astype(np.float64)
     exact = reference_values(snippet, base)
