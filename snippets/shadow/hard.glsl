@@ -6,6 +6,8 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 64, range = [1, 256] } }
 sources = ["Inigo Quilez, soft shadows (the hard case)"]
+reference = "shadow_ray"
+error_budget = { mean_abs = 0.003 }  # 0/1 output: the share of points whose verdict differs
 --- */
 float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
     float t = tmin;

@@ -6,6 +6,8 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 24, range = [1, 256] }, SHADOW_K = { type = "float", default = 8.0, range = [1.0, 128.0] } }
 sources = ["lighting-model skill, complete code template", "Inigo Quilez, soft shadows in raymarched SDFs (2010)"]
+reference = "shadow_disc_light"
+error_budget = { max_abs = 1.0, mean_abs = 0.023 }
 --- */
 // A miss by h at distance t along the ray leaves a gap of about h/t radians between the ray
 // and the occluder; the light counts as fully visible once every gap is at least 1/SHADOW_K,

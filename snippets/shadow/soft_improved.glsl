@@ -6,6 +6,8 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 32, range = [1, 256] }, SHADOW_K = { type = "float", default = 8.0, range = [1.0, 128.0] } }
 sources = ["Inigo Quilez, soft shadows in raymarched SDFs, improved technique (2018)", "Sebastian Aaltonen, GDC 2018, Claybook: ray tracing SDFs"]
+reference = "shadow_disc_light"
+error_budget = { max_abs = 0.75, mean_abs = 0.027 }
 --- */
 // The classic k·h/t only sees the gaps at the points it samples, and the closest approach to
 // an occluder usually falls between two of them, which shows as banding in the penumbra. The
@@ -21,9 +23,10 @@ float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
         float h = map(ro + rd * t);
         if (h < 1e-4) return 0.0;  // on or inside an occluder
         float y = (h * h - ph * ph + s * s) / (2.0 * s);
-        // The spheres do not meet (they are apart after a clamped step, or one holds the
-        // other): this sample alone bounds the gap.
-        y = (y > 0.0 && y < h) ? y : 0.0;
+        // Only when the last sphere reached this sample (no step forced past it by the lower
+        // clamp) is the segment between them known empty; otherwise, or when the nearest point
+        // lies ahead (y <= 0), this sample alone bounds the gap, as in the classic march.
+        y = (s <= ph && y > 0.0 && y < h) ? y : 0.0;
         float d = sqrt(h * h - y * y);
         res = min(res, SHADOW_K * d / max(t - y, 1e-3));
         ph = h;
