@@ -12,6 +12,7 @@ import pytest
 from glint.compiler.catalog import Snippet, load_catalog
 from glint.compiler.probes import entry_function, probe_inputs, run_probe
 from glint.compiler.references import reference
+from glint.compiler.references.geometry import dots
 
 pytestmark = pytest.mark.render
 
@@ -22,7 +23,12 @@ SCENE_SLOTS = {"ao", "shadow", "normal", "sss"}
 WITH_REFERENCE = sorted(
     s.id for s in CATALOG.snippets.values() if s.reference and s.slot not in SCENE_SLOTS
 )
-BRDF_TERMS = sorted(s.id for s in CATALOG.snippets.values() if s.slot in ("D", "F", "V"))
+# The lobes take a Surface and Dots; their domains are the geometry (NoL signed, NoV, phi) and
+# the roughness, from which the probe's Dots are derived as `lightDots` derives them.
+LOBE_SLOTS = {"diffuse", "specular"}
+BRDF_TERMS = sorted(
+    s.id for s in CATALOG.snippets.values() if s.slot in {"D", "F", "V"} | LOBE_SLOTS
+)
 
 # Values at which lighting code breaks: cosines at and just beyond their ends, roughness 0, the
 # smallest roughness anyone clamps to, and 1; F0 of nothing and of a perfect mirror.
@@ -38,9 +44,21 @@ def scalar_names(snippet: Snippet) -> list[str]:
 
 
 def base_name(name: str) -> str:
-    """'d.NoL' -> 'NoL'; 'f01' -> 'f0' (a vector component); others as they are."""
+    """'d.NoL' -> 'NoL'; 'f01' -> 'f0', 'F2' -> 'F' (vector components); others as they are."""
     name = name.split(".")[-1]
-    return "f0" if name.startswith("f0") and name[2:].isdigit() else name
+    for vector in ("f0", "F"):
+        if name.startswith(vector) and name[len(vector) :].isdigit():
+            return vector
+    return name
+
+
+def lobe_inputs(geometry: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """Base-named probe values of a lobe from its geometry: the Dots, the roughness, F = 1."""
+    values = dict(dots(geometry["NoL"], geometry["NoV"], geometry.get("phi", 0.0)))
+    count = len(values["NoL"])
+    values["roughness"] = np.broadcast_to(geometry.get("roughness", 0.5), (count,))
+    values["F"] = np.ones(count)
+    return values
 
 
 def grid(axes: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -71,6 +89,8 @@ def unit_directions(samples: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
 
 
 def probe_values(snippet: Snippet, base: dict[str, np.ndarray]) -> np.ndarray:
+    if snippet.slot in LOBE_SLOTS:
+        base = lobe_inputs(base)
     count = len(next(iter(base.values())))
     inputs = {}
     for name in scalar_names(snippet):
@@ -125,18 +145,34 @@ def extreme_axes(name: str) -> list[float]:
     return COSINE_EXTREMES
 
 
+def extreme_inputs(snippet: Snippet) -> tuple[list[str], np.ndarray, dict[str, np.ndarray]]:
+    """Every combination of extreme values: the axis names, the rows, and the probe inputs."""
+    names = scalar_names(snippet)
+    if snippet.slot in LOBE_SLOTS:
+        # N·V as makeSurface clamps it; N·L = −N·V with φ = π puts L at −V, where H is 0.
+        keys = ["NoL", "NoV", "phi", "roughness"]
+        axes = [
+            COSINE_EXTREMES + [-0.5],
+            [1e-4, 0.5, 1.0],
+            [0.0, np.pi / 2, np.pi],
+            [r**0.5 for r in ROUGHNESS_EXTREMES],
+        ]
+        table = np.array(list(itertools.product(*axes)), dtype=np.float64)
+        base = lobe_inputs({k: table[:, i] for i, k in enumerate(keys)})
+        return keys, table, {name: base[base_name(name)] for name in names}
+    # Vector components share one value so that the product of axes stays small.
+    keys = list(dict.fromkeys(base_name(n) for n in names))
+    table = np.array(list(itertools.product(*(extreme_axes(k) for k in keys))), np.float64)
+    return keys, table, {name: table[:, keys.index(base_name(name))] for name in names}
+
+
 @pytest.mark.parametrize("snippet_id", BRDF_TERMS)
 def test_finite_and_non_negative_at_the_extremes(snippet_id: str) -> None:
     snippet = CATALOG.snippets[snippet_id]
-    names = scalar_names(snippet)
-    # Vector components share one value so that the product of axes stays small.
-    keys = list(dict.fromkeys(base_name(n) for n in names))
-    rows = list(itertools.product(*(extreme_axes(k) for k in keys)))
-    table = np.array(rows, dtype=np.float64)
-    inputs = {name: table[:, keys.index(base_name(name))] for name in names}
+    keys, table, inputs = extreme_inputs(snippet)
     values = run_probe(snippet.id, inputs, CATALOG)
     bad = ~np.isfinite(values) | (values < 0)
     if values.ndim == 2:
         bad = bad.any(axis=1)
-    example = dict(zip(keys, rows[int(np.argmax(bad))], strict=True))
+    example = dict(zip(keys, table[int(np.argmax(bad))], strict=True))
     assert not bad.any(), f"{bad.sum()} bad outputs, e.g. at {example}"

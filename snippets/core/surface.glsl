@@ -48,7 +48,10 @@ Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float 
 }
 
 Dots lightDots(Surface s, vec3 L) {
-    vec3 H = normalize(s.V + L);
+    // With the light straight behind the surface as seen (L = −V) the half vector is
+    // undefined and normalize(0) is NaN; a zero H gives N·H = V·H = 0 instead.
+    vec3 sum = s.V + L;
+    vec3 H = sum * inversesqrt(max(dot(sum, sum), 1e-12));
     Dots d;
     d.NoLsigned = dot(s.N, L);
     d.NoL = max(d.NoLsigned, 0.0);

@@ -4,6 +4,9 @@ slot = "diffuse"
 summary = "Lambert: albedo / π times N·L (energy conserving)"
 provides = ["diffuse"]
 requires = ["PI", "Surface", "Dots"]
+domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
+reference = "diffuse_lambert"
+error_budget = { max_abs = 1e-6 }
 sources = ["lighting-model skill, step 2"]
 --- */
 vec3 diffuse(Surface s, Dots d) {

@@ -1,0 +1,25 @@
+/* ---
+id = "diffuse.burley"
+slot = "diffuse"
+summary = "Burley (Disney) diffuse: Lambert with a retro-reflective rim from roughness"
+provides = ["diffuse", "burleyTail"]
+requires = ["PI", "Surface", "Dots"]
+domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927], roughness = [0, 1] }
+reference = "diffuse_burley"
+error_budget = { max_abs = 2e-6 }
+sources = ["Burley 2012, Physically-Based Shading at Disney, 5.3", "Filament PBR notes, 4.7.1"]
+--- */
+// Two Schlick-like factors toward F90 = 0.5 + 2·roughness·(L·H)²: smooth surfaces darken at
+// grazing angles, rough ones brighten (retro-reflection). Not energy conserving: it reflects
+// up to about 1.56 of uniform light for rough surfaces seen at grazing angles.
+float burleyTail(float cosine, float f90) {
+    float m = 1.0 - cosine;
+    float m2 = m * m;
+    return 1.0 + (f90 - 1.0) * m2 * m2 * m;
+}
+
+vec3 diffuse(Surface s, Dots d) {
+    float f90 = 0.5 + 2.0 * s.roughness * d.VoH * d.VoH;
+    float scatter = burleyTail(d.NoL, f90) * burleyTail(d.NoV, f90);
+    return s.diffuseColor * (scatter * d.NoL / PI);
+}

@@ -1,0 +1,20 @@
+/* ---
+id = "specular.phong"
+slot = "specular"
+summary = "Classic Phong: F · (R·V)^(n/4), unnormalised, no cosine factor"
+provides = ["specular"]
+requires = ["Surface", "Dots", "blinnPhongExponent", "cosinePower"]
+domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927], roughness = [0.2, 1] }
+reference = "specular_phong"
+error_budget = { max_abs = 1e-4, max_rel = 2e-4 }
+sources = ["Phong 1975", "lighting-model skill, variant 1 (classic Phong)", "Lighting models (Unity HLSL), 3. Phong"]
+--- */
+// R is L mirrored about N, and R·V = 2(N·L)(N·V) − L·V needs no vector. The exponent is a
+// quarter of the Blinn-Phong one: the lobe around R is about four times narrower in angle than
+// the lobe of N·H for the same exponent (Fisher and Woo 1994). F stands in for the specular
+// colour. Not normalised: highlights dim as roughness drops, and the lobe ignores energy.
+vec3 specular(Surface s, Dots d, vec3 F) {
+    if (d.NoLsigned <= 0.0) return vec3(0.0);
+    float RoV = 2.0 * d.NoLsigned * d.NoV - d.LoV;
+    return F * cosinePower(RoV, 0.25 * blinnPhongExponent(s.a));
+}
