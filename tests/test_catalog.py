@@ -160,3 +160,101 @@ def test_catalog_entries_carry_the_parsed_signatures() -> None:
         "Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float metallic)",
         "Dots lightDots(Surface s, vec3 L)",
     ]
+
+
+# Presets: a variant that is another with new parameter defaults and no body of its own.
+
+BASE = """/* ---
+id = "shadow.base"
+slot = "shadow"
+summary = "a base"
+provides = ["shadow"]
+requires = ["map"]
+params.STEPS = { type = "int", default = 24, range = [1, 256] }
+params.K = { type = "float", default = 8.0 }
+sources = ["somewhere"]
+--- */
+float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
+    float t = tmin;
+    for (int i = 0; i < STEPS; i++) t += K * map(ro + rd * t);
+    return t > tmax ? 1.0 : 0.0;
+}
+"""
+
+
+def preset(params: str = "{ STEPS = 12 }", of: str = "shadow.base", extra: str = "") -> str:
+    return (
+        f'/* ---\nid = "shadow.quick"\nslot = "shadow"\nsummary = "fewer steps"\n'
+        f'preset_of = "{of}"\nparams = {params}\n{extra}--- */\n'
+    )
+
+
+def load_presets(tmp_path, preset_text: str):  # type: ignore[no-untyped-def]
+    (tmp_path / "shadow").mkdir()
+    (tmp_path / "shadow" / "base.glsl").write_text(BASE)
+    (tmp_path / "shadow" / "quick.glsl").write_text(preset_text)
+    return load_catalog(tmp_path)
+
+
+def test_a_preset_runs_its_base_with_new_defaults(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    catalog = load_presets(tmp_path, preset(extra='sources = ["a note on step counts"]\n'))
+    base, quick = catalog.get("shadow.base"), catalog.get("shadow.quick")
+    assert quick.preset_of == "shadow.base" and base.preset_of == ""
+    assert quick.body == base.body and quick.provides == base.provides
+    assert quick.requires == base.requires
+    assert quick.sources == ("somewhere", "a note on step counts")
+    assert quick.params["STEPS"].default == 12 and base.params["STEPS"].default == 24
+    assert quick.params["K"] == base.params["K"]
+    # The code is the base's, so errors point there; the snippet itself is the preset's file.
+    assert quick.relpath == "snippets/shadow/base.glsl" and quick.body_line == base.body_line
+    assert quick.file == "snippets/shadow/quick.glsl"
+    assert list(catalog.snippets) == ["shadow.base", "shadow.quick"]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (preset("{ STEPZ = 12 }"), "param 'STEPZ' is not a parameter of shadow.base (it has: "),
+        (preset("{ STEPS = 1000 }"), "param 'STEPS' = 1000 is not a int in [1, 256]"),
+        (preset("{ STEPS = 1.5 }"), "param 'STEPS' = 1.5 is not a int"),
+        (preset("{ K = true }"), "param 'K' = True is not a float"),
+        (preset("{ }"), "must set at least one of its base's"),
+        (preset(of="shadow.nope"), "preset_of 'shadow.nope' is not a variant with a body"),
+        (preset(extra='provides = ["shadow"]\n'), "unknown front-matter key ['provides']"),
+        (preset() + "float x;\n", "a preset has no GLSL body"),
+        (preset().replace("params = { STEPS = 12 }\n", ""), "a preset's front matter lacks params"),
+    ],
+)
+def test_bad_preset(tmp_path, text: str, expected: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(InputError) as info:
+        load_presets(tmp_path, text)
+    assert info.value.message.startswith("snippets/shadow/quick.glsl: ")
+    assert expected in info.value.message
+
+
+def test_a_preset_of_a_preset_is_refused(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    (tmp_path / "shadow").mkdir()
+    (tmp_path / "shadow" / "base.glsl").write_text(BASE)
+    (tmp_path / "shadow" / "quick.glsl").write_text(preset())
+    second = preset(of="shadow.quick").replace("shadow.quick", "shadow.quicker", 1)
+    (tmp_path / "shadow" / "quicker.glsl").write_text(second)
+    with pytest.raises(InputError, match="is itself a preset; name its base"):
+        load_catalog(tmp_path)
+
+
+def test_catalog_presets_are_listed_checked_and_composed() -> None:
+    from glint.compiler.compose import compose
+    from glint.compiler.glslang import validate
+    from glint.compiler.standalone import standalone_source
+
+    soft_12 = CATALOG.get("shadow.soft_12")
+    assert soft_12.preset_of == "shadow.soft" and soft_12.params["SHADOW_STEPS"].default == 12
+    entry = next(e for e in catalog_entries() if e["id"] == "shadow.soft_12")
+    assert entry["file"] == "snippets/shadow/soft_12.glsl" and entry["preset_of"] == "shadow.soft"
+    assert entry["signature"] == ["float shadow(vec3 ro, vec3 rd, float tmin, float tmax)"]
+    assert {p["name"]: p["default"] for p in entry["params"]}["SHADOW_STEPS"] == 12
+    assert "#define SHADOW_STEPS 12\n" in standalone_source(soft_12, CATALOG)
+    shader = compose(overrides={"shadow": "soft_12"}).text
+    assert "#define SHADOW_STEPS 12\n" in shader and "shadow.soft_12" in shader
+    assert "// source: snippets/shadow/soft.glsl:" in shader
+    assert validate(shader, "soft_12.glsl") == []
