@@ -7,6 +7,7 @@ requires = ["map"]
 params = { AO_STRENGTH = { type = "float", default = 3.0, range = [0.0, 10.0] } }
 sources = ["lighting-model skill, step 9 (\"can reduce to 3 at far distances\")", "Inigo Quilez, SDF ambient occlusion"]
 reference = "ao_cosine_visibility"
+# Measured like ao.sdf5: max 0.244, mean 0.0064, 0.079 where occluded.
 error_budget = { max_abs = 0.3, mean_abs = 0.008 }
 --- */
 // ao.sdf5 with every other tap: the same heights 0.01 to 0.13 along n, the same decay per unit

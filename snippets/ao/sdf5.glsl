@@ -7,6 +7,8 @@ requires = ["map"]
 params = { AO_STRENGTH = { type = "float", default = 3.0, range = [0.0, 10.0] } }
 sources = ["lighting-model skill, step 9", "Inigo Quilez, SDF ambient occlusion"]
 reference = "ao_cosine_visibility"
+# Against cosine-weighted visibility within 0.2 (the distance that fits it best; it is a
+# heuristic, not an estimator): max 0.27, mean 0.0067 over 5564 points, 0.083 where occluded.
 error_budget = { max_abs = 0.33, mean_abs = 0.009 }
 --- */
 // Compares the distance field at growing heights h along n with h itself: the shortfall is

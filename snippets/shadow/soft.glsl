@@ -7,6 +7,8 @@ requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 24, range = [1, 256] }, SHADOW_K = { type = "float", default = 8.0, range = [1.0, 128.0] } }
 sources = ["lighting-model skill, complete code template", "Inigo Quilez, soft shadows in raymarched SDFs (2010)"]
 reference = "shadow_disc_light"
+# Against a disc light of angular radius atan(1/k): max 0.91 (a low sun's far occluder is out
+# of reach of 24 steps), mean 0.018 over 10460 points, 0.24 in the penumbrae.
 error_budget = { max_abs = 1.0, mean_abs = 0.023 }
 --- */
 // A miss by h at distance t along the ray leaves a gap of about h/t radians between the ray
