@@ -2,17 +2,25 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from importlib.metadata import version as package_version
 from pathlib import Path
 
-from .catalog import load_catalog
+from .catalog import Snippet, load_catalog
 from .emitter import Shader, emit, parameter_block
 from .planner import plan
 from .resolver import resolve
 from .scene import Scene, load_scene
 from .scenegen import generate
 from .units import generated
+
+DERIVATIVES = re.compile(r"\b(dFdx|dFdy|fwidth)\s*\(")
+
+
+def uses_derivatives(snippet: Snippet) -> bool:
+    """Whether the snippet takes screen-space derivatives (which need uniform control flow)."""
+    return DERIVATIVES.search(snippet.body) is not None
 
 
 def glint_version() -> str:
@@ -27,7 +35,8 @@ def compose_scene(
 ) -> Shader:
     catalog = load_catalog()
     the_plan = plan(scene, catalog, tier, overrides)
-    code = generate(scene)
+    normal = catalog.get(the_plan.choices["normal"])
+    code = generate(scene, normal_in_uniform_flow=uses_derivatives(normal))
     # The constants come first and provide the light names that snippets may require (SUN_DIR);
     # their text is written once the resolver has said which snippets' parameters are needed.
     constants = generated("scene.constants", list(code.defines), [], "", rank=-1)

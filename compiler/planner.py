@@ -66,7 +66,22 @@ def plan(
             choose(slot, variant, f"{source} {slot} = {variant!r}")
 
     result.params = scene_params(scene)
+    if result.choices.get("irradiance") == "irradiance.sh9" and _has_environment_light(scene):
+        result.params |= _sh9_params(result.choices["env"], result.params)
     return result
+
+
+def _has_environment_light(scene: Scene) -> bool:
+    return any(light.type == "environment" for light in scene.lights)
+
+
+def _sh9_params(env_id: str, params: dict[str, str]) -> dict[str, str]:
+    """SH_C0..SH_C8 of the scene's environment: the env snippet, with the scene's parameter
+    values, run on the CPU and projected onto nine spherical harmonics."""
+    from .spherical_harmonics import project_sh9, sh9_params, snippet_environment
+
+    coefficients = project_sh9(snippet_environment(env_id, params))
+    return {name: glsl_value(row, "vec3") for name, row in sh9_params(coefficients).items()}
 
 
 def _check_override(catalog: Catalog, source: str, slot: str, variant: str) -> None:

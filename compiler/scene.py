@@ -99,12 +99,23 @@ class DirectionalLight(Strict):
     intensity: NonNegative = 1.0
     shadow: bool = True
     shadow_distance: Positive = 5.0
+    # Per-channel exponents applied to the shadow, e.g. [1.0, 1.2, 1.5]: penumbrae turn cool.
+    penumbra: Annotated[list[Positive], Field(min_length=3, max_length=3)] | None = None
 
     @model_validator(mode="after")
     def _nonzero(self) -> DirectionalLight:
         if not any(self.direction):
             raise ValueError("direction must not be the zero vector")
         return self
+
+
+class PointLight(Strict):
+    type: Literal["point"]
+    position: Vec3
+    color: Color = [1.0, 1.0, 1.0]
+    intensity: NonNegative = 1.0
+    range: Positive = 10.0  # where the attenuation reaches zero (if the variant has a range)
+    shadow: bool = True
 
 
 class SkyLight(Strict):
@@ -121,7 +132,25 @@ class BackLight(Strict):
     intensity: NonNegative = 1.0
 
 
-Light = Annotated[DirectionalLight | SkyLight | BackLight, Field(discriminator="type")]
+class BounceLight(Strict):
+    type: Literal["bounce"]
+    # Toward the light; by default the key light's direction mirrored and made horizontal.
+    direction: Vec3 | None = None
+    color: Color = [0.40, 0.28, 0.20]
+    intensity: NonNegative = 1.0
+
+
+class EnvironmentLight(Strict):
+    """Diffuse light from the scene's environment, by the `irradiance` slot's variant."""
+
+    type: Literal["environment"]
+    intensity: NonNegative = 1.0
+
+
+Light = Annotated[
+    DirectionalLight | PointLight | SkyLight | BackLight | BounceLight | EnvironmentLight,
+    Field(discriminator="type"),
+]
 Camera = Annotated[OrbitCamera | LookAtCamera, Field(discriminator="type")]
 SceneObject = Annotated[Sphere | Plane | Box, Field(discriminator="shape")]
 

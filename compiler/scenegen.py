@@ -9,7 +9,19 @@ from dataclasses import dataclass
 
 from .catalog import glsl_float, glsl_value
 from .errors import InputError
-from .scene import BackLight, Box, DirectionalLight, Material, Plane, Scene, SkyLight, Sphere
+from .scene import (
+    BackLight,
+    BounceLight,
+    Box,
+    DirectionalLight,
+    EnvironmentLight,
+    Material,
+    Plane,
+    PointLight,
+    Scene,
+    SkyLight,
+    Sphere,
+)
 from .units import Unit, generated
 
 
@@ -19,7 +31,9 @@ class SceneCode:
     units: list[Unit]  # map, materials, shading, mainImage
 
 
-def generate(scene: Scene) -> SceneCode:
+def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
+    """The scene's own code. `normal_in_uniform_flow` computes the normal outside the hit
+    branch, for normal variants built on screen-space derivatives."""
     defines, light_calls, light_requires = _lights(scene)
     materials = _used_materials(scene)
     units = [_map_unit(scene)]
@@ -27,7 +41,7 @@ def generate(scene: Scene) -> SceneCode:
         units.append(_material_index_unit(scene, materials))
     units.append(_surface_unit(scene, materials))
     units.append(_shade_unit(scene, light_calls, light_requires))
-    units.append(_main_unit())
+    units.append(_main_unit(normal_in_uniform_flow))
     return SceneCode(defines=defines, units=units)
 
 
@@ -45,46 +59,71 @@ def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
     calls: list[str] = []
     requires: list[str] = []
     counts: dict[str, int] = {}
-    key_light = "SUN"  # the first directional light is the sun the background draws
 
     def name(base: str) -> str:
         n = counts.get(base, 0)
         counts[base] = n + 1
         return base if n == 0 else f"{base}{n}"
 
+    def fill_direction(i: int, ident: str, direction: list[float] | None) -> None:
+        if direction is not None:
+            defines[f"{ident}_DIR"] = f"normalize({_vec3(direction)})"
+        elif "SUN" in counts:
+            # Opposite the sun, horizontal: light bounced back from behind the viewer's side.
+            defines[f"{ident}_DIR"] = "normalize(vec3(-SUN_DIR.x, 0.0, -SUN_DIR.z))"
+        else:
+            raise InputError(
+                f"lights[{i}].direction: a {scene.lights[i].type} light needs a direction when "
+                "the scene has no directional light before it"
+            )
+
     for i, light in enumerate(scene.lights):
         if isinstance(light, DirectionalLight):
             ident = name("SUN") if "SUN" not in counts else name("LIGHT")
             defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
             defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
-            visibility = "1.0"
+            visibility = "vec3(1.0)"
             if light.shadow:
                 dist = glsl_float(light.shadow_distance)
-                visibility = f"shadow(s.P, {ident}_DIR, 0.02, {dist})"
+                cast = f"vec3(shadow(s.P, {ident}_DIR, 0.02, {dist}))"
+                visibility = cast
                 requires.append("shadow")
+                if light.penumbra is not None:
+                    defines[f"{ident}_PENUMBRA"] = _vec3(light.penumbra)
+                    visibility = f"pow({cast}, {ident}_PENUMBRA)"
             calls.append(f"directionalLight(s, {ident}_DIR, {ident}_COLOR, {visibility})")
             requires.append("directionalLight")
+        elif isinstance(light, PointLight):
+            ident = name("POINT")
+            defines[f"{ident}_POS"] = _vec3(light.position)
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            defines[f"{ident}_RANGE"] = glsl_float(light.range)
+            visibility = "vec3(1.0)"
+            if light.shadow:
+                toward = f"normalize({ident}_POS - s.P)"
+                visibility = f"vec3(shadow(s.P, {toward}, 0.02, distance({ident}_POS, s.P)))"
+                requires.append("shadow")
+            calls.append(
+                f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})"
+            )
+            requires.append("pointLight")
         elif isinstance(light, SkyLight):
             ident = name("SKY")
             defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
             calls.append(f"skyLight(s, {ident}_COLOR, occlusion)")
             requires.append("skyLight")
-        elif isinstance(light, BackLight):
-            ident = name("BACK")
-            if light.direction is not None:
-                defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
-            elif "SUN" in counts:
-                # Opposite the sun, horizontal: light bounced back from behind the viewer's side.
-                key = key_light
-                defines[f"{ident}_DIR"] = f"normalize(vec3(-{key}_DIR.x, 0.0, -{key}_DIR.z))"
-            else:
-                raise InputError(
-                    f"lights[{i}].direction: a back light needs a direction when the scene "
-                    "has no directional light before it"
-                )
+        elif isinstance(light, BackLight | BounceLight):
+            ident = name(light.type.upper())
+            fill_direction(i, ident, light.direction)
             defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
-            calls.append(f"backLight(s, {ident}_DIR, {ident}_COLOR, occlusion)")
-            requires.append("backLight")
+            function = f"{light.type}Light"
+            calls.append(f"{function}(s, {ident}_DIR, {ident}_COLOR, occlusion)")
+            requires.append(function)
+        elif isinstance(light, EnvironmentLight):
+            ident = name("ENV_LIGHT")
+            defines[f"{ident}_SCALE"] = glsl_float(light.intensity)
+            calls.append(f"irradianceLight(s, {ident}_SCALE, occlusion)")
+            requires.append("irradianceLight")
     return defines, calls, requires
 
 
@@ -194,23 +233,38 @@ def _shade_unit(scene: Scene, light_calls: list[str], light_requires: list[str])
     return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n")
 
 
-def _main_unit() -> Unit:
-    body = """void mainImage(out vec4 fragColor, in vec2 fragCoord) {
-    vec3 ro;
-    vec3 rd;
-    cameraRay(fragCoord, ro, rd);
-    vec3 color = background(rd);
-    float t = raymarch(ro, rd);
-    if (t > 0.0) {
-        vec3 P = ro + t * rd;
-        color = shade(surfaceAt(P, calcNormal(P), -rd));
-    }
-    color = outputTransfer(tonemap(color));
-    fragColor = vec4(color, 1.0);
-}
-"""
+def _main_unit(normal_in_uniform_flow: bool) -> Unit:
     requires = [
         "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
         "outputTransfer", "tonemap",
     ]  # fmt: skip
+    if not normal_in_uniform_flow:
+        hit = """    if (t > 0.0) {
+        vec3 P = ro + t * rd;
+        color = shade(surfaceAt(P, calcNormal(P), -rd));
+    }
+"""
+    else:
+        # Screen-space derivatives are undefined inside a branch that neighbouring pixels may
+        # not take, so a derivative normal is computed by every pixel: rays that miss use a
+        # far point, which keeps the 2×2 blocks at the horizon from mixing in the eye.
+        # MARCH_FAR is the raymarch variant's parameter (written by the parameter block).
+        hit = """    vec3 P = ro + (t > 0.0 ? t : MARCH_FAR) * rd;
+    vec3 N = calcNormal(P);
+    if (t > 0.0) {
+        color = shade(surfaceAt(P, N, -rd));
+    }
+"""
+    body = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    vec3 ro;\n"
+        "    vec3 rd;\n"
+        "    cameraRay(fragCoord, ro, rd);\n"
+        "    vec3 color = background(rd);\n"
+        "    float t = raymarch(ro, rd);\n"
+        f"{hit}"
+        "    color = outputTransfer(tonemap(color));\n"
+        "    fragColor = vec4(color, 1.0);\n"
+        "}\n"
+    )
     return generated("scene.main", ["mainImage"], requires, body)

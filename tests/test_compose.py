@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+import numpy as np
 import pytest
 
 from glint.compiler.compose import compose, compose_scene, glint_version
@@ -114,7 +115,7 @@ intensity = 0.5
     shader = compose_scene(parse_scene(text))
     for name in ("SUN_DIR", "LIGHT_DIR", "BACK_DIR", "SKY_COLOR", "SKY1_COLOR"):
         assert f"#define {name} " in shader.text
-    assert "directionalLight(s, LIGHT_DIR, LIGHT_COLOR, 1.0)" in shader.text
+    assert "directionalLight(s, LIGHT_DIR, LIGHT_COLOR, vec3(1.0))" in shader.text
     assert validate(shader.text, "lights.glsl") == []
 
 
@@ -122,3 +123,65 @@ def test_back_light_without_a_sun_needs_a_direction() -> None:
     text = BARE.replace("[effects]", "[[lights]]\ntype = \"back\"\n[effects]")
     with pytest.raises(InputError, match=r"lights\[0\]\.direction: a back light needs"):
         compose_scene(parse_scene(text))
+
+
+LIGHTS = """
+[[lights]]
+type = "directional"
+direction = [0.6, 0.8, -0.5]
+penumbra = [1.0, 1.2, 1.5]
+[[lights]]
+type = "point"
+position = [1.5, 1.0, 1.0]
+range = 6.0
+[[lights]]
+type = "bounce"
+[[lights]]
+type = "environment"
+[effects]"""
+
+
+def lit_scene() -> str:
+    text = BARE.replace("[effects]", LIGHTS, 1)
+    colors = "[environment]\ntop = [0.3, 0.5, 0.9]\nbottom = [0.7, 0.6, 0.5]"
+    return text.replace("[environment]", colors)
+
+
+def test_point_bounce_environment_lights_and_a_tinted_penumbra() -> None:
+    shader = compose_scene(parse_scene(lit_scene()))
+    text = shader.text
+    assert "pow(vec3(shadow(s.P, SUN_DIR, 0.02, 5.0)), SUN_PENUMBRA)" in text
+    assert "#define SUN_PENUMBRA vec3(1.0, 1.2, 1.5)" in text
+    assert "#define POINT_RANGE 6.0" in text
+    assert "distance(POINT_POS, s.P)" in text  # the point light's shadow stops at the light
+    assert "bounceLight(s, BOUNCE_DIR, BOUNCE_COLOR, 1.0)" in text  # AO is off
+    ids = {u.id for u in shader.units}
+    assert {"attenuation.inverse_square_range", "irradiance.sh9", "light.point"} <= ids
+    assert validate(text, "lights.glsl") == []
+
+
+def test_sh9_constants_come_from_the_scenes_environment() -> None:
+    shader = compose_scene(parse_scene(lit_scene()))
+    match = re.search(r"#define SH_C0 vec3\(([^)]*)\)", shader.text)
+    assert match
+    # L00 = ∫ L Y00 dω = 2√π · mean radiance, and a linear gradient in y averages to the
+    # mean of its ends over the sphere.
+    mean = (np.array([0.3, 0.5, 0.9]) + np.array([0.7, 0.6, 0.5])) / 2
+    got = np.array([float(v) for v in match.group(1).split(",")])
+    np.testing.assert_allclose(got, 2 * np.sqrt(np.pi) * mean, rtol=1e-5)
+
+
+def test_fast_tier_uses_the_hemisphere_and_no_sh_constants() -> None:
+    shader = compose_scene(parse_scene(lit_scene()), tier="fast")
+    assert "irradiance.hemisphere" in {u.id for u in shader.units}
+    assert "SH_C0" not in shader.text
+
+
+def test_derivative_normals_are_taken_in_uniform_control_flow() -> None:
+    flat = compose(overrides={"normal": "derivative_flat"}).text
+    main = flat[flat.index("void mainImage") :]
+    assert main.index("calcNormal(P)") < main.index("if (t > 0.0)")
+    assert validate(flat, "flat.glsl") == []
+    default = compose().text
+    main = default[default.index("void mainImage") :]
+    assert main.index("if (t > 0.0)") < main.index("calcNormal(P)")  # no cost on misses

@@ -1,16 +1,12 @@
 /* ---
 id = "light.directional"
 slot = "light"
-summary = "Directional light: diffuse and specular lobes times radiance and visibility"
+summary = "Directional light: the surface's response times radiance and visibility"
 provides = ["directionalLight"]
-requires = ["Surface", "Dots", "lightDots", "F", "diffuse", "specular"]
+requires = ["Surface", "lightResponse"]
 sources = ["lighting-model skill, step 8 and complete code template"]
 --- */
-// The diffuse share is what the Fresnel term does not reflect (energy split). Each lobe
-// carries its own cosine factor, so a wrapped diffuse model can light past the terminator.
-vec3 directionalLight(Surface s, vec3 L, vec3 radiance, float visibility) {
-    Dots d = lightDots(s, L);
-    vec3 F = fresnel(s.f0, d.VoH);
-    vec3 reflected = (1.0 - F) * diffuse(s, d) + specular(s, d, F);
-    return reflected * radiance * visibility;
+// `visibility` is per channel, so a shadow can tint its penumbra (see the scene's `penumbra`).
+vec3 directionalLight(Surface s, vec3 L, vec3 radiance, vec3 visibility) {
+    return lightResponse(s, L) * radiance * visibility;
 }
