@@ -11,9 +11,10 @@
 //   D.ggx                       GGX / Trowbridge-Reitz normal distribution
 //   F.schlick                   Schlick's Fresnel approximation with pow
 //   V.smith_ggx_correlated      Height-correlated Smith visibility for GGX, G / (4 NoL NoV), exact form
-//   diffuse.lambert             Lambert diffuse BRDF, albedo / π (energy conserving)
+//   diffuse.lambert             Lambert: albedo / π times N·L (energy conserving)
 //   specular.cook_torrance      Cook-Torrance microfacet lobe assembled from the chosen D, F and V
-//   light.directional           Directional light: diffuse and specular BRDF times radiance, N·L and visibility
+//   light.response              What a surface reflects toward the eye per unit radiance arriving from L: diffuse and specular lobes
+//   light.directional           Directional light: the surface's response times radiance and visibility
 //   specocc.power               Specular occlusion from AO: clamp((NoV + ao)^a − 1 + ao)
 //   env.gradient                Environment as a vertical gradient from ENV_BOTTOM (down) to ENV_TOP (up)
 //   ibl.simple_reflection       Environment seen along the mirror direction, weighted by Fresnel(NoV) and specular occlusion
@@ -22,7 +23,7 @@
 //   tonemap.reinhard            Reinhard tone map, c / (c + 1) per channel
 //   output.gamma22              Display encoding with a pure 2.2 gamma
 //   ao.sdf5                     SDF ambient occlusion, 5 taps along the normal
-//   shadow.soft                 Soft shadow by sphere tracing toward the light, penumbra k·h/t
+//   shadow.soft                 Soft shadow by sphere tracing toward the light, penumbra k·h/t (24 steps)
 //   normal.central_differences  SDF normal by central differences, 6 taps
 //   raymarch.sphere_tracing     Sphere tracing: distance along the ray to the first hit, or -1
 
@@ -65,13 +66,15 @@ struct Surface {
     float NoV;          // clamped away from 0 so that visibility terms stay finite
 };
 
-// The dot products of one light direction, clamped to where the BRDF is defined.
+// The dot products of one light direction, clamped to where the BRDF is defined, and N·L
+// before clamping, for the models that wrap light past the terminator (half-Lambert, toon).
 struct Dots {
     float NoL;
     float NoV;
     float NoH;
     float VoH;
     float LoV;
+    float NoLsigned;
 };
 
 // Smallest NoV: at exactly 0 the Smith visibility divides 0 by 0 on silhouettes.
@@ -93,9 +96,13 @@ Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float 
 }
 
 Dots lightDots(Surface s, vec3 L) {
-    vec3 H = normalize(s.V + L);
+    // With the light straight behind the surface as seen (L = −V) the half vector is
+    // undefined and normalize(0) is NaN; a zero H gives N·H = V·H = 0 instead.
+    vec3 sum = s.V + L;
+    vec3 H = sum * inversesqrt(max(dot(sum, sum), 1e-12));
     Dots d;
-    d.NoL = max(dot(s.N, L), 0.0);
+    d.NoLsigned = dot(s.N, L);
+    d.NoL = max(d.NoLsigned, 0.0);
     d.NoV = s.NoV;
     d.NoH = max(dot(s.N, H), 0.0);
     d.VoH = max(dot(s.V, H), 0.0);
@@ -169,24 +176,30 @@ float visibility(Dots d, float a) {
     return 0.5 / max(gv + gl, MIN_VIS_DENOM);
 }
 
-// source: snippets/diffuse/lambert.glsl:9
+// source: snippets/diffuse/lambert.glsl:12
 vec3 diffuse(Surface s, Dots d) {
-    return s.diffuseColor * (1.0 / PI);
+    return s.diffuseColor * (d.NoL / PI);
 }
 
 // source: snippets/specular/cook_torrance.glsl:9
-// V already holds G / (4 NoL NoV), so the lobe is a plain product.
+// V already holds G / (4 NoL NoV), so the lobe is a plain product, times its cosine N·L.
 vec3 specular(Surface s, Dots d, vec3 F) {
-    return distribution(d.NoH, s.a) * visibility(d, s.a) * F;
+    return distribution(d.NoH, s.a) * visibility(d, s.a) * F * d.NoL;
+}
+
+// source: snippets/light/response.glsl:9
+// The diffuse share is what the Fresnel term does not reflect (energy split). Each lobe
+// carries its own cosine factor, so a wrapped diffuse model can light past the terminator.
+vec3 lightResponse(Surface s, vec3 L) {
+    Dots d = lightDots(s, L);
+    vec3 F = fresnel(s.f0, d.VoH);
+    return (1.0 - F) * diffuse(s, d) + specular(s, d, F);
 }
 
 // source: snippets/light/directional.glsl:9
-// The diffuse share is what the Fresnel term does not reflect (energy split).
-vec3 directionalLight(Surface s, vec3 L, vec3 radiance, float visibility) {
-    Dots d = lightDots(s, L);
-    vec3 F = fresnel(s.f0, d.VoH);
-    vec3 brdf = (1.0 - F) * diffuse(s, d) + specular(s, d, F);
-    return brdf * radiance * d.NoL * visibility;
+// `visibility` is per channel, so a shadow can tint its penumbra (see the scene's `penumbra`).
+vec3 directionalLight(Surface s, vec3 L, vec3 radiance, vec3 visibility) {
+    return lightResponse(s, L) * radiance * visibility;
 }
 
 // source: snippets/specocc/power.glsl:10
@@ -248,7 +261,7 @@ float map(vec3 p) {
     return d;
 }
 
-// source: snippets/ao/sdf5.glsl:10
+// source: snippets/ao/sdf5.glsl:14
 // Compares the distance field at growing heights h along n with h itself: the shortfall is
 // how much nearby geometry closes in. Nearer taps weigh more.
 float ambientOcclusion(vec3 p, vec3 n) {
@@ -262,22 +275,26 @@ float ambientOcclusion(vec3 p, vec3 n) {
     return clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
 }
 
-// source: snippets/shadow/soft.glsl:10
-// The nearest miss h at distance t along the ray bounds the visible part of the light;
-// larger SHADOW_K gives harder edges.
+// source: snippets/shadow/soft.glsl:14
+// A miss by h at distance t along the ray leaves a gap of about h/t radians between the ray
+// and the occluder; the light counts as fully visible once every gap is at least 1/SHADOW_K,
+// i.e. for a light of angular radius about atan(1/SHADOW_K). The penumbra lies outside the
+// hard shadow: a ray that grazes an occluder gives 0. Larger SHADOW_K gives harder edges.
 float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
     float res = 1.0;
-    float t = tmin;
+    float t = max(tmin, 1e-3);  // h/t has no value at t = 0
     for (int i = 0; i < SHADOW_STEPS; i++) {
         float h = map(ro + rd * t);
         res = min(res, SHADOW_K * h / t);
+        // At least 0.02 so the march moves on beside a surface, at most 0.2 so the closest
+        // approach to an occluder is not stepped over.
         t += clamp(h, 0.02, 0.2);
         if (res < 0.001 || t > tmax) break;
     }
     return clamp(res, 0.0, 1.0);
 }
 
-// source: snippets/normal/central_differences.glsl:10
+// source: snippets/normal/central_differences.glsl:12
 vec3 calcNormal(vec3 p) {
     vec2 e = vec2(NORMAL_EPS, 0.0);
     return normalize(vec3(
@@ -314,7 +331,7 @@ int materialAt(vec3 p) {
 vec3 shade(Surface s) {
     float occlusion = ambientOcclusion(s.P, s.N);
     vec3 color = vec3(0.0);
-    color += directionalLight(s, SUN_DIR, SUN_COLOR, shadow(s.P, SUN_DIR, 0.02, 5.0));
+    color += directionalLight(s, SUN_DIR, SUN_COLOR, vec3(shadow(s.P, SUN_DIR, 0.02, 5.0)));
     color += skyLight(s, SKY_COLOR, occlusion);
     color += backLight(s, BACK_DIR, BACK_COLOR, occlusion);
     color += environmentLight(s, occlusion);
