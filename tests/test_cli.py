@@ -153,3 +153,14 @@ def test_catalog_json_is_a_stable_interface() -> None:
         assert Path(entry["file"]).exists()
     assert by_id["D.ggx"]["signature"] == ["float distribution(float NoH, float a)"]
     assert by_id["D.ggx"]["provides"][0] == "distribution"
+
+
+def test_a_reader_that_stops_early_is_not_an_error() -> None:
+    # `glint catalog | head -0`: the reader is gone before glint writes a byte (closing our end
+    # at once, while the child is still importing), so its first write meets a closed pipe.
+    proc = subprocess.Popen([*GLINT, "catalog"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout is not None and proc.stderr is not None
+    proc.stdout.close()
+    error = proc.stderr.read().decode()
+    assert proc.wait(timeout=60) == 0, error
+    assert "internal error" not in error and "Traceback" not in error
