@@ -36,24 +36,31 @@ def test_example_renders_finite(scene: Path, tier: str) -> None:
     assert max(stats["std"]) > 0.02  # something is in the picture
 
 
+# The scene that exercises each slot; the camera, background and post slots follow the scene.
+SCENE_OF_SLOT = {
+    slot: None
+    for slot in ("D", "F", "V", "diffuse", "specular", "ao", "specocc", "shadow", "env", "ibl",
+                 "normal", "raymarch", "tonemap", "output")
+} | {"attenuation": "lamp", "irradiance": "lamp"}
+
+
 def _swappable() -> list[str]:
     from glint.compiler.catalog import load_catalog
     from glint.compiler.slots import SLOTS
 
-    # Slots the default scene exercises; the camera, background and post slots follow the scene.
-    scene_slots = {"D", "F", "V", "diffuse", "specular", "ao", "specocc", "shadow", "env", "ibl",
-                   "normal", "raymarch", "tonemap", "output"}
     return sorted(
         s.id for s in load_catalog().snippets.values()
-        if not SLOTS[s.slot].many and s.slot in scene_slots
+        if not SLOTS[s.slot].many and s.slot in SCENE_OF_SLOT
     )
 
 
 @pytest.mark.render
 @pytest.mark.parametrize("snippet_id", _swappable())
-def test_every_variant_composes_into_the_default_scene(snippet_id: str) -> None:
+def test_every_variant_composes_into_a_scene_of_its_slot(snippet_id: str) -> None:
     slot, variant = snippet_id.split(".", 1)
-    shader = compose(None, overrides={slot: variant})
+    name = SCENE_OF_SLOT[slot]
+    scene = None if name is None else default_scene_path().parent / f"{name}.toml"
+    shader = compose(scene, overrides={slot: variant})
     assert snippet_id in {u.id for u in shader.units}
     assert [str(d) for d in validate(shader.text, f"{snippet_id}.glsl")] == []
     stats = image_stats(render(shader.text, 96, 54, time=1.0))
