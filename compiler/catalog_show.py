@@ -11,12 +11,10 @@ from __future__ import annotations
 
 from .catalog import Catalog, Snippet, glsl_value, load_catalog
 from .resolver import resolve
-from .slots import SCENE_SYMBOLS, SLOTS
+from .slots import SCENE_FUNCTIONS, SCENE_SYMBOLS, SLOTS
 from .standalone import SCENE_DEFINES, standalone_choices
 from .units import Unit, from_snippet, generated
 
-# Functions the composer generates from a scene and snippets may call, with their prototypes.
-SCENE_FUNCTIONS = {"map": "float map(vec3 p)", "materialAt": "int materialAt(vec3 p)"}
 _SCENE_UNIT = "scene.provided"
 
 
@@ -26,7 +24,7 @@ def show_source(snippet_id: str, catalog: Catalog | None = None) -> str:
     catalog = catalog or load_catalog()
     snippet = catalog.get(snippet_id)  # InputError naming close matches for an unknown id
     choices = standalone_choices(snippet)
-    scene_symbols = sorted(set(SCENE_SYMBOLS) | set(SCENE_FUNCTIONS) | set(SCENE_DEFINES))
+    scene_symbols = sorted(set(SCENE_SYMBOLS) | set(SCENE_DEFINES))
     # A placeholder stands for the scene so that requirements on it resolve; it is not printed.
     scene = generated(_SCENE_UNIT, scene_symbols, [], "")
     units = resolve([scene, from_snippet(snippet)], catalog, choices)

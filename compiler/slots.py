@@ -144,13 +144,17 @@ SLOTS: dict[str, Slot] = {
     )
 }
 
-# Symbols the composer generates from the scene itself; snippets may require them.
-SCENE_SYMBOLS: dict[str, str] = {
+# Symbols the composer generates from the scene itself; snippets may require them. The
+# functions with their prototypes, the constants with their type and meaning.
+SCENE_FUNCTIONS: dict[str, str] = {
     "map": "float map(vec3 p)",
-    "objectAt": "int objectAt(vec3 p)",
+    "materialAt": "int materialAt(vec3 p)",
+}
+SCENE_CONSTANTS: dict[str, str] = {
     "SUN_DIR": "vec3 direction toward the scene's key (sun) light",
     "SUN_COLOR": "vec3 radiance of the key light",
 }
+SCENE_SYMBOLS: dict[str, str] = SCENE_FUNCTIONS | SCENE_CONSTANTS
 
 
 def slot_of_entry(name: str) -> Slot | None:

@@ -15,29 +15,25 @@ from .geometry import cos_phi, dots
 _INV_PI = 1.0 / np.pi
 
 
-def _geometry(NoL: ArrayLike, NoV: ArrayLike, phi: ArrayLike) -> dict[str, np.ndarray]:
-    return dots(NoL, NoV, phi)
-
-
 def diffuse_lambert(
     *, NoL: ArrayLike, NoV: ArrayLike, phi: ArrayLike, **_: ArrayLike
 ) -> np.ndarray:
     """Lambert: 1/π · max(N·L, 0)."""
-    return _geometry(NoL, NoV, phi)["NoL"] * _INV_PI
+    return dots(NoL, NoV, phi)["NoL"] * _INV_PI
 
 
 def diffuse_lambert_unnormalized(
     *, NoL: ArrayLike, NoV: ArrayLike, phi: ArrayLike, **_: ArrayLike
 ) -> np.ndarray:
     """Lambert without the 1/π: the form ShaderToy code writes, with lights π times dimmer."""
-    return _geometry(NoL, NoV, phi)["NoL"]
+    return dots(NoL, NoV, phi)["NoL"]
 
 
 def diffuse_half_lambert(
     *, NoL: ArrayLike, NoV: ArrayLike, phi: ArrayLike, **_: ArrayLike
 ) -> np.ndarray:
     """Valve's half-Lambert, ((N·L + 1)/2)², on the 1/π scale of Lambert."""
-    signed = _geometry(NoL, NoV, phi)["NoLsigned"]
+    signed = dots(NoL, NoV, phi)["NoLsigned"]
     return (0.5 * signed + 0.5) ** 2 * _INV_PI
 
 
@@ -47,7 +43,7 @@ def diffuse_wrapped(
     """Energy-conserving wrap: max(N·L + w, 0) / (1 + w)² / π. Over the sphere of light
     directions ∫ max(cos θ + w, 0) dω = π (1 + w)², so uniform light is reflected as Lambert
     reflects it."""
-    signed = _geometry(NoL, NoV, phi)["NoLsigned"]
+    signed = dots(NoL, NoV, phi)["NoLsigned"]
     return np.maximum(signed + wrap, 0.0) / (1.0 + wrap) ** 2 * _INV_PI
 
 
@@ -63,7 +59,7 @@ def diffuse_generalized(
 ) -> np.ndarray:
     """Generalized Lambert, max(N·L · multiply + add, 0)^power / π: Lambert at (1, 0, 1),
     half-Lambert at (0.5, 0.5, 2)."""
-    signed = _geometry(NoL, NoV, phi)["NoLsigned"]
+    signed = dots(NoL, NoV, phi)["NoLsigned"]
     return np.maximum(signed * multiply + add, 0.0) ** power * _INV_PI
 
 
@@ -73,7 +69,7 @@ def diffuse_oren_nayar(
     """Oren and Nayar's full model (1994, eqs. 30 and 39) for a V-cavity surface whose facet
     slopes have standard deviation σ = roughness (radians): the direct term with its three
     coefficients and the interreflection term, times N·L."""
-    d = _geometry(NoL, NoV, phi)
+    d = dots(NoL, NoV, phi)
     nol, nov = d["NoL"], d["NoV"]
     s2 = np.asarray(roughness, np.float64) ** 2
     theta_i, theta_r = np.arccos(np.clip(nol, 0, 1)), np.arccos(np.clip(nov, 0, 1))
@@ -102,7 +98,7 @@ def diffuse_burley(
 ) -> np.ndarray:
     """Burley's Disney diffuse (2012): 1/π (1 + (F90 − 1)(1 − N·L)⁵)(1 + (F90 − 1)(1 − N·V)⁵)
     with F90 = 0.5 + 2 roughness (L·H)², times N·L."""
-    d = _geometry(NoL, NoV, phi)
+    d = dots(NoL, NoV, phi)
     f90 = 0.5 + 2.0 * np.asarray(roughness, np.float64) * d["VoH"] ** 2
     light = 1.0 + (f90 - 1.0) * (1.0 - d["NoL"]) ** 5
     view = 1.0 + (f90 - 1.0) * (1.0 - d["NoV"]) ** 5
@@ -129,7 +125,7 @@ def diffuse_toon(
     """Toon shading as diffuse.toon defines it (a stylised model is its own reference): N·L as
     a staircase of `bands` steps with smoothstep risers, plus a rim (1 − N·V)(N·L)^p passed
     through a narrow smoothstep at `rim_edge`; all over π."""
-    d = _geometry(NoL, NoV, phi)
+    d = dots(NoL, NoV, phi)
     scaled = np.clip(d["NoLsigned"], 0.0, 1.0) * bands
     level = np.floor(scaled)
     lit = (level + _smoothstep(1.0 - softness, 1.0, scaled - level)) / bands

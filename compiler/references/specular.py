@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .distribution import D_ggx
+from .distribution import D_ggx, blinn_phong_exponent
 from .geometry import dots
 from .visibility import V_smith_ggx_correlated
 
@@ -21,8 +21,7 @@ MIN_A = 1e-3  # as MIN_BLINN_PHONG_A in the GLSL
 
 
 def shininess(roughness: ArrayLike) -> np.ndarray:
-    a = np.maximum(np.asarray(roughness, np.float64) ** 2, MIN_A)
-    return 2.0 / (a * a) - 2.0
+    return blinn_phong_exponent(np.maximum(np.asarray(roughness, np.float64) ** 2, MIN_A))
 
 
 def _pow(base: np.ndarray, n: np.ndarray) -> np.ndarray:
