@@ -1,4 +1,5 @@
-"""GPU probes: a snippet's entry function evaluated on the GPU over a list of inputs.
+"""GPU probes: a snippet's entry function (or another function it defines) evaluated on the GPU
+over a list of inputs.
 
 The inputs travel as float textures (iChannel0..3, four floats per texel each, so up to sixteen
 scalars per sample); one pixel evaluates one sample and writes the result into a float
@@ -40,6 +41,13 @@ STRUCT_FIELDS: dict[str, tuple[str, ...]] = {
 SURFACE_INPUTS = ("roughness", "NoV")
 SURFACE_FIXED = "vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0), vec3(0.04)"
 _SIZES = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
+# How each result type fills the framebuffer's vec4; the unused channels are padding.
+_RESULTS = {
+    "float": "vec4({}, 0.0, 0.0, 1.0)",
+    "vec2": "vec4({}, 0.0, 1.0)",
+    "vec3": "vec4({}, 1.0)",
+    "vec4": "{}",
+}
 _CHANNELS = 4
 _SLOTS_PER_SAMPLE = 4 * _CHANNELS
 _ROW = 256  # texels per row of the input textures and the framebuffer
@@ -53,12 +61,25 @@ class Argument:
     glsl: str  # how the probe shader reads it, e.g. "in0.x"
 
 
+def snippet_function(snippet: Snippet, name: str) -> FunctionDef:
+    """The function `name` as defined in the snippet's own body. Only its own: a function it
+    gets from a required snippet belongs to that snippet and is probed there."""
+    functions = analyze(snippet.body, snippet.relpath).functions
+    found = next((f for f in functions if f.name == name), None)
+    if found is None:
+        defined = ", ".join(f.name for f in functions) or "none"
+        raise InputError(
+            f"{snippet.id}: no function {name} defined in the snippet to probe "
+            f"(it defines: {defined})"
+        )
+    return found
+
+
 def entry_function(snippet: Snippet) -> FunctionDef:
     slot = SLOTS[snippet.slot]
     if slot.entry is None:
         raise InputError(f"{snippet.id}: slot {slot.name} has no entry function to probe")
-    symbols = analyze(snippet.body, snippet.relpath)
-    return next(f for f in symbols.functions if f.name == slot.entry)
+    return snippet_function(snippet, slot.entry)
 
 
 def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
@@ -98,18 +119,19 @@ def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
 
 
 def probe_shader(
-    snippet: Snippet, catalog: Catalog, scene_stub: str = SCENE_STUB
+    snippet: Snippet,
+    catalog: Catalog,
+    scene_stub: str = SCENE_STUB,
+    function: str | None = None,
 ) -> tuple[str, list[str], int]:
-    """The probe's source, its scalar input names and the width of its result (1 or 3).
-    `scene_stub` defines `map` (and `materialAt`) for snippets that query the scene."""
-    function = entry_function(snippet)
-    names, call = probe_inputs(function)
-    if function.return_type == "float":
-        result, width = f"vec4({call}, 0.0, 0.0, 1.0)", 1
-    elif function.return_type == "vec3":
-        result, width = f"vec4({call}, 1.0)", 3
-    else:
-        raise InputError(f"{function.name}: cannot probe a {function.return_type} result")
+    """The probe's source, its scalar input names and the width of its result (1 to 4).
+    `scene_stub` defines `map` (and `materialAt`) for snippets that query the scene; `function`
+    names a function of the snippet to probe instead of its slot's entry."""
+    probed = entry_function(snippet) if function is None else snippet_function(snippet, function)
+    names, call = probe_inputs(probed)
+    if probed.return_type not in _RESULTS:
+        raise InputError(f"{probed.name}: cannot probe a {probed.return_type} result")
+    result, width = _RESULTS[probed.return_type].format(call), _SIZES[probed.return_type]
     main = (
         "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
         "    ivec2 texel = ivec2(fragCoord);\n"
@@ -131,14 +153,17 @@ def run_probe(
     inputs: dict[str, np.ndarray],
     catalog: Catalog | None = None,
     scene_stub: str = SCENE_STUB,
+    function: str | None = None,
 ) -> np.ndarray:
     """Evaluate the snippet's entry on the GPU for every sample: `inputs` maps each scalar input
-    name (see `probe_inputs`) to an array of shape (N,). Returns float32 (N,) or (N, 3).
-    `scene_stub` is GLSL defining `map(vec3)` and `materialAt(vec3)` for snippets that need the
-    scene (AO, shadows, normals); by default a unit sphere above the plane y = -1."""
+    name (see `probe_inputs`) to an array of shape (N,). Returns float32 (N,) for a float result,
+    else (N, width) for a vec2, vec3 or vec4. `scene_stub` is GLSL defining `map(vec3)` and
+    `materialAt(vec3)` for snippets that need the scene (AO, shadows, normals); by default a unit
+    sphere above the plane y = -1. `function` probes that function of the snippet (defined in its
+    own body, e.g. a helper such as envBRDFApprox) instead of the slot's entry."""
     catalog = catalog or load_catalog()
     snippet = catalog.get(snippet_id)
-    source, names, width = probe_shader(snippet, catalog, scene_stub)
+    source, names, width = probe_shader(snippet, catalog, scene_stub, function)
     missing = [n for n in names if n not in inputs]
     if missing:
         raise InputError(f"{snippet_id}: probe inputs missing: {', '.join(missing)}")
@@ -152,4 +177,4 @@ def run_probe(
     image = render(source, cols, rows, channels=channels)
     # Rendered rows come top-first; texel row 0 (the first samples) is the bottom row.
     values = image[::-1].reshape(rows * cols, 4)[:count]
-    return values[:, 0] if width == 1 else values[:, :3]
+    return values[:, 0] if width == 1 else values[:, :width]

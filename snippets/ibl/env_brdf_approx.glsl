@@ -22,7 +22,10 @@ sources = [
 // tests/test_environment_light.py. The fit was made for a table with a different masking
 // term, so it is close at normal incidence and far off at grazing angles on rough surfaces,
 // where height-correlated Smith keeps much more energy: f0·A + B off by up to 0.55 (metals,
-// NoV → 0, roughness 1), 0.08 for f0 = 0.04.
+// NoV → 0, roughness 1), 0.08 for f0 = 0.04. The GPU gives the same (A, B) as the float32
+// evaluator to 2e-7, NoV just outside [0, 1] included. A dips to −0.044 for a grazing mirror
+// (f0·A + B up to 1.042 there) and B to −0.0024 at roughness 1: f0·A + B stays ≥ 0 for
+// f0 ≥ 0.04, not quite for f0 = 0.
 
 // (A, B) such that the directional albedo is f0·A + B. Perceptual roughness, as Karis fits it.
 vec2 envBRDFApprox(float NoV, float roughness) {
