@@ -113,4 +113,7 @@ def scene_params(scene: Scene) -> dict[str, str]:
     if scene.environment is not None:
         params["ENV_TOP"] = glsl_value(scene.environment.top, "vec3")
         params["ENV_BOTTOM"] = glsl_value(scene.environment.bottom, "vec3")
+    if scene.medium is not None:
+        params["MEDIUM_EXTINCTION"] = glsl_value(scene.medium.extinction, "vec3")
+        params["MEDIUM_INSCATTER"] = glsl_value(scene.medium.inscatter, "vec3")
     return params

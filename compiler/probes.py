@@ -37,7 +37,8 @@ STRUCT_FIELDS: dict[str, tuple[str, ...]] = {
     "Dots": ("NoL", "NoV", "NoH", "VoH", "LoV", "NoLsigned")
 }
 # A Surface is built from two inputs, its perceptual roughness and N·V; the rest is fixed: a
-# white diffuse albedo, the dielectric f0, N = V = +z at the origin, and a = roughness².
+# white diffuse albedo, the dielectric f0, N = V = +z at the origin, a = roughness² and the
+# diffuse roughness equal to the roughness.
 SURFACE_INPUTS = ("roughness", "NoV")
 SURFACE_FIXED = "vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0), vec3(0.04)"
 _SIZES = {"float": 1, "vec2": 2, "vec3": 3, "vec4": 4}
@@ -107,7 +108,7 @@ def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
             args.append(f"{param.type}({', '.join(fields)})")
         elif param.type == "Surface":
             rough, nov = (scalar(f"{param.name}.{f}") for f in SURFACE_INPUTS)
-            args.append(f"Surface({SURFACE_FIXED}, {rough}, {rough} * {rough}, {nov})")
+            args.append(f"Surface({SURFACE_FIXED}, {rough}, {rough} * {rough}, {nov}, {rough})")
         else:
             raise InputError(f"{function.name}: cannot probe a parameter of type {param.type}")
     if len(names) > _SLOTS_PER_SAMPLE:

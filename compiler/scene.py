@@ -84,6 +84,14 @@ class Material(Strict):
     metallic: Unit = 0.0
     pattern: Literal["none", "checker"] = "none"
     pattern_albedo: Color | None = None  # the second colour of a pattern
+    # Oren-Nayar's σ, the slope deviation of the diffuse microfacets in radians (0 is Lambert);
+    # the rough-diffuse variants read it. None: the specular roughness stands in for it.
+    diffuse_roughness: Unit | None = None
+    # Light that passes through the body and scatters toward the eye (translucency), per
+    # channel: the interior's scattering colour. None: the material is opaque.
+    subsurface: Color | None = None
+    # Asymmetry g of the interior's phase function: > 0 scatters forward (glows when back-lit).
+    subsurface_g: Annotated[float, Field(strict=True, ge=-1.0, le=1.0)] = 0.5
 
     @model_validator(mode="after")
     def _pattern(self) -> Material:
@@ -162,6 +170,19 @@ class Environment(Strict):
     reflection: bool = True
 
 
+class Medium(Strict):
+    """A homogeneous participating medium between the eye and the surfaces: fog, or water
+    below a level. Beer-Lambert extinction with the medium's own glow (the `media` slot)."""
+
+    # σ per unit distance (natural log), per channel; by default the seed's water, which
+    # takes red first and blue last.
+    extinction: Color = [2.0794415, 2.4953298, 3.7429947]
+    # What a long path through the medium converges to: its colour under the ambient light.
+    inscatter: Color = [0.02, 0.12, 0.16]
+    # Water: the medium fills y < level. None: it fills all of space (fog).
+    level: Number | None = None
+
+
 class Background(Strict):
     sun: bool = True  # draw a glow and disc around the key light
 
@@ -188,6 +209,7 @@ class Scene(Strict):
     materials: dict[str, Material]
     lights: list[Light] = []
     environment: Environment | None = Environment()
+    medium: Medium | None = None
     background: Background = Background()
     effects: Effects = Effects()
     post: Post = Post()
@@ -265,10 +287,13 @@ _TAGS: dict[str, type[BaseModel]] = {
     "plane": Plane,
     "box": Box,
     "directional": DirectionalLight,
+    "point": PointLight,
     "sky": SkyLight,
     "back": BackLight,
+    "bounce": BounceLight,
+    "environment": EnvironmentLight,
 }
-_SECTIONS = (Environment, Background, Effects, Post, Quality)
+_SECTIONS = (Environment, Medium, Background, Effects, Post, Quality)
 _MATERIALS = "materials"  # marks the table whose keys are material names
 
 

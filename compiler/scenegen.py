@@ -31,18 +31,35 @@ class SceneCode:
     units: list[Unit]  # map, materials, shading, mainImage
 
 
+@dataclass
+class LightCode:
+    defines: dict[str, str]  # name -> GLSL expression
+    calls: list[str]  # one term of `shade` per light
+    requires: list[str]  # the functions those terms call
+    directional: list[str]  # the identifier of each directional light (SUN, LIGHT1, ...)
+
+
 def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     """The scene's own code. `normal_in_uniform_flow` computes the normal outside the hit
     branch, for normal variants built on screen-space derivatives."""
-    defines, light_calls, light_requires = _lights(scene)
+    lights = _lights(scene)
     materials = _used_materials(scene)
     units = [_map_unit(scene)]
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials))
     units.append(_surface_unit(scene, materials))
-    units.append(_shade_unit(scene, light_calls, light_requires))
-    units.append(_main_unit(normal_in_uniform_flow))
-    return SceneCode(defines=defines, units=units)
+    translucent = any(scene.materials[m].subsurface is not None for m in materials)
+    if translucent:
+        units.append(_subsurface_unit(scene, materials))
+    units.append(_shade_unit(scene, lights, translucent))
+    path = None  # how far the light from the hit point travels through the medium
+    if scene.medium is not None:
+        path = "t"
+        if scene.medium.level is not None:
+            units.append(_submerged_unit(scene.medium.level))
+            path = "submerged(ro, rd, t)"
+    units.append(_main_unit(normal_in_uniform_flow, path))
+    return SceneCode(defines=lights.defines, units=units)
 
 
 def _vec3(v: list[float]) -> str:
@@ -53,11 +70,12 @@ def _scaled(color: list[float], intensity: float) -> str:
     return _vec3(color) if intensity == 1.0 else f"({_vec3(color)} * {glsl_float(intensity)})"
 
 
-def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
+def _lights(scene: Scene) -> LightCode:
     """Constants for each light and the line of `shade` that adds it."""
     defines: dict[str, str] = {}
     calls: list[str] = []
     requires: list[str] = []
+    directional: list[str] = []
     counts: dict[str, int] = {}
 
     def name(base: str) -> str:
@@ -80,6 +98,7 @@ def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
     for i, light in enumerate(scene.lights):
         if isinstance(light, DirectionalLight):
             ident = name("SUN") if "SUN" not in counts else name("LIGHT")
+            directional.append(ident)
             defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
             defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
             visibility = "vec3(1.0)"
@@ -103,9 +122,7 @@ def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
                 toward = f"normalize({ident}_POS - s.P)"
                 visibility = f"vec3(shadow(s.P, {toward}, 0.02, distance({ident}_POS, s.P)))"
                 requires.append("shadow")
-            calls.append(
-                f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})"
-            )
+            calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
             requires.append("pointLight")
         elif isinstance(light, SkyLight):
             ident = name("SKY")
@@ -124,7 +141,7 @@ def _lights(scene: Scene) -> tuple[dict[str, str], list[str], list[str]]:
             defines[f"{ident}_SCALE"] = glsl_float(light.intensity)
             calls.append(f"irradianceLight(s, {ident}_SCALE, occlusion)")
             requires.append("irradianceLight")
-    return defines, calls, requires
+    return LightCode(defines, calls, requires, directional)
 
 
 def _used_materials(scene: Scene) -> list[str]:
@@ -205,17 +222,55 @@ def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
             f"makeSurface(P, N, V, {albedo}, "
             f"{glsl_float(material.roughness)}, {glsl_float(material.metallic)})"
         )
+        body = [f"return {call};"]
+        if material.diffuse_roughness is not None:
+            sigma = glsl_float(material.diffuse_roughness)
+            body = [f"Surface s = {call};", f"s.diffuseRoughness = {sigma};", "return s;"]
         if index == 0:
-            lines.append(f"    return {call};")
+            lines += [f"    {line}" for line in body]
         else:
-            lines += [f"    if (id == {index}) {{", f"        return {call};", "    }"]
+            lines += [f"    if (id == {index}) {{", *[f"        {x}" for x in body], "    }"]
     lines.append("}")
     return generated("scene.surface", ["surfaceAt"], requires, "\n".join(lines) + "\n")
 
 
-def _shade_unit(scene: Scene, light_calls: list[str], light_requires: list[str]) -> Unit:
+def _subsurface_unit(scene: Scene, materials: list[str]) -> Unit:
+    """`subsurfaceAt(P)`: the scattering colour and phase asymmetry g of the material at P;
+    zero colour for opaque materials."""
+    lines = [
+        "// Subsurface scattering colour (rgb) and phase asymmetry g (w) of the material at P.",
+        "vec4 subsurfaceAt(vec3 P) {",
+    ]
+    requires = []
+    if len(materials) > 1:
+        lines.append("    int id = materialAt(P);")
+        requires.append("materialAt")
+    for index in range(len(materials) - 1, -1, -1):
+        material = scene.materials[materials[index]]
+        color = _vec3(material.subsurface or [0.0, 0.0, 0.0])
+        value = f"vec4({color}, {glsl_float(material.subsurface_g)})"
+        if index == 0:
+            lines.append(f"    return {value};")
+        else:
+            lines.append(f"    if (id == {index}) return {value};")
+    lines.append("}")
+    return generated("scene.subsurface", ["subsurfaceAt"], requires, "\n".join(lines) + "\n")
+
+
+def _translucency(ident: str) -> str:
+    """Light of one directional light that crosses the body and scatters toward the eye:
+    colour × radiance × transmittance toward L × phase(cos θ), θ between the light's direction
+    of travel (−L) and the way to the eye (V), so a back-lit body glows for g > 0."""
+    return (
+        f"sss.rgb * {ident}_COLOR * subsurface(s.P, {ident}_DIR)"
+        f" * phase(-dot({ident}_DIR, s.V), sss.w)"
+    )
+
+
+def _shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
     lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
-    requires = ["Surface", *light_requires]
+    requires = ["Surface", *lights.requires]
+    light_calls = lights.calls
     uses_occlusion = any("occlusion" in call for call in light_calls)
     reflection = scene.environment is not None and scene.environment.reflection
     occlusion = "1.0"
@@ -226,6 +281,10 @@ def _shade_unit(scene: Scene, light_calls: list[str], light_requires: list[str])
     lines.append("    vec3 color = vec3(0.0);")
     for call in light_calls:
         lines.append(f"    color += {call.replace('occlusion', occlusion)};")
+    if translucent and lights.directional:
+        lines.append("    vec4 sss = subsurfaceAt(s.P);")
+        lines += [f"    color += {_translucency(ident)};" for ident in lights.directional]
+        requires += ["subsurfaceAt", "subsurface", "phase"]
     if reflection:
         lines.append(f"    color += environmentLight(s, {occlusion});")
         requires.append("environmentLight")
@@ -233,27 +292,50 @@ def _shade_unit(scene: Scene, light_calls: list[str], light_requires: list[str])
     return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n")
 
 
-def _main_unit(normal_in_uniform_flow: bool) -> Unit:
+def _submerged_unit(level: float) -> Unit:
+    """`submerged(ro, rd, t)`: how much of the ray's first t units lies below the water."""
+    y = glsl_float(level)
+    body = f"""// Length of the ray ro + u·rd, 0 <= u <= t, below the water level y = {y}.
+float submerged(vec3 ro, vec3 rd, float t) {{
+    float start = ro.y - {y};
+    float end = start + t * rd.y;
+    if (start >= 0.0 && end >= 0.0) return 0.0;
+    if (start < 0.0 && end < 0.0) return t;
+    // The ray crosses the level once, at u = −start / rd.y (rd.y is not 0: the ends differ).
+    float crossing = -start / rd.y;
+    return start < 0.0 ? crossing : t - crossing;
+}}
+"""
+    return generated("scene.submerged", ["submerged"], [], body)
+
+
+def _main_unit(normal_in_uniform_flow: bool, medium_path: str | None = None) -> Unit:
     requires = [
         "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
         "outputTransfer", "tonemap",
     ]  # fmt: skip
+    # The medium lies between the eye and the surfaces; the background is outside it.
+    through = ""
+    if medium_path is not None:
+        requires.append("medium")
+        requires += ["submerged"] if "submerged" in medium_path else []
+        through = f"        color = medium(color, {medium_path});\n"
     if not normal_in_uniform_flow:
-        hit = """    if (t > 0.0) {
+        hit = f"""    if (t > 0.0) {{
         vec3 P = ro + t * rd;
         color = shade(surfaceAt(P, calcNormal(P), -rd));
-    }
+{through}    }}
 """
     else:
         # Screen-space derivatives are undefined inside a branch that neighbouring pixels may
         # not take, so a derivative normal is computed by every pixel: rays that miss use a
         # far point, which keeps the 2×2 blocks at the horizon from mixing in the eye.
         # MARCH_FAR is the raymarch variant's parameter (written by the parameter block).
-        hit = """    vec3 P = ro + (t > 0.0 ? t : MARCH_FAR) * rd;
+        hit = f"""    vec3 P = ro + (t > 0.0 ? t : MARCH_FAR) * rd;
     vec3 N = calcNormal(P);
-    if (t > 0.0) {
+    if (t > 0.0) {{
         color = shade(surfaceAt(P, N, -rd));
-    }
+{through}    }}
 """
     body = (
         "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"

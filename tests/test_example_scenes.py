@@ -39,9 +39,23 @@ def test_example_renders_finite(scene: Path, tier: str) -> None:
 # The scene that exercises each slot; the camera, background and post slots follow the scene.
 SCENE_OF_SLOT = {
     slot: None
-    for slot in ("D", "F", "V", "diffuse", "specular", "ao", "specocc", "shadow", "env", "ibl",
-                 "normal", "raymarch", "tonemap", "output")
-} | {"attenuation": "lamp", "irradiance": "lamp"}
+    for slot in (
+        "D",
+        "F",
+        "V",
+        "diffuse",
+        "specular",
+        "ao",
+        "specocc",
+        "shadow",
+        "env",
+        "ibl",
+        "normal",
+        "raymarch",
+        "tonemap",
+        "output",
+    )
+} | {"attenuation": "lamp", "irradiance": "lamp", "sss": "pool", "phase": "pool", "media": "pool"}
 
 
 def _swappable() -> list[str]:
@@ -49,7 +63,8 @@ def _swappable() -> list[str]:
     from glint.compiler.slots import SLOTS
 
     return sorted(
-        s.id for s in load_catalog().snippets.values()
+        s.id
+        for s in load_catalog().snippets.values()
         if not SLOTS[s.slot].many and s.slot in SCENE_OF_SLOT
     )
 

@@ -22,7 +22,7 @@ def test_probe_inputs_flatten_vectors_and_structs() -> None:
     assert call == "visibility(Dots(in0.x, in0.y, in0.z, in0.w, in1.x, in1.y), in1.z)"
     names, call = probe_inputs(entry_function(catalog.get("specular.cook_torrance")))
     assert names[:2] == ["s.roughness", "s.NoV"] and names[-3:] == ["F0", "F1", "F2"]
-    assert call.startswith("specular(Surface(") and "in0.x * in0.x, in0.y)" in call
+    assert call.startswith("specular(Surface(") and "in0.x * in0.x, in0.y, in0.x)" in call
 
 
 def test_ggx_probe_matches_its_closed_form() -> None:

@@ -103,6 +103,7 @@ def _surface(s: dict[str, np.ndarray], lanes: int) -> dict[str, np.ndarray]:
         "roughness": np.sqrt(a),
         "a": a,
         "NoV": nov,
+        "diffuseRoughness": np.sqrt(a),
     }
 
 

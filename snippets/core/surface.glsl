@@ -16,6 +16,7 @@ struct Surface {
     float roughness;    // perceptual roughness
     float a;            // roughness squared: the one place it is squared
     float NoV;          // clamped away from 0 so that visibility terms stay finite
+    float diffuseRoughness;  // Oren-Nayar's σ in radians; makeSurface sets the roughness
 };
 
 // The dot products of one light direction, clamped to where the BRDF is defined, and N·L
@@ -44,6 +45,8 @@ Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float 
     s.roughness = roughness;
     s.a = roughness * roughness;
     s.NoV = max(dot(N, V), MIN_NOV);
+    // A material without its own diffuse roughness is as rough for diffuse as for specular.
+    s.diffuseRoughness = roughness;
     return s;
 }
 

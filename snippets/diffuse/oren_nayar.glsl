@@ -21,7 +21,7 @@ float orenNayarCosPhi(Dots d) {
 // tan β from sin/cos with cos floored: β < π/2 always, since NoV >= MIN_NOV.
 vec3 diffuse(Surface s, Dots d) {
     if (d.NoL <= 0.0) return vec3(0.0);
-    float s2 = s.roughness * s.roughness;
+    float s2 = s.diffuseRoughness * s.diffuseRoughness;
     float thetaL = acos(clamp(d.NoL, 0.0, 1.0));
     float thetaV = acos(clamp(d.NoV, 0.0, 1.0));
     float alpha = max(thetaL, thetaV);

@@ -16,7 +16,7 @@ sources = ["Fujii 2012, A tiny improvement of Oren-Nayar reflectance model", "kc
 // stays bounded when it is negative. A and B are chosen so that σ = 0 is Lambert and the
 // albedo stays near 1 for every σ (Fujii 2012).
 vec3 diffuse(Surface s, Dots d) {
-    float sigma = s.roughness;
+    float sigma = s.diffuseRoughness;
     float A = 1.0 / (PI + (0.5 * PI - 2.0 / 3.0) * sigma);
     float B = sigma * A;
     float sTerm = d.LoV - d.NoL * d.NoV;

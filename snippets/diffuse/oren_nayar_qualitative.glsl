@@ -15,7 +15,7 @@ sources = ["Oren and Nayar 1994, eq. 30 (qualitative model)", "Lighting models (
 // sin α·sin β = sin θl·sin θv and cos φ·sin θl·sin θv = L·V − (N·L)(N·V), the product is
 // max(0, L·V − N·L·N·V) / max(N·L, N·V): no acos, no tan, no division by the sines.
 vec3 diffuse(Surface s, Dots d) {
-    float s2 = s.roughness * s.roughness;
+    float s2 = s.diffuseRoughness * s.diffuseRoughness;
     float A = 1.0 - 0.5 * s2 / (s2 + 0.33);
     float B = 0.45 * s2 / (s2 + 0.09);
     float azimuth = max(d.LoV - d.NoL * d.NoV, 0.0);

@@ -49,6 +49,7 @@ def glsl_lobe(snippet_id: str) -> Lobe:
             "roughness": np.float64(roughness),
             "a": np.float64(roughness**2),
             "NoV": np.float64(max(NoV, 1e-4)),
+            "diffuseRoughness": np.float64(roughness),
         }
         args = [surface, lanes] + ([np.ones(3)] if snippet_id.startswith("specular") else [])
         out = evaluate_snippet(snippet_id, args=args, dtype=np.float64)
@@ -155,6 +156,7 @@ def test_light_dots_stays_finite_when_light_is_opposite_the_view() -> None:
         "roughness": np.array([0.5]),
         "a": np.array([0.25]),
         "NoV": np.array([0.8]),
+        "diffuseRoughness": np.array([0.5]),
     }
     out = evaluate_snippet("core.surface", "lightDots", [surface, -view], dtype=np.float32)
     assert all(np.isfinite(value).all() for value in out.values())
