@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from .parser import GLSLSyntaxError, parse, parse_source
 from .preprocessor import Macro, Preprocessed, PreprocessorError, SourceLocation, preprocess
-from .symbols import FunctionDef, ModuleSymbols, Param, analyze, reachable
+from .symbols import FunctionDef, ModuleSymbols, Param, analyze, reachable, symbols_of
 
 __all__ = [
     "FunctionDef",
@@ -23,4 +23,5 @@ __all__ = [
     "parse_source",
     "preprocess",
     "reachable",
+    "symbols_of",
 ]

@@ -55,6 +55,11 @@ def analyze(
 ) -> ModuleSymbols:
     """Symbols of one module (a snippet or a whole shader)."""
     tree, pre = parse_source(source, filename, predefined)
+    return symbols_of(tree, pre)
+
+
+def symbols_of(tree: Tree, pre: Preprocessed) -> ModuleSymbols:
+    """Symbols of a tree already parsed from `pre`."""
     return _Collector(pre).module(tree)
 
 

@@ -1,0 +1,132 @@
+"""A file being linted: its text as written, the preprocessed text, the parse tree and the
+helpers rules use to turn tree nodes into spans, findings and edits of the user's file."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from lark import Token, Tree
+
+from glint.compiler.errors import InputError
+from glint.compiler.glsl import ModuleSymbols, Preprocessed
+from glint.compiler.glslang import Diagnostic, validate
+
+from .finding import Edit, Finding, Fix, Severity
+
+Node = Tree | Token
+Span = tuple[int, int, int, int]  # line, column, end line, end column (1-based, end exclusive)
+
+
+@dataclass
+class LintContext:
+    file: str
+    text: str  # as the user wrote it
+    target: str = "shadertoy"  # shadertoy, webgl2 or desktop
+    pre: Preprocessed | None = None  # None when preprocessing failed
+    tree: Tree | None = None  # None when the file did not parse
+    symbols: ModuleSymbols | None = None
+    use_glslang: bool = True
+    front_end_error: InputError | None = None  # why preprocessing or parsing failed
+    read_problem: str = ""  # why the file's bytes are not text to lint
+    too_deep: bool = False  # nesting beyond what the analysis can follow
+    lines: list[str] = field(default_factory=list)
+    _glslang: list[Diagnostic] | None = None
+
+    def __post_init__(self) -> None:
+        if not self.lines:
+            self.lines = self.text.split("\n")
+
+    def glslang(self) -> list[Diagnostic]:
+        """glslangValidator's diagnostics on the file as the target wraps it (run once)."""
+        if self._glslang is None:
+            self._glslang = validate(self.text, self.file, self.target) if self.text else []
+        return self._glslang
+
+    # --- positions ------------------------------------------------------------------------
+
+    def span(self, node: Node) -> Span:
+        """The node's span in the user's file. Tree positions are lines of the preprocessed
+        text; the line map takes them back. Columns are exact on lines without macros."""
+        if isinstance(node, Token):
+            line, col = node.line or 1, node.column or 1
+            end_line, end_col = node.end_line or line, node.end_column or col + len(node)
+        else:
+            meta = node.meta
+            if meta.empty:
+                return (1, 1, 1, 1)
+            line, col, end_line, end_col = meta.line, meta.column, meta.end_line, meta.end_column
+        return (self._origin(line), col, self._origin(end_line), end_col)
+
+    def _origin(self, pre_line: int) -> int:
+        return self.pre.locate(pre_line).line if self.pre is not None else pre_line
+
+    def has_macros(self, node: Node) -> bool:
+        """Whether a macro was expanded on the node's lines (its columns are then approximate
+        and no edit may be computed from them)."""
+        if self.pre is None:
+            return True
+        first, last = _pre_lines(node)
+        return any(line in self.pre.expansions for line in range(first, last + 1))
+
+    # --- text -----------------------------------------------------------------------------
+
+    def node_text(self, node: Node) -> str:
+        """The node's source as preprocessed (macros expanded, comments blanked)."""
+        if isinstance(node, Token):
+            return str(node)
+        if self.pre is None or node.meta.empty:
+            return ""
+        start, end = node.meta.start_pos, node.meta.end_pos
+        return self.pre.text[start:end]
+
+    # --- findings and edits ---------------------------------------------------------------
+
+    def finding(
+        self,
+        code: str,
+        severity: Severity,
+        where: Node | Span,
+        message: str,
+        fix: Fix | None = None,
+    ) -> Finding:
+        line, col, end_line, end_col = where if isinstance(where, tuple) else self.span(where)
+        return Finding(self.file, line, col, end_line, end_col, code, severity, message, fix)
+
+    def replace(self, node: Node, content: str) -> Edit | None:
+        """An edit that replaces the node by `content`, or None when the node's position
+        cannot be trusted (a macro was expanded on its lines)."""
+        if self.has_macros(node):
+            return None
+        line, col, end_line, end_col = self.span(node)
+        return Edit(line, col, end_line, end_col, content)
+
+
+def _pre_lines(node: Node) -> tuple[int, int]:
+    if isinstance(node, Token):
+        return node.line or 1, node.end_line or node.line or 1
+    if node.meta.empty:
+        return 1, 1
+    return node.meta.line, node.meta.end_line
+
+
+def walk(node: Node) -> Iterator[Tree]:
+    """Every subtree, parents before children, without recursion (deeply nested input must
+    not exhaust the stack)."""
+    stack: list[Node] = [node]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Tree):
+            yield item
+            stack.extend(reversed(item.children))
+
+
+def tokens(node: Node) -> Iterator[Token]:
+    """Every token under the node, in source order, without recursion."""
+    stack: list[Node] = [node]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Token):
+            yield item
+        else:
+            stack.extend(reversed(item.children))

@@ -1,0 +1,104 @@
+"""The rule registry. A rule is a class with a stable `code`, registered by `@register`; one
+module per category. Importing this package imports every rule module.
+
+Codes never change meaning. Categories and their prefixes:
+
+- C correctness (C0xx: what glslang and glint's own parser say; C1xx: data flow)
+- P portability (GLSL ES 3.00 and ShaderToy)
+- N numerical hazards (value-range reasoning)
+- L lighting
+- PF performance
+- S style and the linter's own housekeeping (unused suppressions)
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+from collections.abc import Iterator
+from typing import ClassVar, Literal
+
+from ..context import LintContext
+from ..finding import Finding, Severity
+
+Category = Literal["correctness", "portability", "numerical", "lighting", "performance", "style"]
+CATEGORY_PREFIX: dict[Category, str] = {
+    "correctness": "C",
+    "portability": "P",
+    "numerical": "N",
+    "lighting": "L",
+    "performance": "PF",
+    "style": "S",
+}
+_CODE = re.compile(r"^(C|P|N|L|PF|S)\d{3}$")
+
+
+class Rule:
+    """Base of every rule. Subclasses set the class attributes and write `check`; the class
+    docstring is the rule's documentation, with the sections "Why it matters:", "Example:" and
+    "Fix:" after a one-sentence summary of what it finds."""
+
+    code: ClassVar[str]
+    name: ClassVar[str]  # kebab-case, e.g. "pow-negative-base"
+    category: ClassVar[Category]
+    severity: ClassVar[Severity] = "warning"
+    needs_tree: ClassVar[bool] = True  # skipped when the file did not parse
+    fixable: ClassVar[Literal["safe", "unsafe", "none"]] = "none"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        raise NotImplementedError
+
+    def report(self, ctx: LintContext, where: object, message: str, fix: object = None) -> Finding:
+        """A finding of this rule (`where` is a tree node, a token or a span)."""
+        return ctx.finding(self.code, self.severity, where, message, fix)  # type: ignore[arg-type]
+
+
+REGISTRY: dict[str, type[Rule]] = {}
+
+
+def register(cls: type[Rule]) -> type[Rule]:
+    """Class decorator: add a rule to the registry under its code."""
+    if not _CODE.match(cls.code):
+        raise ValueError(f"{cls.__name__}: code {cls.code!r} is not a category prefix + 3 digits")
+    if not cls.code.startswith(CATEGORY_PREFIX[cls.category]):
+        raise ValueError(f"{cls.__name__}: code {cls.code} does not match {cls.category}")
+    if cls.code in REGISTRY and REGISTRY[cls.code] is not cls:
+        raise ValueError(f"{cls.code} registered twice ({REGISTRY[cls.code].__name__})")
+    if not (cls.__doc__ or "").strip():
+        raise ValueError(f"{cls.code}: a rule needs a docstring")
+    REGISTRY[cls.code] = cls
+    return cls
+
+
+def all_rules() -> dict[str, type[Rule]]:
+    """Every registered rule by code, sorted; imports the rule modules on first use."""
+    for module in pkgutil.iter_modules(__path__):
+        importlib.import_module(f"{__name__}.{module.name}")
+    return dict(sorted(REGISTRY.items()))
+
+
+def rule_doc(rule: type[Rule]) -> dict[str, str]:
+    """The docstring split into `summary`, `why`, `example` and `fix`."""
+    text = _dedent(rule.__doc__ or "")
+    sections = {"summary": "", "why": "", "example": "", "fix": ""}
+    heads = {"why it matters:": "why", "example:": "example", "fix:": "fix"}
+    current = "summary"
+    for line in text.split("\n"):
+        head = line.strip().lower()
+        if head in heads:
+            current = heads[head]
+            continue
+        for prefix, key in heads.items():
+            if head.startswith(prefix):  # "Why it matters: text on the same line"
+                current = key
+                line = line.strip()[len(prefix) :]
+                break
+        sections[current] += line + "\n"
+    return {k: _dedent(v).strip() for k, v in sections.items()}
+
+
+def _dedent(text: str) -> str:
+    import inspect
+
+    return inspect.cleandoc(text)

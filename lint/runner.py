@@ -1,0 +1,142 @@
+"""Lint one source: read, preprocess, parse, run the enabled rules, apply suppressions, and
+apply fixes when asked. Nothing here raises on bad input: every problem is a finding."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from glint.compiler.errors import InputError
+from glint.compiler.glsl import parse, preprocess, symbols_of
+
+from .context import LintContext
+from .finding import Finding
+from .fixes import apply_fixes
+from .options import Options
+from .rules import all_rules
+from .suppressions import Suppression, apply_suppressions, parse_suppressions
+
+# Files larger than this are reported (C006) rather than analysed: glslang still sees them, but
+# parsing megabytes of GLSL in Python would take minutes and no real shader is that large.
+MAX_BYTES = 1_000_000
+UNUSED_SUPPRESSION = "S001"
+
+
+@dataclass
+class LintResult:
+    file: str
+    findings: list[Finding]
+    text: str  # the source after fixes (the original when nothing was fixed)
+    fixed: int = 0  # how many fixes were applied
+    notes: list[str] = field(default_factory=list)
+
+
+def decode(data: bytes, file: str) -> tuple[str, str | None]:
+    """The text of a file's bytes, or "" and why it cannot be linted."""
+    if len(data) > MAX_BYTES:
+        return "", f"too large to analyse ({len(data) / 1e6:.1f} MB; the limit is 1 MB)"
+    if b"\0" in data:
+        return "", "binary data (a NUL byte), not GLSL source"
+    try:
+        return data.decode("utf-8"), None
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        return "", f"not UTF-8 text (invalid byte 0x{data[exc.start]:02x} on line {line})"
+
+
+def build_context(text: str, file: str, options: Options) -> LintContext:
+    ctx = LintContext(file=file, text=text, target=options.target, use_glslang=options.glslang)
+    try:
+        ctx.pre = preprocess(text, file)
+    except InputError as exc:
+        ctx.front_end_error = exc
+        return ctx
+    try:
+        ctx.tree = parse(ctx.pre.text, file)
+        ctx.symbols = symbols_of(ctx.tree, ctx.pre)
+    except InputError as exc:
+        ctx.front_end_error = exc
+    except RecursionError:
+        ctx.too_deep = True
+    return ctx
+
+
+def lint_source(
+    text: str, file: str = "<input>", options: Options | None = None, read_problem: str = ""
+) -> list[Finding]:
+    """Every enabled finding for `text`, sorted by position."""
+    options = options or Options()
+    ctx = build_context(text, file, options)
+    ctx.read_problem = read_problem
+    findings: list[Finding] = []
+    for code, rule in all_rules().items():
+        if code == UNUSED_SUPPRESSION or not options.enabled(code, file):
+            continue
+        if rule.needs_tree and ctx.tree is None:
+            continue
+        try:
+            findings.extend(rule().check(ctx))
+        except RecursionError:
+            ctx.too_deep = True
+    suppressions = parse_suppressions(text)
+    kept = apply_suppressions(findings, suppressions)
+    if options.enabled(UNUSED_SUPPRESSION, file):
+        ran = {c for c in all_rules() if options.enabled(c, file)}
+        kept += _unused(ctx, suppressions, ran)
+    return sorted(set(kept), key=lambda f: f.sort_key)
+
+
+def _unused(ctx: LintContext, suppressions: list[Suppression], ran: set[str]) -> list[Finding]:
+    known = set(all_rules())
+    found = []
+    for s in suppressions:
+        span = (s.line, s.column, s.line, s.end_column)
+        if s.codes is None:
+            if not s.used:
+                found.append(
+                    ctx.finding(
+                        UNUSED_SUPPRESSION,
+                        "warning",
+                        span,
+                        "suppression silences nothing; remove it",
+                    )
+                )
+            continue
+        unknown = sorted(s.codes - known)
+        unused = sorted(c for c in s.codes & ran if c not in s.used)
+        if unknown:
+            message = f"suppression names unknown code{'s' if len(unknown) > 1 else ''} " + (
+                ", ".join(unknown) + "; see `glint rule --all`"
+            )
+            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message))
+        if unused:
+            message = f"unused suppression of {', '.join(unused)}: nothing to silence; remove it"
+            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message))
+    return found
+
+
+def lint_text(
+    text: str,
+    file: str = "<input>",
+    options: Options | None = None,
+    fix: bool = False,
+    unsafe_fixes: bool = False,
+    read_problem: str = "",
+) -> LintResult:
+    """Lint, and with `fix` apply the fixes (safe ones; unsafe too with `unsafe_fixes`)."""
+    options = options or Options()
+    findings = lint_source(text, file, options, read_problem)
+    if not fix or read_problem:
+        return LintResult(file, findings, text)
+    allowed = {"safe", "unsafe"} if unsafe_fixes else {"safe"}
+    fixed_text, count = apply_fixes(
+        text, findings, allowed, lambda t: lint_source(t, file, options)
+    )
+    if count == 0:
+        return LintResult(file, findings, text)
+    return LintResult(file, lint_source(fixed_text, file, options), fixed_text, count)
+
+
+def lint_bytes(data: bytes, file: str, options: Options | None = None, fix: bool = False,
+               unsafe_fixes: bool = False) -> LintResult:  # fmt: skip
+    text, problem = decode(data, file)
+    return lint_text(text, file, options, fix, unsafe_fixes, read_problem=problem or "")
