@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from typing import Any
 
 from lark import Token, Tree
 
@@ -31,6 +32,8 @@ class LintContext:
     read_problem: str = ""  # why the file's bytes are not text to lint
     too_deep: bool = False  # nesting beyond what the analysis can follow
     lines: list[str] = field(default_factory=list)
+    # Analyses computed once per file and shared by rules (e.g. the semantic model), by name.
+    cache: dict[str, Any] = field(default_factory=dict)
     _glslang: list[Diagnostic] | None = None
 
     def __post_init__(self) -> None:
