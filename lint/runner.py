@@ -50,12 +50,17 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
     except InputError as exc:
         ctx.front_end_error = exc
         return ctx
+    except RecursionError:  # macro calls nested thousands deep in arguments
+        ctx.too_deep = True
+        return ctx
     try:
         ctx.tree = parse(ctx.pre.text, file)
         ctx.symbols = symbols_of(ctx.tree, ctx.pre)
     except InputError as exc:
         ctx.front_end_error = exc
     except RecursionError:
+        # A tree the symbol walk cannot follow, rules cannot either: C006 alone is reported.
+        ctx.tree = None
         ctx.too_deep = True
     return ctx
 
