@@ -1,4 +1,5 @@
-"""The `glint` command line: compose, validate, render and catalog.
+"""The `glint` command line: compose, validate, render and catalog (and the commands other parts
+of glint register, such as `lint`).
 
 Exit codes: 0 success, 1 a problem with the input (scene, shader), 2 usage or environment.
 Every failure is one message on stderr; no traceback reaches the user.
@@ -11,6 +12,7 @@ import json
 import os
 import sys
 from collections.abc import Callable, Sequence
+from importlib.metadata import entry_points
 from pathlib import Path
 
 from .errors import GlintError, UsageError
@@ -47,7 +49,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog=PROG,
-        description="Compose, validate and render ShaderToy lighting shaders.",
+        description="Compose, validate, render and lint ShaderToy lighting shaders.",
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
@@ -85,7 +87,15 @@ def build_parser() -> argparse.ArgumentParser:
     )
     show.add_argument("id", metavar="ID", help="snippet id, e.g. D.ggx (see `glint catalog`)")
     show.set_defaults(handler=cmd_catalog_show)
+    _add_plugin_commands(sub)
     return parser
+
+
+def _add_plugin_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    """Commands other parts of glint register under the `glint.commands` entry point (the
+    linter's `lint` and `rule`), found by name so that the compiler never imports them."""
+    for entry in entry_points(group="glint.commands"):
+        entry.load()(sub)
 
 
 def _add_target(parser: argparse.ArgumentParser) -> None:

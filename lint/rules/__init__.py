@@ -95,7 +95,9 @@ def rule_doc(rule: type[Rule]) -> dict[str, str]:
                 line = line.strip()[len(prefix) :]
                 break
         sections[current] += line + "\n"
-    return {k: _dedent(v).strip() for k, v in sections.items()}
+    doc = {k: _dedent(v).strip() for k, v in sections.items()}
+    doc["summary"] = " ".join(doc["summary"].split())  # one line, for listings
+    return doc
 
 
 def _dedent(text: str) -> str:

@@ -1,0 +1,207 @@
+"""`glint lint` and `glint rule`: registered on the `glint` command line through the
+`glint.commands` entry point (see pyproject.toml).
+
+Exit codes: 0 clean, 1 findings, 2 usage or internal error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+from glint.compiler.errors import EnvironmentProblem, UsageError
+from glint.compiler.shadertoy import TARGETS
+
+from .config import load_options
+from .finding import Finding
+from .options import Options
+from .reporters import FORMATS, REPORTERS, statistics, summary
+from .rules import CATEGORY_PREFIX, all_rules, rule_doc
+from .runner import lint_bytes
+
+EXTENSIONS = (".glsl", ".frag", ".fs")
+
+
+def add_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    lint = sub.add_parser(
+        "lint",
+        help="lint ShaderToy GLSL: glslang, portability, numerics, lighting, performance",
+        description="Lint GLSL files (directories are searched for .glsl .frag .fs). "
+        "Exit status: 0 clean, 1 findings, 2 usage or internal error.",
+    )
+    lint.add_argument("paths", nargs="+", metavar="PATH", help="files or directories; - is stdin")
+    lint.add_argument("--format", choices=FORMATS, default="text", help="output format")
+    lint.add_argument("--select", type=_code_list, help="codes or prefixes to enable, e.g. N,L001")
+    lint.add_argument("--ignore", type=_code_list, help="codes or prefixes to disable")
+    lint.add_argument("--fix", action="store_true", help="apply safe fixes in place")
+    lint.add_argument(
+        "--unsafe-fixes", action="store_true", help="with --fix, also apply unsafe fixes"
+    )
+    lint.add_argument(
+        "--statistics", action="store_true", help="count findings per rule instead of listing"
+    )
+    lint.add_argument("--no-glslang", action="store_true", help="skip glslangValidator")
+    lint.add_argument("--target", choices=TARGETS, help="how the file is wrapped (shadertoy)")
+    lint.set_defaults(handler=cmd_lint)
+
+    rule = sub.add_parser("rule", help="explain a lint rule, or list them all")
+    rule.add_argument("code", nargs="?", help="rule code, e.g. N001")
+    rule.add_argument("--all", action="store_true", help="every rule")
+    rule.add_argument("--json", action="store_true", help="as JSON")
+    rule.set_defaults(handler=cmd_rule)
+
+
+def _code_list(text: str) -> list[str]:
+    return [c.strip().upper() for c in text.split(",") if c.strip()]
+
+
+def _check_codes(codes: list[str], flag: str) -> None:
+    rules = all_rules()
+    prefixes = set(CATEGORY_PREFIX.values())
+    for code in codes:
+        known = code == "ALL" or any(c.startswith(code) for c in rules) or code in prefixes
+        if not known:
+            raise UsageError(
+                f"{flag}: unknown rule code or prefix {code!r}; see `glint rule --all`"
+            )
+
+
+def options_for(args: argparse.Namespace) -> Options:
+    options, _ = load_options()
+    if args.select is not None:
+        _check_codes(args.select, "--select")
+        options.select = args.select
+    if args.ignore is not None:
+        _check_codes(args.ignore, "--ignore")
+        options.ignore = args.ignore
+    for codes, where in ((options.select, "select"), (options.ignore, "ignore")):
+        _check_codes(codes, f"[tool.glint.lint].{where}")
+    if args.target is not None:
+        options.target = args.target
+    options.glslang = not args.no_glslang
+    return options
+
+
+def collect(paths: list[str]) -> list[str]:
+    """The files to lint: files as given, directories searched for shader extensions."""
+    files: list[str] = []
+    for raw in paths:
+        if raw == "-":
+            files.append(raw)
+            continue
+        path = Path(raw)
+        if path.is_dir():
+            found = sorted(p for p in path.rglob("*") if p.suffix in EXTENSIONS and p.is_file())
+            files += [str(p) for p in found]
+        elif path.is_file():
+            files.append(raw)
+        else:
+            raise UsageError(f"{raw}: no such file or directory")
+    return files
+
+
+def _read(file: str) -> bytes:
+    if file == "-":
+        return sys.stdin.buffer.read()
+    try:
+        return Path(file).read_bytes()
+    except OSError as exc:
+        raise EnvironmentProblem(f"{file}: cannot read: {exc.strerror}") from None
+
+
+def _write_atomically(file: str, text: str) -> None:
+    """Replace the file in one step, so an interrupted fix never leaves half a file."""
+    path = Path(file)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as out:
+            out.write(text)
+        os.replace(tmp, path)
+    except OSError as exc:
+        Path(tmp).unlink(missing_ok=True)
+        raise EnvironmentProblem(f"{file}: cannot write the fixed file: {exc.strerror}") from None
+
+
+def cmd_lint(args: argparse.Namespace) -> int:
+    if args.unsafe_fixes and not args.fix:
+        raise UsageError("--unsafe-fixes needs --fix")
+    options = options_for(args)
+    files = collect(args.paths)
+    findings: list[Finding] = []
+    sources: dict[str, str] = {}
+    fixed = 0
+    for file in files:
+        name = "<stdin>" if file == "-" else file
+        result = lint_bytes(_read(file), name, options, args.fix, args.unsafe_fixes)
+        findings += result.findings
+        sources[name] = result.text
+        if result.fixed:
+            fixed += result.fixed
+            if file == "-":
+                sys.stdout.write(result.text)
+            else:
+                _write_atomically(file, result.text)
+    out = sys.stdout if "-" not in files or not args.fix else sys.stderr
+    if args.statistics:
+        out.write(statistics(findings))
+    else:
+        out.write(REPORTERS[args.format](findings, sources))
+    if args.format in ("text", "concise") or args.statistics:
+        out.write(summary(findings, fixed))
+    return 1 if findings else 0
+
+
+def cmd_rule(args: argparse.Namespace) -> int:
+    rules = all_rules()
+    if args.all == (args.code is not None):
+        raise UsageError("give a rule code (glint rule N001) or --all")
+    if args.code is not None:
+        code = args.code.upper()
+        if code not in rules:
+            raise UsageError(f"unknown rule {args.code!r}; see `glint rule --all`")
+        chosen = [code]
+    else:
+        chosen = list(rules)
+    entries = [rule_entry(code) for code in chosen]
+    if args.json:
+        sys.stdout.write(json.dumps(entries if args.all else entries[0], indent=2) + "\n")
+        return 0
+    for entry in entries:
+        if args.all:
+            print(f"{entry['code']:<6} {entry['name']:<34} {entry['category']:<12} "
+                  f"{entry['summary']}")  # fmt: skip
+        else:
+            print(explain(entry))
+    return 0
+
+
+def rule_entry(code: str) -> dict[str, str]:
+    rule = all_rules()[code]
+    doc = rule_doc(rule)
+    return {
+        "code": code,
+        "name": rule.name,
+        "category": rule.category,
+        "severity": rule.severity,
+        "fixable": rule.fixable,
+        **doc,
+    }
+
+
+def explain(entry: dict[str, str]) -> str:
+    fix = {"safe": "a safe fix (--fix)", "unsafe": "an unsafe fix (--fix --unsafe-fixes)"}
+    head = (
+        f"{entry['code']} {entry['name']} ({entry['category']}, {entry['severity']}"
+        + (f", {fix[entry['fixable']]}" if entry["fixable"] in fix else "")
+        + ")"
+    )
+    parts = [head, "", entry["summary"]]
+    for title, key in (("Why it matters", "why"), ("Example", "example"), ("Fix", "fix")):
+        if entry[key]:
+            body = "\n".join("    " + line for line in entry[key].split("\n"))
+            parts += ["", f"{title}:", body]
+    return "\n".join(parts)

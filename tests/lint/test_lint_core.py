@@ -1,0 +1,223 @@
+"""The linter's core: selection by code and prefix, inline suppressions and the unused-
+suppression finding, configuration from pyproject.toml, fixes, and every output format."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from glint.compiler.errors import UsageError
+from glint.lint.config import load_options, options_from_table
+from glint.lint.finding import Edit, Finding, Fix
+from glint.lint.fixes import apply_edits
+from glint.lint.options import Options
+from glint.lint.reporters import REPORTERS, statistics
+from glint.lint.rules import REGISTRY, all_rules, rule_doc
+from glint.lint.runner import lint_bytes, lint_source
+
+BROKEN = "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0)\n}\n"  # a syntax error
+
+
+def codes(findings: list[Finding]) -> list[str]:
+    return [f.code for f in findings]
+
+
+# --- registry ---------------------------------------------------------------------------------
+
+
+def test_every_rule_has_a_stable_code_a_name_and_the_four_doc_sections() -> None:
+    for code, rule in all_rules().items():
+        doc = rule_doc(rule)
+        assert rule.code == code and rule.name and rule.name == rule.name.lower()
+        assert doc["summary"] and doc["why"] and doc["example"] and doc["fix"], code
+        assert rule.fixable in ("safe", "unsafe", "none")
+
+
+def test_the_registry_rejects_a_code_outside_its_category() -> None:
+    from glint.lint.rules import Rule, register
+
+    class Wrong(Rule):
+        """Finds nothing.
+
+        Why it matters: no.
+        Example: none.
+        Fix: none.
+        """
+
+        code = "N999"
+        name = "wrong"
+        category = "lighting"
+
+    with pytest.raises(ValueError, match="does not match lighting"):
+        register(Wrong)
+    assert "N999" not in REGISTRY
+
+
+# --- options ----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("select", "ignore", "code", "enabled"),
+    [
+        (["ALL"], [], "N001", True),
+        (["N"], [], "N001", True),
+        (["N"], [], "L001", False),
+        (["N"], ["N005"], "N005", False),
+        (["N005"], ["N"], "N005", True),  # the more specific pattern wins
+        (["P"], [], "PF001", False),  # a letter prefix is one category, not a string prefix
+        (["PF"], [], "PF001", True),
+        (["ALL"], ["C"], "C001", False),
+    ],
+)
+def test_select_and_ignore(select: list[str], ignore: list[str], code: str, enabled: bool) -> None:
+    assert Options(select=select, ignore=ignore).enabled(code) is enabled
+
+
+def test_per_file_ignores_match_a_glob() -> None:
+    options = Options(per_file_ignores={"vendor/*.glsl": ["C"]})
+    assert not options.enabled("C003", "vendor/noise.glsl")
+    assert options.enabled("C003", "mine/noise.glsl")
+
+
+# --- suppressions -----------------------------------------------------------------------------
+
+
+def test_syntax_error_without_glslang_is_c003_at_its_line() -> None:
+    found = lint_source(BROKEN, "x.glsl", Options(glslang=False))
+    assert [(f.code, f.line) for f in found] == [("C003", 3)]
+
+
+def test_inline_suppression_on_the_line_silences_that_code() -> None:
+    text = BROKEN.replace("}\n", "} // glint: ignore[C003]\n")
+    assert lint_source(text, "x.glsl", Options(glslang=False)) == []
+
+
+def test_suppression_alone_on_a_line_covers_the_next_line() -> None:
+    text = BROKEN.replace("}\n", "// glint: ignore[C003]\n}\n")
+    assert lint_source(text, "x.glsl", Options(glslang=False)) == []
+
+
+def test_file_ignore_silences_the_code_everywhere() -> None:
+    text = "// glint: file-ignore[C003]\n" + BROKEN
+    assert lint_source(text, "x.glsl", Options(glslang=False)) == []
+
+
+def test_unused_and_unknown_suppressions_are_findings() -> None:
+    text = "// glint: file-ignore[C004, Z123]\n" + BROKEN.replace("(1.0)", "(1.0);")
+    found = lint_source(text, "x.glsl", Options(glslang=False))
+    messages = [f.message for f in found]
+    assert codes(found) == ["S001", "S001"]
+    assert any("unknown code" in m and "Z123" in m for m in messages)
+    assert any("unused suppression of C004" in m for m in messages)
+
+
+def test_suppression_of_a_code_that_did_not_run_is_not_reported_unused() -> None:
+    text = "void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); } // glint: ignore[C001]\n"
+    assert lint_source(text, "x.glsl", Options(glslang=False, ignore=["C001"])) == []
+
+
+# --- configuration ----------------------------------------------------------------------------
+
+
+def test_pyproject_table_is_read_from_the_nearest_pyproject(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.glint.lint]\nselect = ["C", "N"]\nignore = ["C002"]\ntarget = "webgl2"\n'
+        '[tool.glint.lint.per-file-ignores]\n"gen/*.glsl" = ["N"]\n'
+    )
+    (tmp_path / "shaders").mkdir()
+    options, path = load_options(tmp_path / "shaders")
+    assert path == tmp_path / "pyproject.toml"
+    assert options.select == ["C", "N"] and options.ignore == ["C002"]
+    assert options.target == "webgl2" and options.per_file_ignores == {"gen/*.glsl": ["N"]}
+
+
+@pytest.mark.parametrize(
+    ("table", "message"),
+    [
+        ({"selct": ["N"]}, "unknown key 'selct'"),
+        ({"select": "N"}, "expected a list of rule codes"),
+        ({"target": "metal"}, "unknown value 'metal'"),
+    ],
+)
+def test_bad_configuration_is_one_clear_usage_error(table: dict, message: str) -> None:
+    with pytest.raises(UsageError, match=message):
+        options_from_table(table, "pyproject.toml")
+
+
+# --- reading and fixes ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("data", "why"),
+    [
+        (b"\x89PNG\r\n\x1a\n\0\0\0", "binary data"),
+        (b"float x = 1.0;\n\xff\xfe", "not UTF-8 text (invalid byte 0xff on line 2)"),
+        (b"float x;\n" * 200_000, "too large to analyse"),
+    ],
+)
+def test_unreadable_bytes_are_one_c005_finding(data: bytes, why: str) -> None:
+    result = lint_bytes(data, "x.glsl", Options())
+    assert codes(result.findings) == ["C005"] and why in result.findings[0].message
+
+
+def test_edits_apply_from_the_end_so_positions_stay_valid() -> None:
+    text = "aa bb\ncc dd\n"
+    edits = [Edit(1, 1, 1, 3, "x"), Edit(2, 4, 2, 6, "yyy"), Edit(1, 4, 2, 1, "")]
+    assert apply_edits(text, edits) == "x cc yyy\n"
+
+
+# --- reporters --------------------------------------------------------------------------------
+
+FINDINGS = [
+    Finding("a.glsl", 2, 9, 2, 18, "P003", "error", "texture2D is not in GLSL ES 3.00",
+            Fix("use texture", (Edit(2, 9, 2, 18, "texture"),))),
+    Finding("a.glsl", 3, 1, 3, 2, "C003", "error", "unexpected '}'"),
+]  # fmt: skip
+SOURCES = {"a.glsl": "void f() {\n    c = texture2D(iChannel0, p);\n}\n"}
+
+
+def test_text_format_has_the_location_the_code_and_a_caret_under_the_span() -> None:
+    out = REPORTERS["text"](FINDINGS, SOURCES)
+    assert "a.glsl:2:9: P003 texture2D is not in GLSL ES 3.00 [*]" in out
+    assert "    2 |     c = texture2D(iChannel0, p);\n" + " " * 16 + "^" * 9 in out
+
+
+def test_concise_format_is_one_line_per_finding() -> None:
+    out = REPORTERS["concise"](FINDINGS, SOURCES)
+    assert out.splitlines() == [
+        "a.glsl:2:9: P003 texture2D is not in GLSL ES 3.00 [*]",
+        "a.glsl:3:1: C003 unexpected '}'",
+    ]
+
+
+def test_json_format_is_the_stable_interface() -> None:
+    data = json.loads(REPORTERS["json"](FINDINGS, SOURCES))
+    assert list(data[0]) == ["file", "line", "column", "end_line", "end_column", "code",
+                             "severity", "message", "fix"]  # fmt: skip
+    assert data[0]["fix"]["edits"][0] == {
+        "line": 2, "column": 9, "end_line": 2, "end_column": 18, "content": "texture"
+    }  # fmt: skip
+    assert data[1]["fix"] is None
+
+
+def test_sarif_format_names_the_rules_and_regions() -> None:
+    log = json.loads(REPORTERS["sarif"](FINDINGS[1:], SOURCES))
+    run = log["runs"][0]
+    assert log["version"] == "2.1.0" and run["tool"]["driver"]["rules"][0]["id"] == "C003"
+    region = run["results"][0]["locations"][0]["physicalLocation"]["region"]
+    assert region == {"startLine": 3, "startColumn": 1, "endLine": 3, "endColumn": 2}
+
+
+def test_github_format_is_workflow_annotations() -> None:
+    out = REPORTERS["github"](FINDINGS[1:], SOURCES)
+    assert (
+        out == "::error file=a.glsl,line=3,col=1,endLine=3,endColumn=2,title=C003::unexpected '}'\n"
+    )
+
+
+def test_statistics_count_per_code_and_mark_fixable() -> None:
+    lines = statistics(FINDINGS + FINDINGS[1:] * 2).splitlines()
+    assert lines[0].split() == ["3", "C003", "syntax-error"]
+    assert lines[1].split()[:2] == ["1", "P003"] and lines[1].endswith("[*]")
