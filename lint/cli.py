@@ -17,6 +17,7 @@ from glint.compiler.errors import EnvironmentProblem, UsageError
 from glint.compiler.shadertoy import TARGETS
 
 from .config import load_options
+from .docs import rules_markdown
 from .finding import Finding
 from .options import Options
 from .reporters import FORMATS, REPORTERS, statistics, summary
@@ -52,6 +53,7 @@ def add_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-
     rule.add_argument("code", nargs="?", help="rule code, e.g. N001")
     rule.add_argument("--all", action="store_true", help="every rule")
     rule.add_argument("--json", action="store_true", help="as JSON")
+    rule.add_argument("--markdown", action="store_true", help="with --all: the reference page")
     rule.set_defaults(handler=cmd_rule)
 
 
@@ -139,6 +141,8 @@ def cmd_lint(args: argparse.Namespace) -> int:
         result = lint_bytes(_read(file), name, options, args.fix, args.unsafe_fixes)
         findings += result.findings
         sources[name] = result.text
+        for note in result.notes:
+            print(f"glint: {note}", file=sys.stderr)
         if result.fixed:
             fixed += result.fixed
             if file == "-":
@@ -167,6 +171,11 @@ def cmd_rule(args: argparse.Namespace) -> int:
     else:
         chosen = list(rules)
     entries = [rule_entry(code) for code in chosen]
+    if args.markdown:
+        if not args.all:
+            raise UsageError("--markdown goes with --all")
+        sys.stdout.write(rules_markdown())
+        return 0
     if args.json:
         sys.stdout.write(json.dumps(entries if args.all else entries[0], indent=2) + "\n")
         return 0

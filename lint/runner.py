@@ -138,7 +138,16 @@ def lint_text(
     )
     if count == 0:
         return LintResult(file, findings, text)
-    return LintResult(file, lint_source(fixed_text, file, options), fixed_text, count)
+    after = lint_source(fixed_text, file, options)
+    if _errors(after) > _errors(findings):
+        # A fix must never break a shader; if one did, keep the user's text and say so.
+        note = f"{file}: fixes not applied: they would add compile errors (a glint bug; report it)"
+        return LintResult(file, findings, text, 0, [note])
+    return LintResult(file, after, fixed_text, count)
+
+
+def _errors(findings: list[Finding]) -> int:
+    return sum(1 for f in findings if f.severity == "error")
 
 
 def lint_bytes(data: bytes, file: str, options: Options | None = None, fix: bool = False,

@@ -97,6 +97,7 @@ def rule_doc(rule: type[Rule]) -> dict[str, str]:
         sections[current] += line + "\n"
     doc = {k: _dedent(v).strip() for k, v in sections.items()}
     doc["summary"] = " ".join(doc["summary"].split())  # one line, for listings
+    doc["why"] = doc["why"][:1].upper() + doc["why"][1:]
     return doc
 
 
