@@ -221,3 +221,36 @@ def test_statistics_count_per_code_and_mark_fixable() -> None:
     lines = statistics(FINDINGS + FINDINGS[1:] * 2).splitlines()
     assert lines[0].split() == ["3", "C003", "syntax-error"]
     assert lines[1].split()[:2] == ["1", "P003"] and lines[1].endswith("[*]")
+
+
+def test_a_fix_that_would_break_the_shader_is_not_applied(monkeypatch: pytest.MonkeyPatch) -> None:
+    # A buggy fix cannot be produced by the real rules on purpose, so one is registered here.
+    from glint.lint.rules import Rule
+    from glint.lint.runner import lint_text
+
+    class BreaksCode(Rule):
+        """Finds every `vec4(` and 'fixes' it into a syntax error.
+
+        Why it matters: it does not; it stands for a rule with a bug.
+        Example: vec4(1.0)
+        Fix: none
+        """
+
+        code = "S998"
+        name = "breaks-code"
+        category = "style"
+        fixable = "safe"
+
+        def check(self, ctx):  # type: ignore[no-untyped-def]
+            from glint.lint.context import walk
+
+            for node in walk(ctx.tree):
+                if node.data == "constructor":
+                    edit = ctx.replace(node, "vec4(1.0")
+                    yield self.report(ctx, node, "broken", Fix("break it", (edit,)))
+
+    monkeypatch.setitem(REGISTRY, "S998", BreaksCode)
+    text = "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n}\n"
+    result = lint_text(text, "x.glsl", Options(select=["S998", "C003"], glslang=False), fix=True)
+    assert result.text == text and result.fixed == 0
+    assert result.notes and "fixes not applied" in result.notes[0]
