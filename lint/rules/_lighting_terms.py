@@ -1,0 +1,492 @@
+"""Helpers shared by the lighting (L) and performance (PF) rules: the functions of a file with
+their locals, which variables each one modifies, constant folding, and the naming conventions
+by which shader code says which vector is the normal, the light, the view or the half vector.
+
+Roles are decided by names because GLSL has no other way of saying what a vec3 means. The
+conventions recognised (case-insensitive, whole names, or the last field of `s.N`):
+
+- normal N: n, nor, nrm, norm, normal, and names containing "normal" (pixelNormal, wNormal)
+- light L: l, lig, ld, ldir, lightdir, lightvec, tolight, wi, and names containing "lightdir",
+  "sundir" or "sun_dir" (kSunDir, SUN_DIR)
+- view V: v, vdir, view, viewdir, eye dir names (toeye, eyedir, tocamera, directiontocamera), wo
+- half H: h, hal, half, halfdir, halfvec, halfway, and names containing "half"
+- precomputed cosines: NdotL, NoL, ndl, nl, dotNL, n_dot_l ... (any two of n/l/v/h joined by
+  nothing, "o", "d", "dot" or "_dot_"), with an optional suffix such as "signed" or "clamped".
+
+L·H is the same angle as V·H (H bisects L and V), so both count as the Fresnel cosine.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from lark import Token, Tree
+
+from ..context import LintContext, Node, walk
+
+# --- tree shapes -----------------------------------------------------------------------------
+
+
+def call_name(node: Node) -> str | None:
+    """The called name of a `call` node (`f(x)` -> "f"), None for anything else."""
+    if isinstance(node, Tree) and node.data == "call":
+        head = node.children[0]
+        if isinstance(head, Tree) and head.data == "variable":
+            return str(head.children[0])
+    return None
+
+
+def call_args(node: Tree) -> list[Node]:
+    """Arguments of a call or constructor node."""
+    for child in node.children[1:]:
+        if isinstance(child, Tree) and child.data == "arguments":
+            return list(child.children)
+    return []
+
+
+def var_name(node: Node) -> str | None:
+    if isinstance(node, Tree) and node.data == "variable":
+        return str(node.children[0])
+    return None
+
+
+def last_name(node: Node) -> str | None:
+    """`x` -> "x", `s.N` -> "N" (the innermost name a reader sees), else None."""
+    if isinstance(node, Tree):
+        if node.data == "variable":
+            return str(node.children[0])
+        if node.data == "field":
+            return str(node.children[-1])
+    return None
+
+
+def root_var(node: Node) -> str | None:
+    """The variable an lvalue writes: `a`, `a.x`, `a[i].y` -> "a"."""
+    while isinstance(node, Tree) and node.data in ("field", "index"):
+        node = node.children[0]
+    return var_name(node)
+
+
+def is_simple(node: Node) -> bool:
+    """An identifier, or fields/swizzles/constant indices of one: no side effects, cheap to
+    repeat, and a postfix expression that needs no parentheses."""
+    while isinstance(node, Tree) and node.data in ("field", "index"):
+        if node.data == "index" and not (
+            isinstance(node.children[1], Tree) and node.children[1].data == "int_literal"
+        ):
+            return False
+        node = node.children[0]
+    return var_name(node) is not None
+
+
+def binary_op(node: Node) -> str | None:
+    if isinstance(node, Tree) and node.data == "binary":
+        return str(node.children[1])
+    return None
+
+
+def operands(node: Node, op: str) -> list[Node]:
+    """The operands of a chain of one associative operator (`a + b + c` -> [a, b, c])."""
+    if binary_op(node) == op:
+        assert isinstance(node, Tree)
+        return operands(node.children[0], op) + operands(node.children[2], op)
+    return [node]
+
+
+def parents(root: Tree) -> dict[int, Tree]:
+    """Parent of every subtree and token under `root`, keyed by id()."""
+    result: dict[int, Tree] = {}
+    for node in walk(root):
+        for child in node.children:
+            result[id(child)] = node
+    return result
+
+
+def names_in(node: Node) -> set[str]:
+    """Every variable name read or written under the node (call heads excluded)."""
+    if not isinstance(node, Tree):
+        return set()
+    heads = {id(s.children[0]) for s in walk(node) if s.data == "call"}
+    return {str(s.children[0]) for s in walk(node) if s.data == "variable" and id(s) not in heads}
+
+
+def calls_in(node: Node) -> list[Tree]:
+    return [s for s in walk(node) if s.data == "call"] if isinstance(node, Tree) else []
+
+
+# --- constants -------------------------------------------------------------------------------
+
+
+def const_value(node: Node) -> float | None:
+    """The value of a literal expression (`1.0 / 2.2`, `vec3(0.4545)`, `-2.`), else None."""
+    if not isinstance(node, Tree):
+        return None
+    if node.data in ("float_literal", "int_literal"):
+        text = str(node.children[0]).rstrip("fFuU")
+        try:
+            return float(int(text, 0)) if node.data == "int_literal" else float(text)
+        except ValueError:
+            return None
+    if node.data == "unary":
+        inner = const_value(node.children[1])
+        sign = str(node.children[0])
+        if inner is None or sign not in "+-":
+            return None
+        return -inner if sign == "-" else inner
+    if node.data == "constructor":
+        args = call_args(node)
+        values = [const_value(a) for a in args]
+        if values and all(v is not None and v == values[0] for v in values):
+            return values[0]
+        return None
+    op = binary_op(node)
+    if op in ("+", "-", "*", "/"):
+        left, right = const_value(node.children[0]), const_value(node.children[2])
+        if left is None or right is None:
+            return None
+        if op == "+":
+            return left + right
+        if op == "-":
+            return left - right
+        if op == "*":
+            return left * right
+        return left / right if right else None
+    return None
+
+
+# --- functions, locals, writes ---------------------------------------------------------------
+
+
+@dataclass
+class Function:
+    name: str
+    node: Tree  # function_definition
+    body: Tree  # compound_statement
+    params: dict[str, tuple[str, str]]  # name -> (qualifier, type)
+    param_order: list[str]
+    locals: dict[str, str] = field(default_factory=dict)  # name -> type
+    init: dict[str, Node] = field(default_factory=dict)  # name -> initializer (first decl)
+    declared_twice: set[str] = field(default_factory=set)
+    written: set[str] = field(default_factory=set)  # assigned after declaration, ++, out args
+
+    def type_of(self, name: str) -> str | None:
+        if name in self.locals:
+            return self.locals[name]
+        if name in self.params:
+            return self.params[name][1]
+        return None
+
+    def value_of(self, name: str) -> Node | None:
+        """The initializer of a local that is never written again (its one value)."""
+        if name in self.declared_twice or name in self.written:
+            return None
+        return self.init.get(name)
+
+
+def _type_text(node: Node) -> str:
+    return " ".join(str(t) for t in _tokens(node))
+
+
+def _tokens(node: Node) -> list[Token]:
+    if isinstance(node, Token):
+        return [node]
+    out: list[Token] = []
+    for child in node.children:
+        out += _tokens(child)
+    return out
+
+
+def _prototype(proto: Tree) -> tuple[str, dict[str, tuple[str, str]], list[str]]:
+    name = ""
+    params: dict[str, tuple[str, str]] = {}
+    order: list[str] = []
+    for child in proto.children:
+        if isinstance(child, Token) and child.type == "IDENTIFIER":
+            name = str(child)
+        elif isinstance(child, Tree) and child.data == "parameter_list":
+            for param in child.children:
+                qual, typ, pname = "", "", ""
+                for part in param.children:
+                    if isinstance(part, Tree) and part.data == "type_qualifier":
+                        qual = _type_text(part)
+                    elif isinstance(part, Tree) and part.data == "type_specifier":
+                        typ = _type_text(part)
+                    elif isinstance(part, Token) and part.type == "IDENTIFIER":
+                        pname = str(part)
+                if pname:
+                    params[pname] = (qual, typ)
+                    order.append(pname)
+    return name, params, order
+
+
+def functions(ctx: LintContext) -> list[Function]:
+    """Every function definition of the file, analysed once per file."""
+    cached = ctx.cache.get("lighting.functions")
+    if cached is not None:
+        return cached  # type: ignore[no-any-return]
+    result: list[Function] = []
+    if ctx.tree is not None:
+        defs = [n for n in ctx.tree.children if isinstance(n, Tree)
+                and n.data == "function_definition"]  # fmt: skip
+        out_params = {}
+        for node in defs:
+            name, params, order = _prototype(node.children[0])
+            out_params[name] = [i for i, p in enumerate(order) if "out" in params[p][0]]
+        for node in defs:
+            name, params, order = _prototype(node.children[0])
+            fn = Function(name, node, node.children[1], params, order)
+            _collect(fn, out_params)
+            result.append(fn)
+    ctx.cache["lighting.functions"] = result
+    return result
+
+
+def function_map(ctx: LintContext) -> dict[str, Function]:
+    return {f.name: f for f in functions(ctx)}
+
+
+def _collect(fn: Function, out_params: dict[str, list[int]]) -> None:
+    for node in walk(fn.body):
+        if node.data == "variable_declaration":
+            typ = ""
+            for child in node.children:
+                if isinstance(child, Tree) and child.data == "fully_specified_type":
+                    typ = _type_text(child.children[-1])
+                elif isinstance(child, Tree) and child.data == "declarator":
+                    name = str(child.children[0])
+                    if name in fn.locals or name in fn.params:
+                        fn.declared_twice.add(name)
+                    fn.locals[name] = typ
+                    init = child.children[-1]
+                    if isinstance(init, Tree) and init.data != "array_specifier":
+                        fn.init.setdefault(name, init)
+        elif node.data == "condition_declaration":
+            fn.declared_twice.add(str(node.children[1]))
+        fn.written |= writes_of(node, out_params)
+
+
+def writes_of(node: Tree, out_params: dict[str, list[int]]) -> set[str]:
+    """Variables the node itself writes: assignment targets, ++/--, out/inout arguments."""
+    if node.data == "assignment":
+        name = root_var(node.children[0])
+        return {name} if name else set()
+    if node.data == "prefix":
+        name = root_var(node.children[1])
+        return {name} if name else set()
+    if node.data == "postfix":
+        name = root_var(node.children[0])
+        return {name} if name else set()
+    if node.data == "call":
+        callee = call_name(node)
+        if callee in out_params:
+            args = call_args(node)
+            return {n for i in out_params[callee] if i < len(args) and (n := root_var(args[i]))}
+    return set()
+
+
+def out_param_map(ctx: LintContext) -> dict[str, list[int]]:
+    return {f.name: [i for i, p in enumerate(f.param_order) if "out" in f.params[p][0]]
+            for f in functions(ctx)}  # fmt: skip
+
+
+def enclosing_function(ctx: LintContext, node: Node) -> Function | None:
+    line = node.meta.line if isinstance(node, Tree) and not node.meta.empty else None
+    if line is None:
+        return None
+    for fn in functions(ctx):
+        meta = fn.node.meta
+        if meta.start_pos <= node.meta.start_pos and node.meta.end_pos <= meta.end_pos:
+            return fn
+    return None
+
+
+def resolve(node: Node, fn: Function | None, depth: int = 4) -> Node:
+    """Follow a local that has one value to that value (a few steps at most)."""
+    while depth > 0 and fn is not None:
+        name = var_name(node)
+        value = fn.value_of(name) if name else None
+        if value is None:
+            break
+        node, depth = value, depth - 1
+    return node
+
+
+# --- roles of vectors and cosines ------------------------------------------------------------
+
+_ROLE_EXACT = {
+    "N": {"n", "nor", "nrm", "norm", "normal", "nn", "wn", "sn"},
+    "L": {
+        "l",
+        "lig",
+        "ld",
+        "ldir",
+        "lightdir",
+        "lightvec",
+        "tolight",
+        "wi",
+        "lightdirection",
+        "lig2",
+        "light",
+    },
+    "V": {
+        "v",
+        "vdir",
+        "view",
+        "viewdir",
+        "viewvec",
+        "toeye",
+        "eyedir",
+        "tocamera",
+        "tocam",
+        "directiontocamera",
+        "viewdirection",
+        "wo",
+    },
+    "H": {"h", "hal", "half", "halfdir", "halfvec", "halfway", "halfwayvector", "hv"},
+}
+_ROLE_CONTAINS = {
+    "N": ("normal",),
+    "L": ("lightdir", "sundir", "sun_dir", "lightvec", "tolight", "light_dir"),
+    "V": ("viewdir", "view_dir", "tocamera", "toeye"),
+    "H": ("half",),
+}
+_COSINE = re.compile(
+    r"^(?:dot_?|cos_?)?([nlvh])_?(?:dot|o|d)?_?([nlvh])(?:_?(?:signed|clamped|sat|raw|c))?$"
+)
+
+
+def name_role(name: str) -> str | None:
+    low = name.lower()
+    for role, names in _ROLE_EXACT.items():
+        if low in names:
+            return role
+    for role, parts in _ROLE_CONTAINS.items():
+        if any(p in low for p in parts):
+            return role
+    return None
+
+
+def vector_role(node: Node, fn: Function | None) -> str | None:
+    """N, L, V or H for an expression that names one of those vectors, else None."""
+    if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) in "+-":
+        return vector_role(node.children[1], fn)
+    if isinstance(node, Tree) and call_name(node) == "normalize":
+        args = call_args(node)
+        return vector_role(args[0], fn) if len(args) == 1 else None
+    name = last_name(node)
+    if name is None:
+        return None
+    role = name_role(name)
+    if role is None and var_name(node) is not None:
+        value = resolve(node, fn, 1)
+        if value is not node:
+            return vector_role(value, fn)
+    return role
+
+
+def pair(a: str, b: str) -> str | None:
+    """The cosine of two roles: NL, NV, NH, VH (also for L·H), LV."""
+    key = "".join(sorted(a + b))
+    return {"LN": "NL", "NV": "NV", "HN": "NH", "HV": "VH", "HL": "VH", "LV": "LV"}.get(key)
+
+
+_PASS_THROUGH = {"max", "clamp", "saturate", "abs", "min"}
+
+
+def cosine_of(node: Node, fn: Function | None, depth: int = 4) -> str | None:
+    """Which cosine an expression is (NL, NV, NH, VH, LV), through clamps and locals."""
+    if depth <= 0 or not isinstance(node, Tree):
+        return None
+    name = call_name(node)
+    if name == "dot":
+        args = call_args(node)
+        if len(args) == 2:
+            a, b = vector_role(args[0], fn), vector_role(args[1], fn)
+            return pair(a, b) if a and b else None
+        return None
+    if name in _PASS_THROUGH:
+        found = {c for a in call_args(node) if const_value(a) is None
+                 and (c := cosine_of(a, fn, depth - 1))}  # fmt: skip
+        return found.pop() if len(found) == 1 else None
+    leaf = last_name(node)
+    if leaf is not None:
+        match = _COSINE.match(leaf.lower())
+        if match:
+            return pair(match.group(1).upper(), match.group(2).upper())
+        if var_name(node) is not None and fn is not None:
+            value = fn.value_of(leaf)
+            if value is not None:
+                return cosine_of(value, fn, depth - 1)
+    return None
+
+
+def mentions_normal(ctx: LintContext) -> bool:
+    """Whether the file lights a surface: a dot product with a normal anywhere."""
+    for fn in functions(ctx):
+        for node in calls_in(fn.body):
+            if call_name(node) == "dot" and any(vector_role(a, fn) == "N" for a in call_args(node)):
+                return True
+    return False
+
+
+# --- terms -----------------------------------------------------------------------------------
+
+FRESNEL_NAME = re.compile(r"fresnel|schlick", re.IGNORECASE)
+# Schlick's phase function and Schlick's G1 share the name but are not Fresnel terms.
+NOT_FRESNEL_NAME = re.compile(r"phase|ggx|smith|g1|geometry|visib|mask", re.IGNORECASE)
+
+
+def is_fresnel_name(name: str | None) -> bool:
+    return (
+        bool(name)
+        and bool(FRESNEL_NAME.search(name or ""))
+        and not NOT_FRESNEL_NAME.search(name or "")
+    )
+
+
+def schlick_base(node: Node) -> Node | None:
+    """For `pow(1 - x, 5.0)` (also clamped or maxed: `pow(clamp(1.0 - x, 0., 1.), 5.)`) the x,
+    else None: the cosine of an inline Schlick Fresnel."""
+    if call_name(node) != "pow":
+        return None
+    args = call_args(node)  # type: ignore[arg-type]
+    if len(args) != 2 or const_value(args[1]) != 5.0:
+        return None
+    base = args[0]
+    while call_name(base) in ("clamp", "max", "saturate"):
+        inner = [a for a in call_args(base) if const_value(a) is None]  # type: ignore[arg-type]
+        if len(inner) != 1:
+            return None
+        base = inner[0]
+    if binary_op(base) == "-" and const_value(base.children[0]) == 1.0:  # type: ignore[union-attr]
+        return base.children[2]  # type: ignore[union-attr]
+    return None
+
+
+# --- the shared semantic model (lint/analysis/model.py), when it is there -------------------
+
+
+def semantic(ctx: LintContext) -> object | None:
+    """The file's semantic model, or None while the analysis package does not provide one."""
+    try:
+        from ..analysis.model import semantic_model
+    except ImportError:
+        return None
+    return semantic_model(ctx)
+
+
+def is_unit(ctx: LintContext, expr: Node) -> bool:
+    """Whether the model proves the expression unit length (False without a model)."""
+    model = semantic(ctx)
+    return bool(model is not None and model.is_unit(expr))  # type: ignore[attr-defined]
+
+
+def may_be_negative(ctx: LintContext, expr: Node, fn: Function | None) -> bool:
+    """Whether the value can be below zero: the model's range when there is a model, else
+    whether the expression is an unclamped dot product (directly or through a local)."""
+    model = semantic(ctx)
+    if model is not None:
+        return bool(model.range_of(expr).may_be_negative)  # type: ignore[attr-defined]
+    value = resolve(expr, fn)
+    return call_name(value) == "dot"
