@@ -62,7 +62,9 @@ class LintContext:
         return (self._origin(line), col, self._origin(end_line), end_col)
 
     def _origin(self, pre_line: int) -> int:
-        return self.pre.locate(pre_line).line if self.pre is not None else pre_line
+        # The preprocessor keeps one output line per input line, so the physical line is the
+        # tree's line; `#line` is ignored, as findings and edits index the file as written.
+        return min(max(pre_line, 1), len(self.lines))
 
     def has_macros(self, node: Node) -> bool:
         """Whether a macro was expanded on the node's lines (its columns are then approximate

@@ -52,6 +52,9 @@ class MacroCallError(Exception):
 
 
 _SPACE = Tok("ws", " ")
+# Tokens that macro bodies may produce in one source. Macros that double (`#define B A A`)
+# nest into billions of tokens; real shaders stay far below this.
+MAX_EXPANDED_TOKENS = 500_000
 
 
 class Expander:
@@ -61,6 +64,7 @@ class Expander:
         self.macros = macros
         self._line = line  # current reported line, for __LINE__
         self.used: set[str] = set()  # macro names expanded since the caller last cleared it
+        self.produced = 0  # tokens substituted so far, against MAX_EXPANDED_TOKENS
 
     def expand(self, tokens: list[Tok], more_input: bool = False) -> list[Tok]:
         """Fully expand `tokens`; raise NeedMoreInput when a call is cut off and more may follow."""
@@ -80,6 +84,7 @@ class Expander:
             elif macro.params is None:
                 self.used.add(name)
                 body = self._substitute(macro, [], tok.hide | {name})
+                self._count(len(body), tok.col)
                 stack.extend(reversed([_SPACE, *body, _SPACE]))
             else:
                 call = self._take_call(stack, more_input)
@@ -90,8 +95,18 @@ class Expander:
                 args = self._check_arity(macro, args, tok.col)
                 self.used.add(name)
                 body = self._substitute(macro, args, (tok.hide & close.hide) | {name})
+                self._count(len(body), tok.col)
                 stack.extend(reversed([_SPACE, *body, _SPACE]))
         return out
+
+    def _count(self, n: int, col: int) -> None:
+        self.produced += n
+        if self.produced > MAX_EXPANDED_TOKENS:
+            raise MacroCallError(
+                f"macro expansion too large (over {MAX_EXPANDED_TOKENS:,} tokens); "
+                "does a macro use another one twice, nested many times?",
+                col,
+            )
 
     def _take_call(self, stack: list[Tok], more_input: bool) -> tuple[list[list[Tok]], Tok] | None:
         """Pop `( args )` from the stack if it follows; None (stack untouched) when it does not."""

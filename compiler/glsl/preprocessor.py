@@ -46,14 +46,18 @@ class Preprocessed:
 
 
 class PreprocessorError(InputError):
-    """A preprocessing error at `file:line:column`."""
+    """A preprocessing error at `file:line:column`; `line` honours `#line`, `physical_line`
+    is the line of the text as given (where an editor or a fix must point)."""
 
-    def __init__(self, file: str, line: int, column: int, what: str) -> None:
+    def __init__(
+        self, file: str, line: int, column: int, what: str, physical_line: int | None = None
+    ) -> None:
         super().__init__(f"{file}:{line}:{column}: {what}")
         self.file = file
         self.line = line
         self.column = column
         self.what = what
+        self.physical_line = line if physical_line is None else physical_line
 
 
 # Predefined in every ES 3.00 fragment shader (section 3.4); callers may override.
@@ -73,6 +77,7 @@ class _Branch:
     line: int
     col: int
     else_seen: bool = False
+    physical_line: int = 0  # `line` ignoring #line
 
 
 def preprocess(
@@ -105,7 +110,8 @@ class _Preprocessor:
         return self.branches[-1].active if self.branches else True
 
     def error(self, col: int, what: str) -> PreprocessorError:
-        return PreprocessorError(self.file, self.index + 1 + self.offset, max(col, 1), what)
+        line = self.index + 1
+        return PreprocessorError(self.file, line + self.offset, max(col, 1), what, line)
 
     def location(self) -> SourceLocation:
         return SourceLocation(self.file, self.index + 1 + self.offset)
@@ -141,7 +147,7 @@ class _Preprocessor:
         if self.branches:
             top = self.branches[-1]
             raise PreprocessorError(
-                self.file, top.line, top.col, "unterminated #if: missing #endif"
+                self.file, top.line, top.col, "unterminated #if: missing #endif", top.physical_line
             )
         return Preprocessed(
             text="\n".join(out),
@@ -241,7 +247,7 @@ class _Preprocessor:
         if name in ("if", "ifdef", "ifndef"):
             parent = self.active
             cond = parent and self._condition(name, tok, args)
-            self.branches.append(_Branch(parent, cond, cond, line, tok.col))
+            self.branches.append(_Branch(parent, cond, cond, line, tok.col, False, self.index + 1))
             return
         if not self.branches:
             raise self.error(tok.col, f"#{name} without #if")
@@ -348,7 +354,10 @@ class _Preprocessor:
         self.macros.pop(sig[0].text, None)
 
     def _line(self, tok: Tok, rest: list[Tok]) -> None:
-        sig = significant(self.expander.expand(rest))
+        try:
+            sig = significant(self.expander.expand(rest))
+        except MacroCallError as exc:  # `#line F(` must be an error, not a crash
+            raise self.error(exc.col, str(exc)) from None
         if not sig or sig[0].kind != "num" or not sig[0].text.isdigit():
             raise self.error(tok.col, "#line expects a line number")
         source = join(sig[1:]).strip()

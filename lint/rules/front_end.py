@@ -39,7 +39,7 @@ class SyntaxError_(Rule):
         error = ctx.front_end_error
         if not isinstance(error, GLSLSyntaxError) or ctx.read_problem:
             return
-        line = ctx.pre.locate(error.line).line if ctx.pre is not None else error.line
+        line = min(max(error.line, 1), len(ctx.lines))  # the parser's line is the physical one
         if ctx.use_glslang and any(d.severity == "error" and d.line == line for d in ctx.glslang()):
             return
         yield self.report(ctx, (line, error.column, line, error.column + 1), error.what)
@@ -72,7 +72,8 @@ class PreprocessorProblem(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         error = ctx.front_end_error
         if isinstance(error, PreprocessorError) and not ctx.read_problem:
-            span = (error.line, error.column, error.line, error.column + 1)
+            line = min(max(error.physical_line, 1), len(ctx.lines))  # not moved by #line
+            span = (line, error.column, line, error.column + 1)
             yield self.report(ctx, span, error.what)
 
 
