@@ -1,0 +1,642 @@
+"""Definite assignment: at each read of a local variable or an `out` parameter, is it certainly
+written on every path that reaches the read? And at each exit of a function, which `out`
+parameters are written?
+
+A small forward analysis over the statement tree of each function (no control-flow graph):
+if/else join, loops may run zero times (unless their bounds say otherwise), `switch` falls
+through, `return`/`break`/`continue`/`discard` end a path. A state maps each tracked variable
+to a bit mask of its written components (vectors are tracked per component, through swizzles;
+everything else as a whole). Joins intersect the masks. Since masks only grow, a loop body is
+analysed once, with the state on entry, and no fixed point is needed.
+
+The analysis prefers silence to guessing: a write through a path it cannot follow
+(`a[i].x = ...`, a struct member) counts as a write of the whole variable, and a variable passed
+to a function this file does not define counts as written, never as read.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from typing import Literal
+
+from lark import Token, Tree
+
+from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+from ..context import LintContext, Node
+from ..context import tokens as tokens_of
+
+State = dict[int, int]  # id of a Var -> mask of written components
+SWIZZLE_SETS = ("xyzw", "rgba", "stpq")
+_SHORT_CIRCUIT = ("&&", "||", "^^")
+# Builtins with `out` parameters in GLSL ES 3.00, by position.
+_BUILTIN_QUALIFIERS: dict[str, tuple[str, ...]] = {"modf": ("in", "out")}
+
+
+@dataclass(eq=False)
+class Var:
+    """A tracked variable: a local declared without a value, or an `out` parameter."""
+
+    name: str
+    token: Token  # its name where declared
+    width: int  # components tracked: 2-4 for vectors, 1 for anything else
+    kind: Literal["local", "out"]
+
+    @property
+    def full(self) -> int:
+        return (1 << self.width) - 1
+
+
+@dataclass
+class Read:
+    """A read of components that are not written on some path to it."""
+
+    var: Var
+    node: Node
+    missing: int  # mask of the components that may be unwritten
+
+
+@dataclass
+class Exit:
+    """A way out of the function: a `return`, or the end of the body (node None)."""
+
+    node: Node | None
+    state: State
+
+
+@dataclass
+class FunctionFlow:
+    name: str
+    definition: Tree
+    outs: list[Var]  # the tracked `out` parameters, in order
+    reads: list[Read] = field(default_factory=list)
+    exits: list[Exit] = field(default_factory=list)
+
+
+def function_flows(ctx: LintContext) -> list[FunctionFlow]:
+    """The definite-assignment results of every function definition (computed once)."""
+    cached = ctx.cache.get("flow")
+    if cached is None:
+        cached = []
+        if ctx.tree is not None and ctx.pre is not None:
+            signatures = _signatures(ctx.tree)
+            consts = _const_ints(ctx.tree)
+            for node in ctx.tree.children:
+                if isinstance(node, Tree) and node.data == "function_definition":
+                    cached.append(_Analyzer(signatures, consts, ctx.pre.text).function(node))
+        ctx.cache["flow"] = cached
+    return cached
+
+
+def mask_names(var: Var, mask: int) -> str:
+    """`.xyz`-style names of the components in `mask` ("" for a whole variable)."""
+    if var.width == 1:
+        return ""
+    return "." + "".join("xyzw"[i] for i in range(var.width) if mask >> i & 1)
+
+
+# --- the tree ------------------------------------------------------------------------------
+
+
+def vector_width(type_name: str) -> int:
+    """Components of a vector type (vec3 -> 3), 1 for anything else."""
+    for prefix in ("vec", "ivec", "uvec", "bvec"):
+        if type_name.startswith(prefix) and type_name[len(prefix) :] in ("2", "3", "4"):
+            return int(type_name[-1])
+    return 1
+
+
+def swizzle(name: str, width: int) -> tuple[int, ...] | None:
+    """Component indices of a swizzle such as `xy` or `bgr`, or None if it is not one."""
+    if not 1 <= len(name) <= 4:
+        return None
+    for letters in SWIZZLE_SETS:
+        if all(c in letters for c in name):
+            indices = tuple(letters.index(c) for c in name)
+            return indices if all(i < width for i in indices) else None
+    return None
+
+
+def type_of_declaration(spec: Tree) -> tuple[str, bool]:
+    """(type name, is an array) of a `fully_specified_type` or `type_specifier`."""
+    if spec.data == "fully_specified_type":
+        spec = spec.children[-1]  # type: ignore[assignment]
+    name = spec.children[0]
+    is_array = any(isinstance(c, Tree) and c.data == "array_specifier" for c in spec.children)
+    if isinstance(name, Token):
+        return str(name), is_array
+    return "struct", is_array
+
+
+def parameter_parts(param: Tree) -> tuple[str, str, bool, Token | None]:
+    """(qualifier, type, is an array, name) of a `parameter` node."""
+    qualifier = ""
+    type_name, is_array, name = "", False, None
+    for child in param.children:
+        if isinstance(child, Tree) and child.data == "type_qualifier":
+            words = [str(t) for t in child.children if isinstance(t, Token)]
+            qualifier = next((w for w in words if w in ("in", "out", "inout")), "in")
+        elif isinstance(child, Tree) and child.data == "type_specifier":
+            type_name, is_array = type_of_declaration(child)
+        elif isinstance(child, Tree) and child.data == "array_specifier":
+            is_array = True
+        elif isinstance(child, Token):
+            name = child
+    return qualifier or "in", type_name, is_array, name
+
+
+def prototype_parts(proto: Tree) -> tuple[str, Token, list[Tree]]:
+    """(return type, name, parameters) of a `function_prototype`."""
+    ret, name = proto.children[0], proto.children[1]
+    params: list[Tree] = []
+    if len(proto.children) > 2 and isinstance(proto.children[2], Tree):
+        params = [p for p in proto.children[2].children if isinstance(p, Tree)]
+    ret_type, _ = type_of_declaration(ret)  # type: ignore[arg-type]
+    return ret_type, name, params  # type: ignore[return-value]
+
+
+def _signatures(tree: Tree) -> dict[str, list[tuple[str, ...]]]:
+    """Parameter qualifiers of every user function, per overload."""
+    found: dict[str, list[tuple[str, ...]]] = {}
+    for node in tree.children:
+        if not isinstance(node, Tree):
+            continue
+        proto = node.children[0] if node.data == "function_definition" else node
+        if isinstance(proto, Tree) and proto.data == "function_prototype":
+            _, name, params = prototype_parts(proto)
+            qualifiers = tuple(parameter_parts(p)[0] for p in params)
+            if qualifiers == ("in",) and parameter_parts(params[0])[1] == "void":
+                qualifiers = ()  # `f(void)`
+            found.setdefault(str(name), []).append(qualifiers)
+    return found
+
+
+def _const_ints(tree: Tree) -> dict[str, int]:
+    """Global `const int N = <literal>;` values, to see that `for (i = 0; i < N; ...)` runs."""
+    found: dict[str, int] = {}
+    for node in tree.children:
+        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+            continue
+        spec = node.children[0]
+        words = [str(t) for t in tokens_of(spec) if isinstance(t, Token)]
+        if "const" not in words:
+            continue
+        for decl in node.children[1:]:
+            if isinstance(decl, Tree) and len(decl.children) == 2:
+                value = _int_value(decl.children[1])
+                if value is not None:
+                    found[str(decl.children[0])] = value
+    return found
+
+
+def _int_value(node: Node) -> int | None:
+    if isinstance(node, Tree) and node.data == "int_literal":
+        text = str(node.children[0]).rstrip("uU")
+        if text[:2].lower() == "0x":
+            return int(text, 16)
+        return int(text, 8) if text.startswith("0") and len(text) > 1 else int(text)
+    if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "-":
+        inner = _int_value(node.children[1])
+        return None if inner is None else -inner
+    return None
+
+
+def _join(states: Iterable[State | None]) -> State | None:
+    """The state where paths meet: a component is written if it is on every path."""
+    result: State | None = None
+    for state in states:
+        if state is None:
+            continue
+        if result is None:
+            result = dict(state)
+        else:
+            result = {k: v & state[k] for k, v in result.items() if k in state}
+    return result
+
+
+@dataclass
+class _Target:
+    """An enclosing loop or switch: the states that `break` and `continue` leave with."""
+
+    loop: bool
+    breaks: list[State] = field(default_factory=list)
+    continues: list[State] = field(default_factory=list)
+
+
+class _Analyzer:
+    def __init__(
+        self, signatures: dict[str, list[tuple[str, ...]]], consts: dict[str, int], text: str
+    ) -> None:
+        self.signatures = signatures
+        self.consts = consts
+        self.text = text
+        self.scopes: list[dict[str, Var | None]] = []  # None: a name that is not tracked
+        self.targets: list[_Target] = []
+        self.flow: FunctionFlow | None = None
+        self.reported: set[int] = set()  # ids of nodes already reported
+
+    # --- functions and statements -----------------------------------------------------------
+
+    def function(self, node: Tree) -> FunctionFlow:
+        proto, body = node.children[0], node.children[1]
+        _, name, params = prototype_parts(proto)  # type: ignore[arg-type]
+        flow = FunctionFlow(str(name), node, [])
+        self.flow = flow
+        self.scopes = [{}]
+        state: State = {}
+        for param in params:
+            qualifier, type_name, is_array, pname = parameter_parts(param)
+            if pname is None:
+                continue
+            if qualifier == "out":
+                width = 1 if is_array else vector_width(type_name)
+                var = Var(str(pname), pname, width, "out")
+                flow.outs.append(var)
+                self.scopes[-1][var.name] = var
+                state[id(var)] = 0
+            else:
+                self.scopes[-1][str(pname)] = None
+        end = self.block(body.children, state)  # type: ignore[union-attr]
+        if end is not None:
+            flow.exits.append(Exit(None, end))
+        return flow
+
+    def block(self, items: list[Node], state: State | None) -> State | None:
+        """A statement list in a scope of its own; iterative, so long bodies are fine."""
+        self.scopes.append({})
+        for item in items:
+            if state is None:
+                break  # the rest is unreachable and not analysed
+            state = self.statement(item, state)
+        self.scopes.pop()
+        return state
+
+    def nested(self, node: Node, state: State) -> State | None:
+        """A statement that forms a scope of its own (an if branch, a loop body)."""
+        return self.block([node], state)
+
+    def statement(self, node: Node, state: State) -> State | None:
+        if not isinstance(node, Tree):
+            return state
+        kind = node.data
+        if kind == "compound_statement":
+            return self.block(node.children, state)
+        if kind == "declaration_statement":
+            decl = node.children[0]
+            if isinstance(decl, Tree) and decl.data == "variable_declaration":
+                self.declaration(decl, state)
+            return state
+        if kind == "expression_statement":
+            self.expr(node.children[0], state)
+            return state
+        if kind == "if_statement":
+            self.expr(node.children[0], state)
+            then = self.nested(node.children[1], dict(state))
+            other = self.nested(node.children[2], dict(state)) if len(node.children) > 2 else state
+            return _join([then, other])
+        if kind == "for_statement":
+            return self.for_loop(node, state)
+        if kind == "while_statement":
+            return self.while_loop(node, state)
+        if kind == "do_statement":
+            return self.do_loop(node, state)
+        if kind == "switch_statement":
+            return self.switch(node, state)
+        if kind == "jump_statement":
+            return self.jump(node, state)
+        return state  # empty statements, stray labels
+
+    def declaration(self, decl: Tree, state: State) -> None:
+        spec = decl.children[0]
+        type_name, type_array = type_of_declaration(spec)  # type: ignore[arg-type]
+        for declarator in decl.children[1:]:
+            if not isinstance(declarator, Tree):
+                continue
+            name = declarator.children[0]
+            rest = declarator.children[1:]
+            is_array = type_array or any(
+                isinstance(c, Tree) and c.data == "array_specifier" for c in rest
+            )
+            init = [c for c in rest if not (isinstance(c, Tree) and c.data == "array_specifier")]
+            if init:
+                self.expr(init[0], state)  # the name's scope starts after its initialiser
+                self.scopes[-1][str(name)] = None
+                continue
+            width = 1 if is_array else vector_width(type_name)
+            var = Var(str(name), name, width, "local")  # type: ignore[arg-type]
+            self.scopes[-1][var.name] = var
+            state[id(var)] = 0
+
+    def jump(self, node: Tree, state: State) -> State | None:
+        word = node.children[0]
+        if word == "return":
+            if len(node.children) > 1:
+                self.expr(node.children[1], state)
+            assert self.flow is not None
+            self.flow.exits.append(Exit(node, dict(state)))
+        elif word in ("break", "continue"):
+            loop = word == "continue"
+            for target in reversed(self.targets):
+                if target.loop or not loop:
+                    (target.continues if loop else target.breaks).append(dict(state))
+                    break
+        # discard ends the invocation: nothing after it is observed, so nothing is owed.
+        return None
+
+    def for_loop(self, node: Tree, state: State) -> State | None:
+        init, body = node.children[0], node.children[-1]
+        cond, step = self.for_parts(node)
+        self.scopes.append({})
+        after: State | None = self.statement(init, state)
+        if after is None:
+            self.scopes.pop()
+            return None
+        if cond is not None:
+            self.expr(cond, after)
+        target = _Target(loop=True)
+        self.targets.append(target)
+        end = self.nested(body, dict(after))
+        self.targets.pop()
+        looped = _join([end, *target.continues])
+        if looped is not None and step is not None:
+            self.expr(step, looped)
+        if looped is not None and cond is not None:
+            self.expr(cond, looped)
+        self.scopes.pop()
+        if cond is None or _is_true(cond):
+            exit_states: list[State | None] = []  # only `break` leaves
+        elif self.runs_once(init, cond):
+            exit_states = [looped]
+        else:
+            exit_states = [after]
+        return _join([*exit_states, *target.breaks])
+
+    def for_parts(self, node: Tree) -> tuple[Node | None, Node | None]:
+        """The condition and the step of a for loop; either may be absent, and the tree does
+        not say which one is there when only one is, so count the `;` before it."""
+        middle = node.children[1:-1]
+        if len(middle) == 2:
+            return middle[0], middle[1]
+        if not middle:
+            return None, None
+        start = node.meta.start_pos if not node.meta.empty else 0
+        only = middle[0]
+        end = _start_pos(only)
+        if end is None:
+            return only, None
+        return (None, only) if self.text[start:end].count(";") >= 2 else (only, None)
+
+    def runs_once(self, init: Node, cond: Node) -> bool:
+        """Whether a counted loop certainly runs its body: `for (int i = A; i < B; ...)`."""
+        start = _loop_start(init)
+        if start is None or not (isinstance(cond, Tree) and cond.data == "binary"):
+            return False
+        left, op, right = cond.children
+        bound = _int_value(right)
+        if bound is None and isinstance(right, Tree) and right.data == "variable":
+            bound = self.consts.get(str(right.children[0]))
+        if bound is None or not (isinstance(left, Tree) and left.data == "variable"):
+            return False
+        if str(left.children[0]) != start[0]:
+            return False
+        value = start[1]
+        checks = {"<": value < bound, "<=": value <= bound, ">": value > bound,
+                  ">=": value >= bound, "!=": value != bound}  # fmt: skip
+        return checks.get(str(op), False)
+
+    def while_loop(self, node: Tree, state: State) -> State | None:
+        cond, body = node.children
+        self.scopes.append({})
+        if isinstance(cond, Tree) and cond.data == "condition_declaration":
+            self.expr(cond.children[-1], state)
+            self.scopes[-1][str(cond.children[1])] = None
+        else:
+            self.expr(cond, state)
+        target = _Target(loop=True)
+        self.targets.append(target)
+        # writes in the body only strengthen later tests: the first test's state is the exit's
+        self.nested(body, dict(state))
+        self.targets.pop()
+        self.scopes.pop()
+        exits: list[State | None] = [] if _is_true(cond) else [state]
+        return _join([*exits, *target.breaks])
+
+    def do_loop(self, node: Tree, state: State) -> State | None:
+        body, cond = node.children
+        target = _Target(loop=True)
+        self.targets.append(target)
+        end = self.nested(body, dict(state))
+        self.targets.pop()
+        looped = _join([end, *target.continues])
+        if looped is not None:
+            self.expr(cond, looped)
+        exits = [] if _is_true(cond) else [looped]
+        return _join([*exits, *target.breaks])
+
+    def switch(self, node: Tree, state: State) -> State | None:
+        self.expr(node.children[0], state)
+        target = _Target(loop=False)
+        self.targets.append(target)
+        self.scopes.append({})
+        current: State | None = None
+        has_default = False
+        for item in node.children[1:]:
+            if isinstance(item, Tree) and item.data in ("case_label", "default_label"):
+                has_default = has_default or item.data == "default_label"
+                current = _join([current, state])  # entered from the switch, or fallen into
+                continue
+            if current is not None:
+                current = self.statement(item, current)
+        self.scopes.pop()
+        self.targets.pop()
+        return _join([current, *target.breaks, None if has_default else state])
+
+    # --- expressions --------------------------------------------------------------------------
+
+    def lookup(self, name: str) -> Var | None:
+        for scope in reversed(self.scopes):
+            if name in scope:
+                return scope[name]
+        return None
+
+    def expr(self, node: Node, state: State) -> None:
+        """Evaluate an expression: check its reads, record its writes, in evaluation order."""
+        if not isinstance(node, Tree):
+            return
+        kind = node.data
+        if kind in ("binary", "sequence"):
+            self.chain(node, state)
+        elif kind in ("variable", "field", "index"):
+            self.read(node, state)
+        elif kind == "assignment":
+            target, op, value = node.children
+            self.indices(target, state)
+            if op != "=":
+                self.read(target, state, indices=False)
+            self.expr(value, state)
+            self.write(target, state)
+        elif kind in ("prefix", "postfix"):
+            target = node.children[1] if kind == "prefix" else node.children[0]
+            self.read(target, state)
+            self.write(target, state)
+        elif kind == "ternary":
+            cond, yes, no = node.children
+            self.expr(cond, state)
+            a, b = dict(state), dict(state)
+            self.expr(yes, a)
+            self.expr(no, b)
+            state.update(_join([a, b]) or {})
+        elif kind == "call":
+            self.call(node, state)
+        else:  # constructors, unary operators, literals
+            for child in node.children:
+                if isinstance(child, Tree) and child.data != "type_specifier":
+                    self.expr(child, state)
+
+    def chain(self, node: Tree, state: State) -> None:
+        """Binary operators and sequences; left-deep chains (`a + b + c + ...`) are walked
+        iteratively. The right side of && and || may not run, so its writes are dropped."""
+        rights: list[tuple[Node, bool]] = []
+        while isinstance(node, Tree) and node.data in ("binary", "sequence"):
+            maybe = node.data == "binary" and str(node.children[1]) in _SHORT_CIRCUIT
+            rights.append((node.children[-1], maybe))
+            node = node.children[0]
+        self.expr(node, state)
+        for right, maybe in reversed(rights):
+            self.expr(right, dict(state) if maybe else state)
+
+    def call(self, node: Tree, state: State) -> None:
+        callee = node.children[0]
+        args: list[Node] = []
+        if len(node.children) > 1 and isinstance(node.children[1], Tree):
+            args = list(node.children[1].children)
+        if isinstance(callee, Tree) and callee.data == "field":
+            if str(callee.children[1]) == "length":
+                return  # `a.length()` reads no element of `a`
+            self.expr(callee, state)
+        is_name = isinstance(callee, Tree) and callee.data == "variable"
+        name = str(callee.children[0]) if is_name else ""  # type: ignore[union-attr]
+        qualifiers = self.qualifiers(name, len(args))
+        written = []
+        for arg, qualifier in zip(args, qualifiers, strict=True):
+            lvalue = _root(arg) is not None
+            if qualifier == "in" or not lvalue:
+                self.expr(arg, state)
+            elif qualifier == "inout":
+                self.read(arg, state)
+                written.append(arg)
+            else:  # out, or a function this file does not define: a write, never a read
+                self.indices(arg, state)
+                written.append(arg)
+        for arg in written:
+            self.write(arg, state)
+
+    def qualifiers(self, name: str, count: int) -> list[str]:
+        """How a call passes each argument: in, out, inout, or ? (unknown function)."""
+        if name in self.signatures:
+            options = [q for q in self.signatures[name] if len(q) == count]
+            if not options:
+                return ["?"] * count
+            # overloads that pass a position differently leave it unknown
+            return [options[0][i] if len({q[i] for q in options}) == 1 else "?"
+                    for i in range(count)]  # fmt: skip
+        if name in _BUILTIN_QUALIFIERS and count == len(_BUILTIN_QUALIFIERS[name]):
+            return list(_BUILTIN_QUALIFIERS[name])
+        if name in BUILTIN_FUNCTIONS:
+            return ["in"] * count
+        return ["?"] * count  # defined elsewhere (another snippet, the Common tab)
+
+    def access(self, node: Node) -> tuple[Var | None, tuple[int, ...] | None]:
+        """The tracked variable an lvalue-like expression reads or writes, and which of its
+        components (None: the whole variable, or components we cannot tell)."""
+        path: list[Tree] = []
+        while isinstance(node, Tree) and node.data in ("field", "index"):
+            path.append(node)
+            node = node.children[0]
+        if not (isinstance(node, Tree) and node.data == "variable"):
+            return None, None
+        var = self.lookup(str(node.children[0]))
+        if var is None:
+            return None, None
+        comps: tuple[int, ...] | None = tuple(range(var.width)) if var.width > 1 else None
+        for step in reversed(path):
+            if comps is None:
+                break
+            if step.data == "field":
+                picked = swizzle(str(step.children[1]), len(comps))
+                comps = None if picked is None else tuple(comps[i] for i in picked)
+            else:
+                index = _int_value(step.children[1])
+                in_range = index is not None and 0 <= index < len(comps) and len(comps) > 1
+                comps = (comps[index],) if in_range else None  # type: ignore[index]
+        return var, comps
+
+    def read(self, node: Node, state: State, indices: bool = True) -> None:
+        if indices:
+            self.indices(node, state)
+        var, comps = self.access(node)
+        if var is None:
+            return  # not tracked; `indices` evaluated whatever the chain starts from (`f().x`)
+        mask = var.full if comps is None else sum(1 << c for c in set(comps))
+        missing = mask & ~state.get(id(var), var.full)
+        if missing and id(node) not in self.reported:
+            self.reported.add(id(node))
+            assert self.flow is not None
+            self.flow.reads.append(Read(var, node, missing))
+        if id(var) in state:
+            state[id(var)] |= mask  # report a variable once per path, not at every later read
+
+    def write(self, node: Node, state: State) -> None:
+        var, comps = self.access(node)
+        if var is not None and id(var) in state:
+            # a write the path cannot follow (`a[i] = `, `s.m = `) counts as a whole write
+            state[id(var)] |= var.full if comps is None else sum(1 << c for c in set(comps))
+
+    def indices(self, node: Node, state: State) -> None:
+        """Evaluate the index expressions inside an lvalue (`a[i + 1].x`): they are reads."""
+        while isinstance(node, Tree) and node.data in ("field", "index"):
+            if node.data == "index":
+                self.expr(node.children[1], state)
+            node = node.children[0]
+        if isinstance(node, Tree) and node.data not in ("variable",):
+            self.expr(node, state)
+
+
+def _root(node: Node) -> Tree | None:
+    """The variable at the root of an lvalue chain, or None if it is not an lvalue."""
+    while isinstance(node, Tree) and node.data in ("field", "index"):
+        node = node.children[0]
+    return node if isinstance(node, Tree) and node.data == "variable" else None
+
+
+def _is_true(node: Node) -> bool:
+    return isinstance(node, Tree) and node.data == "bool_literal" and node.children[0] == "true"
+
+
+def _start_pos(node: Node) -> int | None:
+    if isinstance(node, Token):
+        return node.start_pos
+    return None if node.meta.empty else node.meta.start_pos
+
+
+def _loop_start(init: Node) -> tuple[str, int] | None:
+    """(counter, first value) of `int i = A;` or `i = A;`."""
+    if not isinstance(init, Tree):
+        return None
+    if init.data == "declaration_statement":
+        decl = init.children[0]
+        single = isinstance(decl, Tree) and len(decl.children) == 2
+        if single and decl.data == "variable_declaration":  # type: ignore[union-attr]
+            declarator = decl.children[1]  # type: ignore[union-attr]
+            if isinstance(declarator, Tree) and len(declarator.children) == 2:
+                value = _int_value(declarator.children[1])
+                if value is not None:
+                    return str(declarator.children[0]), value
+    if init.data == "expression_statement":
+        expr = init.children[0]
+        if isinstance(expr, Tree) and expr.data == "assignment" and expr.children[1] == "=":
+            target, value = expr.children[0], _int_value(expr.children[2])
+            if isinstance(target, Tree) and target.data == "variable" and value is not None:
+                return str(target.children[0]), value
+    return None
