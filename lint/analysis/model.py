@@ -1,0 +1,1085 @@
+"""The semantic model of a parsed file: the type, value range and unit-length of expressions.
+
+One forward pass per function, in source order, keeps an environment of the variables in scope
+(type, range, whether a unit vector, and which builtin produced the value). Each expression is
+remembered with the environment it is evaluated in, so `range_of(node)` later evaluates it
+there. Branches are joined by the hull; loops widen the variables they assign to unknown; a
+condition narrows the variable it compares (`if (x > 0.0)`, and after `if (x < 0.0) return;`).
+
+Facts about parameters come from the call sites: a second pass gives each parameter the hull
+of the arguments passed to it in the first pass (functions never called keep unknown
+parameters). Unknown is (-inf, inf) and never yields a finding, so whatever the model cannot
+follow makes it quieter, never noisier.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+
+from lark import Token, Tree
+
+from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+from ..context import walk
+from . import types as T
+from .ranges import (
+    BOOL,
+    HALF_PI,
+    INF,
+    NONNEG,
+    UNIT,
+    UNKNOWN,
+    ZERO_ONE,
+    Interval,
+    atan_range,
+    cos_range,
+    exp_range,
+    floor_like,
+    fract_range,
+    hull_all,
+    inversesqrt_range,
+    length_bound,
+    log_range,
+    mix_range,
+    mod_range,
+    pow_range,
+    sign_range,
+    sin_range,
+    sqrt_range,
+    step_range,
+    tan_range,
+)
+
+Node = Tree | Token
+Env = Mapping[str, "Value"]
+
+
+@dataclass(frozen=True)
+class Value:
+    """What the model knows about a value: GLSL type, range (hull of the components), whether
+    it is a unit vector, and its origin: the builtin that produced it ("dot", "length",
+    "cross" ...) or "sum"/"difference" of two unit vectors."""
+
+    type: str | None = None
+    range: Interval = UNKNOWN
+    unit: bool = False
+    origin: str | None = None
+
+    def join(self, other: Value) -> Value:
+        return Value(
+            self.type if self.type == other.type else None,
+            self.range.hull(other.range),
+            self.unit and other.unit,
+            self.origin if self.origin == other.origin else None,
+        )
+
+    def unknown(self) -> Value:
+        """The same variable, nothing known about its value."""
+        return Value(self.type)
+
+
+# ShaderToy's uniforms: times and counts never go below zero, a resolution is at least a pixel.
+SHADERTOY_RANGES: dict[str, Interval] = {
+    "iResolution": Interval(1.0, INF),
+    "iTime": NONNEG,
+    "iTimeDelta": NONNEG,
+    "iFrame": NONNEG,
+    "iFrameRate": NONNEG,
+    "iDate": NONNEG,
+    "iChannelTime": NONNEG,
+    "iChannelResolution": NONNEG,
+    "iSampleRate": NONNEG,
+    "gl_FragCoord": NONNEG,
+}
+_COMPARE = {"<", ">", "<=", ">="}
+_NEGATE = {"<": ">=", "<=": ">", ">": "<=", ">=": "<"}
+_FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
+_ASSIGN_OPS = {"+=": "+", "-=": "-", "*=": "*", "/=": "/"}
+
+
+# --- builtin ranges: a table of interval functions, by name and arity ------------------------
+
+_RANGE_1: dict[str, Callable[[Interval], Interval]] = {
+    "sin": sin_range,
+    "cos": cos_range,
+    "tan": tan_range,
+    "asin": lambda x: Interval(-HALF_PI, HALF_PI),
+    "acos": lambda x: Interval(0.0, 2 * HALF_PI),
+    "atan": lambda x: atan_range(x, None),
+    "radians": lambda x: x.scale(HALF_PI / 90),
+    "degrees": lambda x: x.scale(90 / HALF_PI),
+    "sinh": lambda x: x.monotone(math.sinh),
+    "cosh": lambda x: x.abs().monotone(math.cosh),
+    "tanh": lambda x: UNIT,
+    "acosh": lambda x: NONNEG,
+    "exp": exp_range,
+    "exp2": lambda x: exp_range(x, 2.0),
+    "log": log_range,
+    "log2": lambda x: log_range(x, 2.0),
+    "sqrt": sqrt_range,
+    "inversesqrt": inversesqrt_range,
+    "abs": Interval.abs,
+    "sign": sign_range,
+    "floor": floor_like(math.floor),
+    "ceil": floor_like(math.ceil),
+    "trunc": floor_like(math.trunc),
+    "round": lambda x: floor_like(math.floor)(x).hull(floor_like(math.ceil)(x)),
+    "roundEven": lambda x: floor_like(math.floor)(x).hull(floor_like(math.ceil)(x)),
+    "fract": fract_range,
+    "fwidth": lambda x: NONNEG,
+}
+_RANGE_2: dict[str, Callable[[Interval, Interval], Interval]] = {
+    "pow": pow_range,
+    "mod": mod_range,
+    "min": Interval.min,
+    "max": Interval.max,
+    "step": step_range,
+    "atan": atan_range,
+}
+_RANGE_3: dict[str, Callable[[Interval, Interval, Interval], Interval]] = {
+    "clamp": Interval.clamp,
+    "mix": mix_range,
+    "smoothstep": lambda a, b, x: ZERO_ONE,
+}
+
+
+# --- tree helpers -------------------------------------------------------------------------
+
+
+def is_tree(node: object, *kinds: str) -> bool:
+    return isinstance(node, Tree) and (not kinds or node.data in kinds)
+
+
+def callee_name(call: Tree) -> str | None:
+    """`f` for a call `f(...)`; None for a method call such as `v.length()`."""
+    head = call.children[0]
+    return str(head.children[0]) if is_tree(head, "variable") else None
+
+
+def call_args(call: Tree) -> list[Node]:
+    """The argument expressions of a call or constructor."""
+    for child in call.children[1:]:
+        if is_tree(child, "arguments"):
+            return list(child.children)
+    return []
+
+
+def root_variable(node: Node) -> str | None:
+    """`v` for `v`, `v.x`, `v[i].y`: the variable an lvalue writes."""
+    while is_tree(node, "field", "index"):
+        node = node.children[0]  # type: ignore[union-attr]
+    return str(node.children[0]) if is_tree(node, "variable") else None  # type: ignore[union-attr]
+
+
+def spec_text(spec: Tree) -> str:
+    """`vec3`, `float[3]` or a struct name for a type_specifier."""
+    head = spec.children[0]
+    if is_tree(head, "struct_specifier"):
+        name = next((str(c) for c in head.children if isinstance(c, Token)), "struct")
+    else:
+        name = str(head)
+    arrays = [c for c in spec.children[1:] if is_tree(c, "array_specifier")]
+    return name + "".join(_array_text(a) for a in arrays)
+
+
+def _array_text(spec: Tree) -> str:
+    sizes = [_literal_text(c) for c in spec.children]
+    return "".join(f"[{s}]" for s in sizes) if sizes else "[]"
+
+
+def _literal_text(node: Node) -> str:
+    if is_tree(node, "int_literal"):
+        return str(node.children[0])  # type: ignore[union-attr]
+    return ""
+
+
+def same_expression(a: Node, b: Node) -> bool:
+    """Whether two expressions are written alike and have no side effects (so x*x >= 0)."""
+    if a != b:
+        return False
+    return not any(
+        t.data in ("assignment", "prefix", "postfix") or (t.data == "call" and
+                                                         callee_name(t) not in BUILTIN_FUNCTIONS)
+        for t in walk(a)
+    )  # fmt: skip
+
+
+def int_value(text: str) -> int | None:
+    text = text.rstrip("uU")
+    try:
+        if text.lower().startswith("0x"):
+            return int(text, 16)
+        if len(text) > 1 and text.startswith("0"):
+            return int(text, 8)
+        return int(text)
+    except ValueError:
+        return None
+
+
+# --- the model ----------------------------------------------------------------------------
+
+
+@dataclass
+class Function:
+    name: str
+    node: Tree
+    return_type: str
+    params: list[tuple[str, str, str]]  # (qualifier, type, name)
+    result: Value | None = None  # the join of what its return statements give
+
+
+@dataclass
+class _Loop:
+    switch: bool = False  # a switch takes `break` but not `continue`
+    breaks: list[Scopes] = field(default_factory=list)
+    continues: list[Scopes] = field(default_factory=list)
+
+
+class Scopes:
+    """Variables in scope during the forward pass: a stack of frames, and whether the code
+    here is reachable (after return/break/continue/discard it is not)."""
+
+    def __init__(self, frames: list[dict[str, Value]] | None = None, dead: bool = False):
+        self.frames = frames if frames is not None else [{}]
+        self.dead = dead
+
+    def copy(self) -> Scopes:
+        return Scopes([dict(f) for f in self.frames], self.dead)
+
+    def flat(self) -> dict[str, Value]:
+        out: dict[str, Value] = {}
+        for frame in self.frames:
+            out.update(frame)
+        return out
+
+    def push(self) -> None:
+        self.frames.append({})
+
+    def pop(self) -> None:
+        self.frames.pop()
+
+    def lookup(self, name: str) -> Value | None:
+        for frame in reversed(self.frames):
+            if name in frame:
+                return frame[name]
+        return None
+
+    def declare(self, name: str, value: Value) -> None:
+        self.frames[-1][name] = value
+
+    def assign(self, name: str, value: Value) -> None:
+        for frame in reversed(self.frames):
+            if name in frame:
+                frame[name] = value
+                return
+
+    def become(self, other: Scopes) -> None:
+        self.frames, self.dead = other.frames, other.dead
+
+
+def join_scopes(items: Sequence[Scopes]) -> Scopes:
+    """The state after control flow merges: per variable, the join of every live path. Frames
+    deeper than the shallowest path (blocks left by `break`) are out of scope there."""
+    live = [s for s in items if not s.dead]
+    if not live:
+        out = items[0].copy()
+        out.dead = True
+        return out
+    depth = min(len(s.frames) for s in live)
+    frames: list[dict[str, Value]] = []
+    for i in range(depth):
+        first = live[0].frames[i]
+        frame: dict[str, Value] = {}
+        for name, value in first.items():
+            for other in live[1:]:
+                if name not in other.frames[i]:
+                    break
+                value = value.join(other.frames[i][name])
+            else:
+                frame[name] = value
+        frames.append(frame)
+    return Scopes(frames)
+
+
+def widen(scopes: Scopes, names: set[str]) -> Scopes:
+    out = scopes.copy()
+    for frame in out.frames:
+        for name in names & frame.keys():
+            v = frame[name]
+            frame[name] = Value(v.type, UNKNOWN, v.unit, v.origin)
+    return out
+
+
+class Model:
+    """Types, ranges and unit-length facts for the expressions of one parsed file."""
+
+    def __init__(self, tree: Tree) -> None:
+        self.tree = tree
+        self.structs: dict[str, dict[str, str]] = {}
+        self.functions: dict[str, list[Function]] = {}
+        self._env_of: dict[int, Env] = {}
+        self._memo: dict[int, Value] = {}
+        self._globals = Scopes([dict(_shadertoy_values())])
+        self._params: dict[tuple[str, int], list[Value]] = {}  # call-site facts
+        self._collect_structs()
+        self._written = self._written_names()
+        self._analyse()
+
+    # --- the API rules use -----------------------------------------------------------------
+
+    def value_of(self, expr: Node) -> Value:
+        key = id(expr)
+        if key not in self._memo:
+            env = self._env_of.get(key, self._global_env)
+            self._memo[key] = Evaluator(self, env, self._memo).eval(expr)
+        return self._memo[key]
+
+    def type_of(self, expr: Node) -> str | None:
+        """The GLSL type of an expression ("float", "vec3", a struct name), None if unknown."""
+        return self.value_of(expr).type
+
+    def range_of(self, expr: Node) -> Interval:
+        """A conservative range (the hull of the components for a vector)."""
+        return self.value_of(expr).range
+
+    def is_unit(self, expr: Node) -> bool:
+        """Whether the expression is known to be a unit-length vector."""
+        return self.value_of(expr).unit
+
+    def origin_of(self, expr: Node) -> str | None:
+        """The builtin that produced the value ("dot", "length", "cross" ...), following
+        variables assigned from it; "sum"/"difference" for two unit vectors added."""
+        return self.value_of(expr).origin
+
+    def function(self, name: str, arity: int) -> Function | None:
+        for fn in self.functions.get(name, []):
+            if len(fn.params) == arity:
+                return fn
+        return None
+
+    # --- the analysis ----------------------------------------------------------------------
+
+    def _analyse(self) -> None:
+        self._global_env: Env = self._globals.flat()
+        for rnd in range(2):  # the second round knows the arguments each parameter gets
+            self._globals = Scopes([dict(_shadertoy_values())])
+            self.functions = {}
+            self._collecting = rnd == 0
+            for node in self.tree.children:
+                if is_tree(node, "function_definition"):
+                    self._function(node)  # type: ignore[arg-type]
+                elif is_tree(node, "variable_declaration"):
+                    self._declaration(node, self._globals, is_global=True)  # type: ignore[arg-type]
+            self._global_env = self._globals.flat()
+        self._memo.clear()
+
+    def _collect_structs(self) -> None:
+        for node in walk(self.tree):
+            if node.data != "struct_specifier":
+                continue
+            name = next((str(c) for c in node.children if isinstance(c, Token)), None)
+            members: dict[str, str] = {}
+            for member in node.children:
+                if not is_tree(member, "struct_member"):
+                    continue
+                spec = next(c for c in member.children if is_tree(c, "type_specifier"))
+                for decl in member.children:
+                    if is_tree(decl, "struct_declarator"):
+                        arrays = [_array_text(a) for a in decl.children[1:]]
+                        members[str(decl.children[0])] = spec_text(spec) + "".join(arrays)
+            if name:
+                self.structs[name] = members
+
+    def _written_names(self) -> set[str]:
+        """Names assigned anywhere in a function: such globals are unknown in every function."""
+        names: set[str] = set()
+        for node in walk(self.tree):
+            for target in _written_targets(node, self):
+                if (name := root_variable(target)) is not None:
+                    names.add(name)
+        return names
+
+    # --- declarations ----------------------------------------------------------------------
+
+    def _function(self, node: Tree) -> None:
+        proto, body = node.children
+        full_type = proto.children[0]
+        name = str(proto.children[1])
+        plist = proto.children[2] if len(proto.children) > 2 else None
+        params = [_param(p) for p in plist.children] if is_tree(plist, "parameter_list") else []
+        params = [p for p in params if p[1] != "void" or p[2]]
+        spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
+        fn = Function(name, node, spec_text(spec), params)
+        scopes = Scopes([self._globals.flat()])
+        facts = None if self._collecting else self._params.get((name, len(params)))
+        scopes.push()
+        for i, (qualifier, ptype, pname) in enumerate(params):
+            if not pname:
+                continue
+            value = Value(ptype)
+            if name == "mainImage" and pname == "fragCoord":
+                value = Value(ptype, NONNEG)
+            elif facts is not None and "out" not in qualifier.split():
+                value = replace(facts[i], type=ptype)
+            scopes.declare(pname, value)
+        # visible to the body's own (illegal) recursion and to later functions
+        self.functions.setdefault(name, []).append(fn)
+        flow = _Flow(self, fn)
+        flow.statement(body, scopes)
+        fn.result = flow.result()
+
+    def _declaration(self, node: Tree, scopes: Scopes, is_global: bool = False) -> None:
+        full_type = node.children[0]
+        spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
+        base = spec_text(spec)  # type: ignore[arg-type]
+        const = any(
+            is_tree(q, "type_qualifier") and "const" in (str(t) for t in q.children)
+            for q in full_type.children
+        )
+        for decl in node.children[1:]:
+            if not is_tree(decl, "declarator"):
+                continue
+            name = str(decl.children[0])
+            arrays = [_array_text(c) for c in decl.children[1:] if is_tree(c, "array_specifier")]
+            dtype = base + "".join(arrays)
+            init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
+            value = Value(dtype)
+            if init is not None:
+                env = scopes.flat()
+                self.record(init, env)
+                got = Evaluator(self, env).eval(init)
+                value = Value(dtype, got.range, got.unit, got.origin)
+                if is_global and not const and name in self._written:
+                    value = Value(dtype)  # some function assigns it
+            scopes.declare(name, value)
+
+    # --- remembering where each expression is evaluated ------------------------------------
+
+    def record(self, expr: Node, env: Env) -> None:
+        """Remember the environment of every node of `expr`; branches of `?:`, `&&` and `||`
+        get the environment narrowed by the condition. Also gathers call-site facts."""
+        stack: list[tuple[Node, Env]] = [(expr, env)]
+        while stack:
+            node, here = stack.pop()
+            if not isinstance(node, Tree):
+                continue
+            self._env_of[id(node)] = here
+            kids = node.children
+            if node.data == "ternary":
+                stack += [(kids[0], here), (kids[1], self.refine(here, kids[0], True)),
+                          (kids[2], self.refine(here, kids[0], False))]  # fmt: skip
+                continue
+            if node.data == "binary" and str(kids[1]) in ("&&", "||"):
+                truth = str(kids[1]) == "&&"
+                stack += [(kids[0], here), (kids[2], self.refine(here, kids[0], truth))]
+                continue
+            if node.data == "call" and self._collecting:
+                self._call_site(node, here)
+            stack.extend((child, here) for child in kids)
+
+    def _call_site(self, call: Tree, env: Env) -> None:
+        name = callee_name(call)
+        args = call_args(call)
+        if name is None or name in BUILTIN_FUNCTIONS or self.function(name, len(args)) is None:
+            return
+        ev = Evaluator(self, env)
+        values = [ev.eval(a) for a in args]
+        key = (name, len(args))
+        old = self._params.get(key)
+        self._params[key] = (
+            values if old is None else [a.join(b) for a, b in zip(old, values, strict=True)]
+        )
+
+    def refine(self, env: Env, cond: Node, truth: bool) -> Env:
+        """The environment where `cond` is `truth`: comparisons of a scalar variable with
+        anything narrow that variable."""
+        if is_tree(cond, "unary") and str(cond.children[0]) == "!":  # type: ignore[union-attr]
+            return self.refine(env, cond.children[1], not truth)  # type: ignore[union-attr]
+        if not is_tree(cond, "binary"):
+            return env
+        left, op_token, right = cond.children  # type: ignore[union-attr]
+        op = str(op_token)
+        if (op == "&&" and truth) or (op == "||" and not truth):
+            return self.refine(self.refine(env, left, truth), right, truth)
+        if op not in _COMPARE:
+            return env
+        if not truth:
+            op = _NEGATE[op]
+        env = self._bound(env, left, op, right)
+        return self._bound(env, right, _FLIP[op], left)
+
+    def _bound(self, env: Env, target: Node, op: str, other: Node) -> Env:
+        if not is_tree(target, "variable"):
+            return env
+        name = str(target.children[0])  # type: ignore[union-attr]
+        old = env.get(name)
+        if old is None or not T.is_scalar(old.type):
+            return env
+        limit = Evaluator(self, env).eval(other).range
+        bound = Interval(-INF, limit.hi) if op in ("<", "<=") else Interval(limit.lo, INF)
+        narrowed = replace(old, range=old.range.meet(bound))
+        return {**env, name: narrowed} if narrowed != old else env
+
+
+def _shadertoy_values() -> dict[str, Value]:
+    return {
+        name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN))
+        for name, ty in T.SHADERTOY_TYPES.items()
+    }
+
+
+def _param(node: Tree) -> tuple[str, str, str]:
+    qualifier = " ".join(
+        str(t) for q in node.children if is_tree(q, "type_qualifier") for t in q.children
+    )
+    spec = next(c for c in node.children if is_tree(c, "type_specifier"))
+    name = next((str(c) for c in node.children if isinstance(c, Token)), "")
+    arrays = [_array_text(c) for c in node.children if is_tree(c, "array_specifier")]
+    return qualifier, spec_text(spec) + "".join(arrays), name  # type: ignore[arg-type]
+
+
+def _written_targets(node: Tree, model: Model | None) -> Iterable[Node]:
+    """Lvalues one node writes: an assignment's target, `x++`, out arguments of a call."""
+    if node.data == "assignment" or node.data == "postfix":
+        yield node.children[0]
+    elif node.data == "prefix":
+        yield node.children[1]
+    elif node.data == "call":
+        yield from _out_arguments(node, model)
+
+
+def _out_arguments(call: Tree, model: Model | None) -> Iterable[Node]:
+    name = callee_name(call)
+    args = call_args(call)
+    if name == "modf" and len(args) == 2:
+        yield args[1]
+        return
+    if name is None or name in BUILTIN_FUNCTIONS:
+        return
+    fns = model.functions.get(name, []) if model is not None else []
+    if model is not None and not fns:
+        fns = []
+    if not fns:  # not analysed yet (or unknown): any argument may be written
+        yield from (a for a in args if root_variable(a) is not None)
+        return
+    for fn in fns:
+        if len(fn.params) != len(args):
+            continue
+        for (qualifier, _, _), arg in zip(fn.params, args, strict=True):
+            if "out" in qualifier.split() or "inout" in qualifier.split():
+                yield arg
+
+
+class _Flow:
+    """The forward pass over one function's statements."""
+
+    def __init__(self, model: Model, fn: Function) -> None:
+        self.model = model
+        self.fn = fn
+        self.loops: list[_Loop] = []
+        self.returns: list[Value] = []
+
+    # --- statements ------------------------------------------------------------------------
+
+    def block(self, statements: Iterable[Node], scopes: Scopes) -> None:
+        # iterative over the list: long functions must not deepen the stack
+        for stmt in statements:
+            self.statement(stmt, scopes)
+
+    def result(self) -> Value | None:
+        """What the function returns: the join of its return statements."""
+        if not self.returns:
+            return None
+        result = self.returns[0]
+        for r in self.returns[1:]:
+            result = result.join(r)
+        return replace(result, type=self.fn.return_type)
+
+    def statement(self, stmt: Node, scopes: Scopes) -> None:
+        if not isinstance(stmt, Tree):
+            return
+        handler = getattr(self, "_" + stmt.data, None)
+        if handler is not None:
+            handler(stmt, scopes)
+
+    def _compound_statement(self, node: Tree, scopes: Scopes) -> None:
+        scopes.push()
+        self.block(node.children, scopes)
+        scopes.pop()
+
+    def _declaration_statement(self, node: Tree, scopes: Scopes) -> None:
+        decl = node.children[0]
+        if is_tree(decl, "variable_declaration"):
+            self.model._declaration(decl, scopes)  # type: ignore[arg-type]
+            for d in decl.children[1:]:  # type: ignore[union-attr]
+                for init in d.children[1:] if is_tree(d, "declarator") else ():  # type: ignore
+                    self.effects(init, scopes, nested_only=True)
+
+    def _expression_statement(self, node: Tree, scopes: Scopes) -> None:
+        self.expression(node.children[0], scopes)
+
+    def _jump_statement(self, node: Tree, scopes: Scopes) -> None:
+        kind = str(node.children[0])
+        if kind == "return" and len(node.children) > 1:
+            expr = node.children[1]
+            self.expression(expr, scopes)
+            if not scopes.dead:
+                self.returns.append(Evaluator(self.model, scopes.flat()).eval(expr))
+        elif kind == "break" and self.loops:
+            self.loops[-1].breaks.append(scopes.copy())
+        elif kind == "continue":
+            loop = next((lp for lp in reversed(self.loops) if not lp.switch), None)
+            if loop is not None:
+                loop.continues.append(scopes.copy())
+        scopes.dead = True
+
+    def _if_statement(self, node: Tree, scopes: Scopes) -> None:
+        cond, then = node.children[0], node.children[1]
+        other = node.children[2] if len(node.children) > 2 else None
+        self.expression(cond, scopes)
+        branches = []
+        for branch, truth in ((then, True), (other, False)):
+            state = self.narrowed(scopes, cond, truth)
+            if branch is not None:
+                self.statement(branch, state)
+            branches.append(state)
+        scopes.become(join_scopes(branches))
+
+    def _for_statement(self, node: Tree, scopes: Scopes) -> None:
+        init, *middle, body = node.children
+        cond = update = None
+        if len(middle) == 2:
+            cond, update = middle
+        elif len(middle) == 1:  # `for (;; i++)` or `for (; c;)`: positions do not say which
+            is_cond = is_tree(middle[0], "binary", "unary", "variable", "bool_literal", "call")
+            cond, update = (middle[0], None) if is_cond else (None, middle[0])
+        scopes.push()
+        self.statement(init, scopes)
+        self.loop(scopes, cond, update, body)
+        scopes.pop()
+
+    def _while_statement(self, node: Tree, scopes: Scopes) -> None:
+        cond, body = node.children
+        scopes.push()
+        if is_tree(cond, "condition_declaration"):
+            spec = next(c for c in cond.children[0].children if is_tree(c, "type_specifier"))
+            scopes.declare(str(cond.children[1]), Value(spec_text(spec)))
+            cond = None
+        self.loop(scopes, cond, None, body)
+        scopes.pop()
+
+    def _do_statement(self, node: Tree, scopes: Scopes) -> None:
+        body, cond = node.children
+        self.loop(scopes, cond, None, body, test_first=False)
+
+    def _switch_statement(self, node: Tree, scopes: Scopes) -> None:
+        selector, *body = node.children
+        self.expression(selector, scopes)
+        entry = scopes.copy()
+        entry.push()
+        current = entry.copy()
+        current.dead = True  # nothing before the first label runs
+        self.loops.append(_Loop(switch=True))
+        has_default = False
+        for stmt in body:
+            if is_tree(stmt, "case_label", "default_label"):
+                has_default |= stmt.data == "default_label"  # type: ignore[union-attr]
+                current = join_scopes([current, entry])  # jumped to, or fallen into
+                continue
+            self.statement(stmt, current)
+        exits = self.loops.pop()
+        out = join_scopes([current, *exits.breaks] + ([] if has_default else [entry]))
+        out.frames = out.frames[: len(scopes.frames)]
+        scopes.become(out)
+
+    def loop(self, scopes: Scopes, cond: Node | None, update: Node | None, body: Node,
+             test_first: bool = True) -> None:  # fmt: skip
+        """Widen what the loop assigns, run the body until its facts stop changing, then
+        leave with the condition false (or through a break)."""
+        assigned = {
+            name
+            for part in (cond, update, body)
+            if isinstance(part, Tree)
+            for n in walk(part)
+            for t in _written_targets(n, self.model)
+            if (name := root_variable(t)) is not None
+        }
+        entry = widen(scopes, assigned)
+        state = entry
+        exits = _Loop()
+        for _ in range(4):
+            self.loops.append(_Loop())
+            inner = state.copy()
+            if cond is not None and test_first:
+                self.expression(cond, inner)
+                inner = self.narrowed(inner, cond, True)
+            self.statement(body, inner)
+            exits = self.loops.pop()
+            inner = join_scopes([inner, *exits.continues])
+            if update is not None:
+                self.expression(update, inner)
+            if cond is not None and not test_first:
+                self.expression(cond, inner)
+            new_state = widen(join_scopes([entry, inner]), assigned)
+            if new_state.flat() == state.flat():
+                break
+            state = new_state
+        leave = self.narrowed(state, cond, False) if cond is not None else state.copy()
+        if cond is None:
+            leave.dead = True  # `for (;;)` ends only through a break
+        scopes.become(join_scopes([leave, *exits.breaks]))
+
+    def narrowed(self, scopes: Scopes, cond: Node | None, truth: bool) -> Scopes:
+        out = scopes.copy()
+        if cond is None or out.dead:
+            return out
+        env = out.flat()
+        refined = self.model.refine(env, cond, truth)
+        if refined is not env:
+            for name, value in refined.items():
+                if env.get(name) is not value:
+                    out.assign(name, value)
+        return out
+
+    # --- expressions -----------------------------------------------------------------------
+
+    def expression(self, expr: Node, scopes: Scopes) -> None:
+        self.model.record(expr, scopes.flat())
+        self.effects(expr, scopes)
+
+    def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False) -> None:
+        """Apply what an expression writes: top-level assignments exactly (`x = e`, `x += e`,
+        a sequence of them), any other write makes its variable unknown."""
+        if not isinstance(expr, Tree):
+            return
+        if not nested_only and expr.data == "sequence":
+            for part in expr.children:
+                self.effects(part, scopes)
+            return
+        if not nested_only and expr.data == "assignment":
+            target, op, rhs = expr.children
+            self.effects(rhs, scopes)
+            self._assign(target, str(op), expr, scopes)
+            return
+        for node in walk(expr):
+            for target in _written_targets(node, self.model):
+                name = root_variable(target)
+                old = scopes.lookup(name) if name else None
+                if name and old is not None:
+                    scopes.assign(name, old.unknown())
+
+    def _assign(self, target: Node, op: str, expr: Tree, scopes: Scopes) -> None:
+        name = root_variable(target)
+        old = scopes.lookup(name) if name else None
+        if name is None or old is None:
+            return
+        got = Evaluator(self.model, scopes.flat()).eval(expr)
+        if op not in ("=", *_ASSIGN_OPS):
+            scopes.assign(name, old.unknown())
+        elif is_tree(target, "variable"):
+            scopes.assign(name, Value(old.type, got.range, got.unit, got.origin))
+        else:  # one component or element: each is now the old value or the new one
+            scopes.assign(name, Value(old.type, old.range.hull(got.range)))
+
+
+class Evaluator:
+    """Evaluates an expression in an environment (plain recursion on expressions: the runner
+    turns a RecursionError on absurdly deep input into finding C006)."""
+
+    def __init__(self, model: Model, env: Env, memo: dict[int, Value] | None = None) -> None:
+        self.model = model
+        self.env = env
+        self.memo = memo
+
+    def eval(self, node: Node) -> Value:
+        if not isinstance(node, Tree):
+            return Value()
+        if self.memo is not None:
+            key = id(node)
+            if key in self.memo:
+                return self.memo[key]
+        handler = getattr(self, "_" + node.data, None)
+        value = handler(node) if handler is not None else Value()
+        if self.memo is not None:
+            self.memo[id(node)] = value
+        return value
+
+    def _sub(self, node: Node) -> Value:
+        """A child evaluated where the model recorded it (narrowed branches), if it did."""
+        if self.memo is not None and isinstance(node, Tree):
+            return self.model.value_of(node)
+        return self.eval(node)
+
+    # --- leaves ----------------------------------------------------------------------------
+
+    def _float_literal(self, node: Tree) -> Value:
+        text = str(node.children[0]).rstrip("fF")
+        return Value("float", Interval.point(float(text)))
+
+    def _int_literal(self, node: Tree) -> Value:
+        text = str(node.children[0])
+        n = int_value(text)
+        ty = "uint" if text[-1] in "uU" else "int"
+        return Value(ty, Interval.point(float(n)) if n is not None else UNKNOWN)
+
+    def _bool_literal(self, node: Tree) -> Value:
+        return Value("bool", Interval.point(1.0 if str(node.children[0]) == "true" else 0.0))
+
+    def _variable(self, node: Tree) -> Value:
+        return self.env.get(str(node.children[0])) or Value()
+
+    # --- operators -------------------------------------------------------------------------
+
+    def _unary(self, node: Tree) -> Value:
+        op, operand = str(node.children[0]), self._sub(node.children[1])
+        if op == "-":
+            return Value(operand.type, -operand.range, operand.unit, operand.origin)
+        if op == "+":
+            return operand
+        if op == "!":
+            return Value("bool", BOOL)
+        return Value(operand.type)
+
+    def _prefix(self, node: Tree) -> Value:
+        return Value(self._sub(node.children[1]).type)
+
+    def _postfix(self, node: Tree) -> Value:
+        return Value(self._sub(node.children[0]).type)
+
+    def _binary(self, node: Tree) -> Value:
+        left, op_token, right = node.children
+        op = str(op_token)
+        a, b = self._sub(left), self._sub(right)
+        ty = T.binary(op, a.type, b.type)
+        if ty == "bool":
+            return Value("bool", BOOL)
+        both_units = a.unit and b.unit and T.is_vector(a.type)
+        if op == "+":
+            return Value(ty, a.range + b.range, origin="sum" if both_units else None)
+        if op == "-":
+            return Value(ty, a.range - b.range, origin="difference" if both_units else None)
+        if op == "*":
+            return Value(ty, self._product(a, b, left, right))
+        if op == "/":
+            return Value(ty, a.range / b.range)
+        if op == "%" and a.range.lo >= 0 and b.range.lo > 0:
+            return Value(ty, Interval(0.0, b.range.hi))
+        return Value(ty)
+
+    def _product(self, a: Value, b: Value, left: Node, right: Node) -> Interval:
+        lm, rm = T.matrix_shape(a.type), T.matrix_shape(b.type)
+        if (lm or rm) and not (T.is_scalar(a.type) or T.is_scalar(b.type)):
+            inner = lm[0] if lm else (rm[1] if rm else 0)  # type: ignore[index]
+            return _sum_of(a.range * b.range, inner)  # a row times a column
+        if same_expression(left, right):
+            return a.range.square()
+        return a.range * b.range
+
+    def _ternary(self, node: Tree) -> Value:
+        cond, then, other = node.children
+        if self.memo is not None:
+            a, b = self._sub(then), self._sub(other)
+        else:
+            a = Evaluator(self.model, self.model.refine(self.env, cond, True)).eval(then)
+            b = Evaluator(self.model, self.model.refine(self.env, cond, False)).eval(other)
+        value = a.join(b)
+        return value if value.type else replace(value, type=a.type or b.type)
+
+    def _assignment(self, node: Tree) -> Value:
+        target, op_token, rhs = node.children
+        op = str(op_token)
+        old, new = self._sub(target), self._sub(rhs)
+        if op == "=":
+            return Value(old.type or new.type, new.range, new.unit, new.origin)
+        if op in _ASSIGN_OPS:
+            combine = {"+": Interval.__add__, "-": Interval.__sub__, "*": Interval.__mul__,
+                       "/": Interval.__truediv__}[_ASSIGN_OPS[op]]  # fmt: skip
+            if T.matrix_shape(old.type) or T.matrix_shape(new.type):
+                return Value(old.type)
+            return Value(old.type, combine(old.range, new.range))
+        return Value(old.type)
+
+    def _sequence(self, node: Tree) -> Value:
+        for child in node.children[:-1]:
+            self._sub(child)
+        return self._sub(node.children[-1])
+
+    # --- access ----------------------------------------------------------------------------
+
+    def _field(self, node: Tree) -> Value:
+        base, name = self._sub(node.children[0]), str(node.children[1])
+        swizzled = T.swizzle(base.type, name)
+        if swizzled is not None:
+            unit = base.unit and len(name) == T.size(base.type) and len(set(name)) == len(name)
+            return Value(swizzled, base.range, unit)
+        member = self.model.structs.get(base.type or "", {}).get(name)
+        return Value(member)
+
+    def _index(self, node: Tree) -> Value:
+        base = self._sub(node.children[0])
+        self._sub(node.children[1])
+        element = T.element(base.type)
+        # a struct array element's range says nothing; a vector's component is in its hull
+        known = bool(T.components(element) or T.matrix_shape(element))
+        return Value(element, base.range if known else UNKNOWN)
+
+    # --- calls and constructors ------------------------------------------------------------
+
+    def _constructor(self, node: Tree) -> Value:
+        ty = spec_text(node.children[0])  # type: ignore[arg-type]
+        args = [self._sub(a) for a in call_args(node)]
+        if not args:
+            return Value(ty)
+        if ty in self.model.structs:
+            return Value(ty)
+        ranges = [_converted(a, ty) for a in args]
+        rng = hull_all(ranges)
+        shape = T.matrix_shape(ty)
+        if shape and len(args) == 1 and T.is_scalar(args[0].type):
+            rng = rng.hull(Interval.point(0.0))  # mat3(s): s on the diagonal, 0 elsewhere
+        return Value(ty, rng, self._unit_constructor(ty, args))
+
+    @staticmethod
+    def _unit_constructor(ty: str, args: list[Value]) -> bool:
+        n = T.size(ty)
+        if n < 2 or T.components(ty)[0] != "float":  # type: ignore[index]
+            return False
+        if len(args) == 1 and args[0].type == ty:
+            return args[0].unit
+        if len(args) == n and all(a.range.is_point for a in args):
+            return abs(sum(a.range.lo**2 for a in args) - 1.0) < 1e-6
+        return False
+
+    def _call(self, node: Tree) -> Value:
+        head = node.children[0]
+        args = call_args(node)
+        values = [self._sub(a) for a in args]
+        if is_tree(head, "field") and str(head.children[1]) == "length":  # type: ignore
+            base = self._sub(head.children[0])  # type: ignore[union-attr]
+            n = T.size(base.type)
+            return Value("int", Interval.point(float(n)) if n > 1 else NONNEG)
+        name = callee_name(node)
+        if name is None:
+            return Value()
+        fn = self.model.function(name, len(args))
+        if fn is not None:
+            result = fn.result or Value(fn.return_type)
+            return replace(result, type=fn.return_type)
+        if name not in BUILTIN_FUNCTIONS:
+            return Value()
+        ty = T.builtin_return(name, [v.type for v in values])
+        rng, unit = _builtin(name, values, args)
+        return Value(ty, rng, unit, name)
+
+
+def _converted(value: Value, ty: str) -> Interval:
+    """An argument's range once a constructor converts it to `ty`'s component type."""
+    comps = T.components(ty)
+    base = comps[0] if comps else "float"
+    r = value.range
+    if base == "bool":
+        return BOOL
+    if base in ("int", "uint") and T.components(value.type or "") and \
+            T.components(value.type or "")[0] == "float":  # type: ignore[index]  # fmt: skip
+        r = floor_like(math.trunc)(r)
+    if base == "uint" and r.may_be_negative:
+        return UNKNOWN  # negative values wrap around
+    return r
+
+
+def _sum_of(term: Interval, n: int) -> Interval:
+    """The sum of n terms each in `term`; any count from 1 to 4 when n is unknown."""
+    if n:
+        return term.scale(float(n))
+    return hull_all([term.scale(float(k)) for k in range(1, 5)])
+
+
+def _builtin(name: str, values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    """Range and unit-length of a builtin function's result."""
+    ranges = [v.range for v in values]
+    special = _SPECIAL.get(name)
+    if special is not None:
+        return special(values, nodes)
+    table = {1: _RANGE_1, 2: _RANGE_2, 3: _RANGE_3}.get(len(ranges), {})
+    rule = table.get(name)
+    if rule is None:
+        return UNKNOWN, False
+    return rule(*ranges), False  # type: ignore[operator]
+
+
+def _n(value: Value) -> int:
+    return T.size(value.type)
+
+
+def _dot(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    if len(values) != 2:
+        return UNKNOWN, False
+    a, b = values
+    n = _n(a) or _n(b)
+    if same_expression(nodes[0], nodes[1]):
+        return (Interval.point(1.0) if a.unit else _sum_of(a.range.square(), n)), False
+    rng = _sum_of(a.range * b.range, n)
+    if a.unit and b.unit:
+        return rng.meet(UNIT), False
+    for u, other in ((a, b), (b, a)):
+        if u.unit:  # |dot(u, v)| <= |v|
+            reach = _length(other, n).hi
+            rng = rng.meet(Interval(-reach, reach))
+    return rng, False
+
+
+def _length(v: Value, n: int) -> Interval:
+    if v.unit:
+        return Interval.point(1.0)
+    return length_bound(v.range, n or 4)
+
+
+def _length_rule(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    return (_length(values[0], _n(values[0])) if values else NONNEG), False
+
+
+def _distance(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    if len(values) != 2:
+        return NONNEG, False
+    a, b = values
+    if a.unit and b.unit:
+        return Interval(0.0, 2.0), False
+    return length_bound(a.range - b.range, _n(a) or _n(b) or 4), False
+
+
+def _normalize(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    r = values[0].range if values else UNKNOWN
+    # each component keeps its sign: normalize(vec3(1.0)) has no negative component
+    return Interval(-1.0 if r.lo < 0 else 0.0, 1.0 if r.hi > 0 else 0.0), True
+
+
+def _cross(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    if len(values) != 2:
+        return UNKNOWN, False
+    a, b = values
+    rng = a.range * b.range - a.range * b.range
+    return (rng.meet(UNIT) if a.unit and b.unit else rng), False
+
+
+def _reflect(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    unit = len(values) >= 2 and values[0].unit and values[1].unit
+    return (UNIT if unit else UNKNOWN), unit
+
+
+def _faceforward(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+    n = values[0] if values else Value()
+    return n.range.hull(-n.range), n.unit
+
+
+_SPECIAL: dict[str, Callable[[list[Value], list[Node]], tuple[Interval, bool]]] = {
+    "dot": _dot,
+    "length": _length_rule,
+    "distance": _distance,
+    "normalize": _normalize,
+    "cross": _cross,
+    "reflect": _reflect,
+    "refract": _reflect,  # unit, or the zero vector at total internal reflection
+    "faceforward": _faceforward,
+}
