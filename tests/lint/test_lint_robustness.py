@@ -1,0 +1,339 @@
+"""No input crashes the linter: truncated files, binary junk, unbalanced braces, unknown
+directives, 10 MB of code, deep nesting. Each gets a diagnostic (exit status 1 from the CLI),
+never a traceback. Explicit cases first, then property-based tests over the parser and rules."""
+
+from __future__ import annotations
+
+import importlib.util
+import re
+import shutil
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from glint.lint.finding import Finding
+from glint.lint.options import Options
+from glint.lint.rules import all_rules
+from glint.lint.runner import MAX_BYTES, UNUSED_SUPPRESSION, LintResult, lint_bytes, lint_text
+
+ROOT = Path(__file__).resolve().parents[2]
+VALID = sorted((ROOT / "tests" / "corpus" / "valid").glob("*.glsl"))
+LINT_CORPUS = sorted((ROOT / "tests" / "corpus" / "lint").glob("*.glsl"))
+GLINT = Path(sys.executable).with_name("glint")
+HAS_CLI = importlib.util.find_spec("glint.lint.cli") is not None and GLINT.exists()
+HAS_GLSLANG = shutil.which("glslangValidator") is not None
+OFF = Options(glslang=False)
+
+HEAD = b"void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+TAIL = b"\n}\n"
+
+
+def _shader(body: bytes) -> bytes:
+    return HEAD + body + TAIL
+
+
+def _macro_bomb() -> bytes:
+    # Each macro uses the previous one twice: 2^30 tokens if expanded naively.
+    lines = [b"#define A0 1.0"] + [b"#define A%d (A%d + A%d)" % (i, i - 1, i - 1)
+                                   for i in range(1, 31)]  # fmt: skip
+    return b"\n".join(lines) + b"\n" + _shader(b"fragColor = vec4(A30);")
+
+
+# name -> (the file's bytes, the codes one of which must be reported)
+CASES: dict[str, tuple[Callable[[], bytes], set[str]]] = {
+    "truncated": (lambda: _shader(b"fragColor = vec4(")[:-3], {"C003"}),
+    "truncated-in-comment": (lambda: HEAD + b"/* unfinished", {"C004"}),
+    "binary-junk": (lambda: bytes(range(256)) * 64, {"C005"}),
+    "not-utf8": (lambda: _shader(b"float x = 1.0; // caf\xe9"), {"C005"}),
+    "png-header": (lambda: b"\x89PNG\r\n\x1a\n" + b"\x00" * 64, {"C005"}),
+    "extra-closing-brace": (lambda: _shader(b"fragColor = vec4(1.0);") + b"}\n}\n", {"C003"}),
+    "missing-closing-brace": (lambda: HEAD + b"if (true) {\nfragColor = vec4(1.0);\n", {"C003"}),
+    "unbalanced-parens": (lambda: _shader(b"fragColor = vec4((1.0);"), {"C003"}),
+    "only-braces": (lambda: b"{" * 5000, {"C003"}),
+    "unknown-directive": (lambda: b"#frobnicate 3\n" + _shader(b"fragColor = vec4(1);"),
+                          {"C004"}),  # fmt: skip
+    "include": (lambda: b'#include "common.glsl"\n' + _shader(b""), {"C004"}),
+    "unterminated-if": (lambda: b"#ifdef FAST\n" + _shader(b""), {"C004"}),
+    "error-directive": (lambda: b"#error not for this target\n", {"C004"}),
+    "bad-macro-call-in-line": (lambda: b"#define F(x) x\n#line F(\n" + _shader(b""), {"C004"}),
+    "macro-bomb": (_macro_bomb, {"C004"}),
+    "ten-megabytes": (lambda: _shader(b"fragColor += vec4(0.001);\n" * 400_000), {"C005"}),
+    # Nesting: the LALR parser is iterative, the symbol walk and rules are not; deep trees
+    # must become C006 rather than a RecursionError.
+    "5000-nested-parens-with-operators": (
+        lambda: _shader(b"float x = " + b"(1.0 + " * 5000 + b"1.0" + b")" * 5000 + b";"),
+        {"C006"},
+    ),
+    "5000-nested-calls": (
+        lambda: _shader(b"float x = " + b"abs(" * 5000 + b"1.0" + b")" * 5000 + b";"), {"C006"}
+    ),
+    "2000-nested-blocks": (lambda: _shader(b"{" * 2000 + b"fragColor = vec4(1.0);" + b"}" * 2000),
+                           {"C006"}),  # fmt: skip
+    "2000-nested-ifs": (
+        lambda: _shader(b"if (fragCoord.x > 0.0) {" * 2000 + b"fragColor = vec4(1.0);"
+                        + b"}" * 2000),  # fmt: skip
+        {"C006"},
+    ),
+    "3000-nested-macro-calls": (
+        lambda: b"#define I(x) (x)\n" + _shader(b"float x = " + b"I(" * 3000 + b"1.0" + b")" * 3000
+                                                 + b";"),
+        {"C006"},
+    ),  # fmt: skip
+    "long-operator-chain": (lambda: _shader(b"float x = 1.0" + b" + 1.0" * 20_000 + b";"),
+                            {"C006"}),  # fmt: skip
+    "3000-else-ifs": (
+        lambda: _shader(b"if (fragCoord.x < 0.0) fragColor = vec4(0.0);\n"
+                        + b"else if (fragCoord.x < 1.0) fragColor = vec4(1.0);\n" * 3000),
+        {"C006"},
+    ),  # fmt: skip
+    "deep-if-expression": (lambda: b"#if " + b"(" * 5000 + b"1" + b")" * 5000 + b"\n#endif\n",
+                           {"C006"}),  # fmt: skip
+}
+
+
+def _registered() -> set[str]:
+    # S001 (unused suppression) is the runner's own finding; not (yet) a registered rule.
+    return set(all_rules()) | {UNUSED_SUPPRESSION}
+
+
+def check_findings(findings: list[Finding], text: str) -> None:
+    """What every finding on any input must satisfy."""
+    assert isinstance(findings, list)
+    lines = text.split("\n")
+    codes = _registered()
+    for f in findings:
+        assert isinstance(f, Finding), f
+        assert f.code in codes, f
+        assert 1 <= f.line <= len(lines) + 1, (f, len(lines))
+        assert f.column >= 1, f
+        assert (f.end_line, f.end_column) >= (f.line, f.column), f
+        assert f.severity in ("error", "warning", "info"), f
+        assert f.message, f
+
+
+def _lint(data: bytes) -> LintResult:
+    result = lint_bytes(data, "x.glsl", OFF)
+    text = data.decode("utf-8", errors="replace") if len(data) <= MAX_BYTES else ""
+    check_findings(result.findings, text)
+    return result
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_bad_input_gets_a_diagnostic(name: str) -> None:
+    make, expected = CASES[name]
+    result = _lint(make())
+    codes = {f.code for f in result.findings}
+    assert codes & expected, (name, result.findings[:5])
+    assert any(f.severity == "error" for f in result.findings)
+
+
+def test_ten_megabytes_are_refused_before_any_analysis() -> None:
+    data = CASES["ten-megabytes"][0]()
+    assert len(data) > 10_000_000
+    (finding,) = _lint(data).findings
+    assert finding.code == "C005" and "too large" in finding.message
+
+
+def test_a_deep_tree_is_reported_alone() -> None:
+    # Rules never see a tree the symbol walk could not follow: C006 is the only finding.
+    result = _lint(CASES["2000-nested-blocks"][0]())
+    assert [f.code for f in result.findings] == ["C006"]
+
+
+def test_parentheses_alone_nest_without_depth() -> None:
+    # `((((1.0))))` adds no tree levels: valid GLSL (glslang accepts it), so nothing or C006.
+    data = _shader(b"float x = " + b"(" * 5000 + b"1.0" + b")" * 5000 + b";\nfragColor = vec4(x);")
+    assert {f.code for f in _lint(data).findings} <= {"C006"}
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        b"",
+        b"\n\n   \t\n",
+        b"// just a comment",
+        b"\xef\xbb\xbf" + _shader(b"fragColor = vec4(1.0);"),  # a BOM
+        _shader(b"fragColor = vec4(1.0);").replace(b"\n", b"\r\n"),
+        _shader(b"fragColor = vec4(1.0);").replace(b"\n", b"\r"),
+        b"#line 0\n" + _shader(b"fragColor = vec4(1.0) x;"),
+        b"#line 99999999\n" + _shader(b"fragColor = vec4(1.0) x;"),
+        b"#define A B\n#define B A\n" + _shader(b"float A = 1.0; fragColor = vec4(B);"),
+        b"#define F(x\n",
+        b"#define F(x) x\n" + HEAD + b"fragColor = F(vec4(1.0) ",
+        b"#if 1/0\n#endif\n",
+        b"#if 99999999999999999999999999\n#endif\n",
+        b"#if 1 << 100000000\n#endif\n",
+        b"void f() {} \\",
+        _shader(b"float x = 1" + b"0" * 5000 + b".0;"),
+        _shader(b"float x = a" + b"[0]" * 3000 + b";"),
+        _shader(b"float x = a" + b".x" * 3000 + b";"),
+        _shader(b"float x = " + b"fragCoord.x > 0.0 ? 1.0 : " * 3000 + b"0.0;"),
+        "float é = 1.0; // ✓".encode(),
+        b"// glint: ignore[\n// noqa: ZZZ999\n" + _shader(b""),
+        b"struct S {" * 2000,
+    ],
+    ids=lambda d: repr(d[:24]),
+)
+def test_odd_input_never_raises(data: bytes) -> None:
+    _lint(data)
+    lint_bytes(data, "x.glsl", OFF, fix=True, unsafe_fixes=True)
+
+
+# -- the command line -------------------------------------------------------------------------
+
+needs_cli = pytest.mark.skipif(not HAS_CLI, reason="glint lint CLI not installed")
+
+
+def _run_cli(path: Path, *flags: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [str(GLINT), "lint", *flags, str(path)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=path.parent,
+    )
+
+
+def _assert_clean_failure(run: subprocess.CompletedProcess[str], path: Path) -> None:
+    assert "Traceback" not in run.stderr and "internal error" not in run.stderr, run.stderr
+    assert run.returncode == 1, (run.returncode, run.stdout[-2000:], run.stderr[-2000:])
+    assert re.search(rf"{re.escape(path.name)}:\d+:\d+: [A-Z]+\d{{3}} ", run.stdout), run.stdout
+
+
+@needs_cli
+@pytest.mark.parametrize("name", list(CASES))
+def test_cli_exits_1_with_a_diagnostic(name: str, tmp_path: Path) -> None:
+    path = tmp_path / f"{name}.glsl"
+    path.write_bytes(CASES[name][0]())
+    _assert_clean_failure(_run_cli(path, "--no-glslang"), path)
+
+
+@needs_cli
+@pytest.mark.skipif(not HAS_GLSLANG, reason="glslangValidator not installed")
+@pytest.mark.parametrize(
+    "name", ["truncated", "binary-junk", "extra-closing-brace", "unknown-directive",
+             "ten-megabytes", "2000-nested-blocks"]
+)  # fmt: skip
+def test_cli_with_glslang_exits_1_with_a_diagnostic(name: str, tmp_path: Path) -> None:
+    path = tmp_path / f"{name}.glsl"
+    path.write_bytes(CASES[name][0]())
+    _assert_clean_failure(_run_cli(path), path)
+
+
+@needs_cli
+@pytest.mark.parametrize("fmt", ["json", "sarif", "github", "concise"])
+def test_cli_formats_survive_binary_junk(fmt: str, tmp_path: Path) -> None:
+    path = tmp_path / "junk.glsl"
+    path.write_bytes(bytes(range(256)) * 4)
+    run = _run_cli(path, "--no-glslang", "--format", fmt)
+    assert "Traceback" not in run.stderr and "internal error" not in run.stderr, run.stderr
+    assert run.returncode == 1 and run.stdout.strip()
+
+
+# -- properties -------------------------------------------------------------------------------
+
+PROPERTY = settings(
+    max_examples=150,
+    deadline=None,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+SOURCES = [p.read_text(encoding="utf-8") for p in VALID + LINT_CORPUS]
+SNIPPETS = [
+    "float sdSphere(vec3 p, float r) { return length(p) - r; }\n",
+    "#define STEPS 64\nfor (int i = 0; i < STEPS; i++) { t += d; }\n",
+    "vec3 n = normalize(vec3(e.x, e.y, e.z));\nfloat ndl = max(dot(n, l), 0.0);\n",
+    "struct Hit { float t; vec3 n; };\nHit h = Hit(1.0, vec3(0.0));\n",
+    "float a[3] = float[3](1.0, 2.0, 3.0);\nswitch (i) { case 0: x = 1.0; break; default: ; }\n",
+    "uniform sampler2D tex;\nvec4 c = texture(iChannel0, uv) * pow(x, 2.2);\n",
+]
+# GLSL-ish tokens, so random sequences get past the lexer into the parser and the rules.
+_TOKEN = re.compile(r"\s+|//[^\n]*|/\*.*?\*/|#\w*|\w+|\S", re.S)
+VOCABULARY = sorted(
+    {t for s in SOURCES[:10] for t in _TOKEN.findall(s) if not t.isspace()} | {"\n", "{", "}"}
+)
+
+
+def _tokens(text: str) -> list[str]:
+    return _TOKEN.findall(text)
+
+
+@st.composite
+def mutated(draw: st.DrawFn) -> str:
+    """A real shader or snippet, truncated, with characters or tokens deleted, duplicated or
+    swapped."""
+    text = draw(st.sampled_from(SOURCES + SNIPPETS))
+    for _ in range(draw(st.integers(1, 4))):
+        kind = draw(st.sampled_from(["truncate", "chars", "tokens", "swap", "insert"]))
+        if kind == "truncate":
+            text = text[: draw(st.integers(0, len(text)))]
+        elif kind == "chars":
+            i = draw(st.integers(0, len(text)))
+            j = draw(st.integers(i, min(len(text), i + 40)))
+            text = text[:i] + (text[i:j] * 2 if draw(st.booleans()) else "") + text[j:]
+        else:
+            toks = _tokens(text)
+            if not toks:
+                continue
+            i = draw(st.integers(0, len(toks) - 1))
+            if kind == "tokens":
+                j = draw(st.integers(i, min(len(toks), i + 8)))
+                dup = draw(st.booleans())
+                toks[i:j] = toks[i:j] * 2 if dup else []
+            elif kind == "swap":
+                j = draw(st.integers(0, len(toks) - 1))
+                toks[i], toks[j] = toks[j], toks[i]
+            else:
+                toks.insert(i, draw(st.sampled_from(VOCABULARY)))
+            text = "".join(toks)
+    return text
+
+
+def _never_raises(text: str, fix: bool = False) -> None:
+    result = lint_text(text, "x.glsl", OFF, fix=fix, unsafe_fixes=fix)
+    check_findings(result.findings, result.text)
+    assert isinstance(result.text, str)
+
+
+@PROPERTY
+@given(st.binary(max_size=2000))
+def test_random_bytes(data: bytes) -> None:
+    result = lint_bytes(data, "x.glsl", OFF)
+    check_findings(result.findings, data.decode("utf-8", errors="replace"))
+
+
+@PROPERTY
+@given(st.text(max_size=500))
+def test_random_text(text: str) -> None:
+    _never_raises(text)
+
+
+@PROPERTY
+@given(st.lists(st.sampled_from(VOCABULARY), max_size=200))
+def test_random_token_sequences(toks: list[str]) -> None:
+    _never_raises(" ".join(toks))
+
+
+@settings(PROPERTY, max_examples=200)
+@given(mutated())
+def test_mutated_shaders(text: str) -> None:
+    _never_raises(text)
+
+
+@settings(PROPERTY, max_examples=60)
+@given(mutated())
+def test_mutated_shaders_with_fixes(text: str) -> None:
+    _never_raises(text, fix=True)
+
+
+@pytest.mark.parametrize("path", VALID + LINT_CORPUS, ids=lambda p: p.name)
+def test_valid_shaders_draw_no_errors(path: Path) -> None:
+    text = path.read_text(encoding="utf-8")
+    findings = lint_text(text, path.name, OFF).findings
+    check_findings(findings, text)
+    assert [f for f in findings if f.severity == "error"] == []
