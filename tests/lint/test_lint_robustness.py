@@ -39,8 +39,9 @@ def _shader(body: bytes) -> bytes:
 
 def _macro_bomb() -> bytes:
     # Each macro uses the previous one twice: 2^30 tokens if expanded naively.
-    lines = [b"#define A0 1.0"] + [b"#define A%d (A%d + A%d)" % (i, i - 1, i - 1)
-                                   for i in range(1, 31)]  # fmt: skip
+    lines = [b"#define A0 1.0"] + [
+        b"#define A%d (A%d + A%d)" % (i, i - 1, i - 1) for i in range(1, 31)
+    ]
     return b"\n".join(lines) + b"\n" + _shader(b"fragColor = vec4(A30);")
 
 
@@ -55,8 +56,7 @@ CASES: dict[str, tuple[Callable[[], bytes], set[str]]] = {
     "missing-closing-brace": (lambda: HEAD + b"if (true) {\nfragColor = vec4(1.0);\n", {"C003"}),
     "unbalanced-parens": (lambda: _shader(b"fragColor = vec4((1.0);"), {"C003"}),
     "only-braces": (lambda: b"{" * 5000, {"C003"}),
-    "unknown-directive": (lambda: b"#frobnicate 3\n" + _shader(b"fragColor = vec4(1);"),
-                          {"C004"}),  # fmt: skip
+    "unknown-directive": (lambda: b"#frobnicate 3\n" + _shader(b"fragColor = vec4(1);"), {"C004"}),
     "include": (lambda: b'#include "common.glsl"\n' + _shader(b""), {"C004"}),
     "unterminated-if": (lambda: b"#ifdef FAST\n" + _shader(b""), {"C004"}),
     "error-directive": (lambda: b"#error not for this target\n", {"C004"}),
@@ -70,29 +70,41 @@ CASES: dict[str, tuple[Callable[[], bytes], set[str]]] = {
         {"C006"},
     ),
     "5000-nested-calls": (
-        lambda: _shader(b"float x = " + b"abs(" * 5000 + b"1.0" + b")" * 5000 + b";"), {"C006"}
+        lambda: _shader(b"float x = " + b"abs(" * 5000 + b"1.0" + b")" * 5000 + b";"),
+        {"C006"},
     ),
-    "2000-nested-blocks": (lambda: _shader(b"{" * 2000 + b"fragColor = vec4(1.0);" + b"}" * 2000),
-                           {"C006"}),  # fmt: skip
+    "2000-nested-blocks": (
+        lambda: _shader(b"{" * 2000 + b"fragColor = vec4(1.0);" + b"}" * 2000),
+        {"C006"},
+    ),
     "2000-nested-ifs": (
-        lambda: _shader(b"if (fragCoord.x > 0.0) {" * 2000 + b"fragColor = vec4(1.0);"
-                        + b"}" * 2000),  # fmt: skip
+        lambda: _shader(
+            b"if (fragCoord.x > 0.0) {" * 2000 + b"fragColor = vec4(1.0);" + b"}" * 2000
+        ),
         {"C006"},
     ),
     "3000-nested-macro-calls": (
-        lambda: b"#define I(x) (x)\n" + _shader(b"float x = " + b"I(" * 3000 + b"1.0" + b")" * 3000
-                                                 + b";"),
+        lambda: (
+            b"#define I(x) (x)\n"
+            + _shader(b"float x = " + b"I(" * 3000 + b"1.0" + b")" * 3000 + b";")
+        ),
         {"C006"},
-    ),  # fmt: skip
-    "long-operator-chain": (lambda: _shader(b"float x = 1.0" + b" + 1.0" * 20_000 + b";"),
-                            {"C006"}),  # fmt: skip
+    ),
+    "long-operator-chain": (
+        lambda: _shader(b"float x = 1.0" + b" + 1.0" * 20_000 + b";"),
+        {"C006"},
+    ),
     "3000-else-ifs": (
-        lambda: _shader(b"if (fragCoord.x < 0.0) fragColor = vec4(0.0);\n"
-                        + b"else if (fragCoord.x < 1.0) fragColor = vec4(1.0);\n" * 3000),
+        lambda: _shader(
+            b"if (fragCoord.x < 0.0) fragColor = vec4(0.0);\n"
+            + b"else if (fragCoord.x < 1.0) fragColor = vec4(1.0);\n" * 3000
+        ),
         {"C006"},
-    ),  # fmt: skip
-    "deep-if-expression": (lambda: b"#if " + b"(" * 5000 + b"1" + b")" * 5000 + b"\n#endif\n",
-                           {"C006"}),  # fmt: skip
+    ),
+    "deep-if-expression": (
+        lambda: b"#if " + b"(" * 5000 + b"1" + b")" * 5000 + b"\n#endif\n",
+        {"C006"},
+    ),
 }
 
 
@@ -216,9 +228,16 @@ def test_cli_exits_1_with_a_diagnostic(name: str, tmp_path: Path) -> None:
 @needs_cli
 @pytest.mark.skipif(not HAS_GLSLANG, reason="glslangValidator not installed")
 @pytest.mark.parametrize(
-    "name", ["truncated", "binary-junk", "extra-closing-brace", "unknown-directive",
-             "ten-megabytes", "2000-nested-blocks"]
-)  # fmt: skip
+    "name",
+    [
+        "truncated",
+        "binary-junk",
+        "extra-closing-brace",
+        "unknown-directive",
+        "ten-megabytes",
+        "2000-nested-blocks",
+    ],
+)
 def test_cli_with_glslang_exits_1_with_a_diagnostic(name: str, tmp_path: Path) -> None:
     path = tmp_path / f"{name}.glsl"
     path.write_bytes(CASES[name][0]())
