@@ -22,7 +22,7 @@ from lark import Token, Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
-from ..context import walk
+from ..context import LintContext, walk
 from . import types as T
 from .ranges import (
     BOOL,
@@ -1083,3 +1083,14 @@ _SPECIAL: dict[str, Callable[[list[Value], list[Node]], tuple[Interval, bool]]] 
     "refract": _reflect,  # unit, or the zero vector at total internal reflection
     "faceforward": _faceforward,
 }
+
+
+def semantic_model(ctx: LintContext) -> Model:
+    """The file's semantic model, built on first use and cached in `ctx.cache["model"]`.
+    Only for a parsed file (rules with `needs_tree`)."""
+    model = ctx.cache.get("model")
+    if model is None:
+        if ctx.tree is None:
+            raise ValueError("semantic_model needs a parsed file")
+        model = ctx.cache["model"] = Model(ctx.tree)
+    return model
