@@ -90,8 +90,8 @@ def function_flows(ctx: LintContext) -> list[FunctionFlow]:
 
 
 def mask_names(var: Var, mask: int) -> str:
-    """`.xyz`-style names of the components in `mask` ("" for a whole variable)."""
-    if var.width == 1:
+    """`.xyz`-style names of the components in `mask` ("" for the whole variable)."""
+    if var.width == 1 or mask == var.full:
         return ""
     return "." + "".join("xyzw"[i] for i in range(var.width) if mask >> i & 1)
 

@@ -9,7 +9,7 @@ from collections.abc import Iterator
 from lark import Tree
 
 from ..analysis.flow import FunctionFlow, Var, function_flows, mask_names
-from ..context import LintContext
+from ..context import LintContext, walk
 from ..finding import Finding
 from . import Rule, register
 
@@ -22,6 +22,11 @@ def _main_colour(flow: FunctionFlow) -> Var | None:
     first = params[2].children[0] if len(params) > 2 else None  # type: ignore[union-attr]
     out = flow.outs[0]
     return out if isinstance(first, Tree) and out.token in first.children else None
+
+
+def _writes_gl_fragcolor(definition: Tree) -> bool:
+    return any(n.data == "variable" and n.children[0] in ("gl_FragColor", "gl_FragData")
+               for n in walk(definition))  # fmt: skip
 
 
 @register
@@ -52,8 +57,8 @@ class ColourNotWritten(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         for flow in function_flows(ctx):
             colour = _main_colour(flow)
-            if colour is None:
-                continue
+            if colour is None or _writes_gl_fragcolor(flow.definition):
+                continue  # P002 reports the colour written to the wrong place
             ever = 0
             for exit_ in flow.exits:
                 ever |= exit_.state.get(id(colour), 0)
