@@ -376,7 +376,10 @@ class RedundantNormalize(Rule):
                 if len(args) != 1:
                     continue
                 inner = args[0]
-                if not (_unit_by_form(inner, fn, consts) or is_unit(ctx, inner)):
+                # The model's unit facts about parameters come from today's callers; a
+                # normalize that guards a parameter is kept for tomorrow's.
+                modelled = not (names_in(inner) & set(fn.params)) and is_unit(ctx, inner)
+                if not (_unit_by_form(inner, fn, consts) or modelled):
                     continue
                 text = ctx.node_text(inner)
                 simple = isinstance(inner, Tree) and inner.data in (

@@ -1,0 +1,220 @@
+"""Performance rules PF001-PF003: a positive and a negative case for each, the fixes' text,
+fixed shaders that glslang accepts, idempotent fixing, and silence on the valid corpora."""
+
+from __future__ import annotations
+
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+from glint.compiler.glslang import validate
+from glint.lint.options import Options
+from glint.lint.rules import all_rules, rule_doc
+from glint.lint.runner import lint_source, lint_text
+
+FAST = Options(select=["PF"], glslang=False)
+CORPORA = Path(__file__).resolve().parent.parent / "corpus"
+CORPUS = sorted((CORPORA / "valid").glob("*.glsl")) + sorted((CORPORA / "lint").glob("*.glsl"))
+needs_glslang = pytest.mark.skipif(
+    shutil.which("glslangValidator") is None, reason="glslangValidator is not installed"
+)
+
+
+def found(text: str, code: str | None = None) -> list[tuple[str, int, int]]:
+    return [(f.code, f.line, f.column) for f in lint_source(text, "x.glsl", FAST)
+            if code is None or f.code == code]  # fmt: skip
+
+
+def fixed(text: str) -> str:
+    return lint_text(text, "x.glsl", FAST, fix=True).text
+
+
+def image(body: str, head: str = "") -> str:
+    return f"{head}void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{body}\n}}\n"
+
+
+@pytest.mark.parametrize("code", ["PF001", "PF002", "PF003"])
+def test_rule_is_documented(code: str) -> None:
+    rule = all_rules()[code]
+    doc = rule_doc(rule)
+    assert all(doc[k] for k in ("summary", "why", "example", "fix"))
+    assert re.fullmatch(r"[a-z0-9]+(-[a-z0-9]+)*", rule.name)
+    assert rule.category == "performance" and rule.severity == "info"
+
+
+# --- PF001 ----------------------------------------------------------------------------------
+
+POWS = image(
+    "    vec2 uv = fragCoord / iResolution.xy;\n"
+    "    float t = uv.x;\n"
+    "    float a = pow(t, 2.0);\n"
+    "    float b = 1.0 / pow(uv.y, 3.0);\n"
+    "    float c = pow(t, 4.0) + pow(t, 5.0);\n"
+    "    vec3 d = pow(vec3(uv, t), vec3(2.0));\n"
+    "    fragColor = vec4(d, a + b + c);"
+)
+
+
+def test_pf001_reports_small_integer_exponents_of_plain_values() -> None:
+    assert [line for _, line, _ in found(POWS, "PF001")] == [4, 5, 6, 6]
+
+
+def test_pf001_fix_writes_products_with_parentheses_where_precedence_needs_them() -> None:
+    out = fixed(POWS)
+    assert "float a = t * t;" in out
+    assert "float b = 1.0 / (uv.y * uv.y * uv.y);" in out
+    assert "float c = (t * t) * (t * t) + t * t * t * t * t;" in out
+    assert fixed(out) == out  # idempotent
+    assert found(out, "PF001") == []
+
+
+def test_pf001_leaves_other_exponents_and_complex_bases_alone() -> None:
+    src = image(
+        "    float x = fragCoord.x;\n"
+        "    float a = pow(x, 2.5) + pow(x, 8.0) + pow(x, x);\n"
+        "    float b = pow(clamp(1.0 - x, 0.0, 1.0), 5.0) + pow(x + 1.0, 2.0);\n"
+        "    fragColor = vec4(a + b);"
+    )
+    assert found(src, "PF001") == []
+
+
+def test_pf001_no_fix_on_a_line_with_a_macro() -> None:
+    src = "#define E 2.0\n" + image("    float x = fragCoord.x;\n    fragColor = vec4(pow(x, E));")
+    findings = lint_source(src, "x.glsl", FAST)
+    assert [f.code for f in findings] == ["PF001"] and findings[0].fix is None
+
+
+@needs_glslang
+def test_pf001_fixed_shader_validates() -> None:
+    out = fixed(POWS)
+    assert out != POWS
+    assert [d for d in validate(out, "x.glsl", "shadertoy") if d.severity == "error"] == []
+
+
+# --- PF002 ----------------------------------------------------------------------------------
+
+LOOP = """uniform vec3 lightPos;
+float map(vec3 p) { return length(p) - 1.0; }
+float shadow(vec3 ro, vec3 rd) {
+    float res = 1.0;
+    float t = 0.02;
+    for (int i = 0; i < 64; i++) {
+        float h = map(ro + rd * t);
+        res = min(res, h / t * length(lightPos - ro));
+        float wobble = sin(iTime) * 0.1;
+        t += clamp(h, 0.02, 0.2) + wobble;
+    }
+    return res;
+}
+"""
+
+
+def test_pf002_reports_loop_invariant_builtin_calls() -> None:
+    assert found(LOOP, "PF002") == [("PF002", 8, 32), ("PF002", 9, 24)]
+    message = lint_source(LOOP, "x.glsl", FAST)[0].message
+    assert "length(lightPos - ro)" in message and "before the loop" in message
+
+
+def test_pf002_ignores_varying_constant_and_user_function_work() -> None:
+    src = """const vec3 kDir = vec3(0.0, 1.0, 0.0);
+float map(vec3 p) { return length(p) - 1.0; }
+float march(vec3 ro, vec3 rd) {
+    float t = 0.0;
+    for (int i = 0; i < 64; i++) {
+        float d = map(ro + rd * t);          // a user function: not judged
+        float s = sin(float(i));             // the loop variable
+        float c = cos(1.0) + length(kDir);   // constants: folded by the compiler
+        vec3 p = ro + rd * t;
+        float r = length(p);                 // declared in the loop
+        t += d + s * 0.0 + c * 0.0 + r * 0.0;
+    }
+    return t;
+}
+"""
+    assert found(src, "PF002") == []
+
+
+def test_pf002_nested_loop_reports_once_at_the_outer_loop() -> None:
+    src = """float f(vec3 a) {
+    float s = 0.0;
+    for (int i = 0; i < 4; i++) {
+        for (int j = 0; j < 4; j++) {
+            s += normalize(a).x;
+        }
+    }
+    return s;
+}
+"""
+    assert found(src, "PF002") == [("PF002", 5, 18)]
+
+
+def test_pf002_variable_written_through_an_out_argument_varies() -> None:
+    src = """void step_(inout vec3 p) { p += vec3(0.1); }
+float f(vec3 p) {
+    float s = 0.0;
+    for (int i = 0; i < 4; i++) {
+        s += length(p);
+        step_(p);
+    }
+    return s;
+}
+"""
+    assert found(src, "PF002") == []
+
+
+# --- PF003 ----------------------------------------------------------------------------------
+
+UNITS = """const vec3 kSun = normalize(vec3(0.6, 0.8, -0.5));
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec3 rd = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));
+    vec3 a = normalize(normalize(rd + kSun));
+    vec3 b = normalize(rd);
+    vec3 c = normalize(reflect(rd, kSun)).xzy;
+    vec3 d = normalize(-kSun);
+    float e = normalize(-kSun).x;
+    fragColor = vec4(a + b + c + d, e);
+}
+"""
+
+
+def test_pf003_reports_normalize_of_unit_vectors() -> None:
+    assert [line for _, line, _ in found(UNITS, "PF003")] == [4, 5, 6, 7, 8]
+
+
+def test_pf003_fix_drops_the_outer_normalize() -> None:
+    out = fixed(UNITS)
+    assert "vec3 a = normalize(rd + kSun);" in out
+    assert "vec3 b = rd;" in out
+    assert "vec3 c = reflect(rd, kSun).xzy;" in out
+    assert "vec3 d = -kSun;" in out
+    assert "float e = (-kSun).x;" in out  # a field after it needs the parentheses
+    assert fixed(out) == out and found(out, "PF003") == []
+
+
+def test_pf003_keeps_normalize_of_parameters_and_rewritten_variables() -> None:
+    src = """vec3 f(vec3 n) { return normalize(n); }
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec3 rd = normalize(vec3(fragCoord, 1.0));
+    vec3 m = normalize(vec3(1.0));
+    m = m * 2.0;
+    vec3 k = normalize(m) + f(rd) + normalize(rd * 2.0);
+    fragColor = vec4(k, 1.0);
+}
+"""
+    assert found(src, "PF003") == []
+
+
+@needs_glslang
+def test_pf003_fixed_shader_validates() -> None:
+    out = fixed(UNITS)
+    assert [d for d in validate(out, "x.glsl", "shadertoy") if d.severity == "error"] == []
+
+
+# --- the corpora ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=lambda p: f"{p.parent.name}/{p.stem}")
+def test_valid_corpus_has_no_performance_findings(path: Path) -> None:
+    assert lint_source(path.read_text(encoding="utf-8"), str(path), FAST) == []
