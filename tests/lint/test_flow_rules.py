@@ -1,0 +1,196 @@
+"""Data-flow rules C101-C103 on the definite-assignment analysis: positives, negatives (the
+analysis must stay quiet where it cannot be sure), and no recursion over long code."""
+
+from __future__ import annotations
+
+import inspect
+import re
+import sys
+
+import pytest
+
+from glint.lint.options import Options
+from glint.lint.rules import all_rules, rule_doc
+from glint.lint.rules.flow import ColourNotWritten, UsedBeforeInitialised
+from glint.lint.runner import build_context, lint_source
+
+FAST = Options(select=["P", "C1"], glslang=False)
+
+
+def image(body: str, head: str = "") -> str:
+    return f"{head}void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{body}\n}}\n"
+
+
+def found(text: str) -> list[tuple[str, int]]:
+    return [(f.code, f.line) for f in lint_source(text, "x.glsl", FAST)]
+
+
+@pytest.mark.parametrize("code", ["C101", "C102", "C103"])
+def test_rule_is_documented(code: str) -> None:
+    rule = all_rules()[code]
+    doc = rule_doc(rule)
+    assert all(doc[k] for k in ("summary", "why", "example", "fix"))
+    assert re.fullmatch(r"[a-z0-9]+(-[a-z0-9]+)*", rule.name) and rule.category == "correctness"
+
+
+# --- C101 -----------------------------------------------------------------------------------
+
+
+def test_c101_early_return() -> None:
+    src = image("    if (fragCoord.x < 10.0) return;\n    fragColor = vec4(1.0);")
+    assert found(src) == [("C101", 2)]
+
+
+def test_c101_if_without_else() -> None:
+    src = image("    if (fragCoord.x < 10.0) fragColor = vec4(1.0);")
+    assert found(src) == [("C101", 1)]
+
+
+def test_c101_never_written() -> None:
+    findings = lint_source(image("    vec3 c = vec3(1.0);"), "x.glsl", FAST)
+    assert [f.code for f in findings] == ["C101"] and "never writes" in findings[0].message
+
+
+def test_c101_alpha_missing() -> None:
+    findings = lint_source(image("    fragColor.rgb = vec3(1.0);"), "x.glsl", FAST)
+    assert [f.code for f in findings] == ["C101"] and "fragColor.w" in findings[0].message
+
+
+def test_c101_loop_that_may_not_run() -> None:
+    src = image("    for (int i = 0; i < int(iTime); i++) fragColor = vec4(1.0);")
+    assert found(src) == [("C101", 1)]
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        "if (fragCoord.x < 1.0) discard;\nfragColor = vec4(1.0);",
+        "if (fragCoord.x < 1.0) fragColor = vec4(0.0); else fragColor = vec4(1.0);",
+        "fragColor = vec4(0.0);\nif (fragCoord.x < 1.0) return;\nfragColor.r = 1.0;",
+        "fragColor.rgb = vec3(1.0);\nfragColor.a = 1.0;",
+        "fragColor.xy = vec2(1.0); fragColor.z = 0.0; fragColor[3] = 1.0;",
+        "switch (int(fragCoord.x) % 2) { case 0: fragColor = vec4(0.0); break;\n"
+        "default: fragColor = vec4(1.0); }",
+        "for (int i = 0; i < 4; i++) { fragColor = vec4(float(i)); }",
+        "while (true) { fragColor = vec4(1.0); break; }",
+        "do { fragColor = vec4(1.0); } while (false);",
+        "render(fragColor, fragCoord);",
+        "shade(fragColor);",
+        "gl_FragColor = vec4(1.0);",  # P002's business
+    ],
+)
+def test_c101_quiet_when_every_path_writes(body: str) -> None:
+    head = "void shade(out vec4 c) { c = vec4(1.0); }\n"
+    assert "C101" not in [c for c, _ in found(image(body, head))]
+
+
+# --- C102 -----------------------------------------------------------------------------------
+
+
+def test_c102_compound_assignment_first() -> None:
+    src = image("    fragColor.rgb *= 0.5;\n    fragColor = vec4(1.0);")
+    findings = lint_source(src, "x.glsl", FAST)
+    assert [(f.code, f.line, f.column) for f in findings] == [("C102", 2, 5)]
+    assert "fragColor.xyz" in findings[0].message
+
+
+def test_c102_passed_to_an_inout_parameter() -> None:
+    head = "void tint(inout vec4 c) { c *= 0.5; }\n"
+    src = image("    tint(fragColor);", head)
+    assert [c for c, _ in found(src)] == ["C102"]
+
+
+def test_c102_quiet_after_a_write() -> None:
+    src = image("fragColor = vec4(0.0);\nfragColor.rgb += vec3(0.5);\nfragColor.a *= 1.0;")
+    assert found(src) == []
+    src = image("fragColor.a = 1.0;\nfragColor.rgb = vec3(fragColor.a);")
+    assert found(src) == []
+
+
+# --- C103 -----------------------------------------------------------------------------------
+
+
+def test_c103_assigned_in_one_branch() -> None:
+    src = image("    float d;\n    if (fragCoord.x > 1.0) d = 1.0;\n    fragColor = vec4(d);")
+    findings = lint_source(src, "x.glsl", FAST)
+    assert [(f.code, f.line, f.column) for f in findings] == [("C103", 4, 22)]
+    assert "line 2" in findings[0].message
+
+
+def test_c103_self_reference_and_loop_condition() -> None:
+    assert found(image("float x;\nx = x + 1.0;\nfragColor = vec4(x);")) == [("C103", 3)]
+    body = "float t;\nwhile (t < 1.0) { t = 2.0; }\nfragColor = vec4(t);"
+    assert found(image(body)) == [("C103", 3)]
+
+
+def test_c103_vector_components() -> None:
+    src = image("vec3 v;\nv.xy = vec2(1.0);\nfragColor = vec4(v, 1.0);")
+    findings = lint_source(src, "x.glsl", FAST)
+    assert [f.code for f in findings] == ["C103"] and "`v.z`" in findings[0].message
+    assert found(image("vec3 v;\nv.xy = vec2(1.0);\nfragColor = vec4(v.xy, v.x, 1.0);")) == []
+
+
+def test_c103_loop_that_may_not_run() -> None:
+    body = "float d;\nfor (int i = 0; i < int(iTime); i++) d = 1.0;\nfragColor = vec4(d);"
+    assert found(image(body)) == [("C103", 4)]
+
+
+def test_c103_out_parameter_read_first() -> None:
+    head = "void f(out float o, float k) { o += k; }\n"
+    assert found(image("float x; f(x, 1.0); fragColor = vec4(x);", head)) == [("C103", 1)]
+
+
+def test_c103_short_circuit_writes_do_not_count() -> None:
+    body = "float x;\nif (fragCoord.x > 0.0 && (x = 1.0) > 0.0) { }\nfragColor = vec4(x);"
+    assert found(image(body)) == [("C103", 4)]
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        "float d; if (fragCoord.x > 1.0) d = 1.0; else d = 2.0; fragColor = vec4(d);",
+        "float d; for (int i = 0; i < 8; i++) { d = float(i); if (d > 3.0) break; }"
+        " fragColor = vec4(d);",
+        "float d; for (int i = 0; i < STEPS; i++) { d = float(i); } fragColor = vec4(d);",
+        "float d; while (true) { d = 1.0; if (fragCoord.x > d) break; } fragColor = vec4(d);",
+        "float d; do { d = 1.0; } while (d < 0.0); fragColor = vec4(d);",
+        "float d; switch (int(fragCoord.x)) { case 0: d = 0.0; break; default: d = 1.0; }"
+        " fragColor = vec4(d);",
+        "float d; int k = int(fragCoord.x); if (k == 0) { d = 0.0; } else if (k == 1) { d = 1.0; }"
+        " else { discard; } fragColor = vec4(d);",
+        "float d; set(d); fragColor = vec4(d);",  # the file's own out parameter
+        "float ip; float f = modf(fragCoord.x, ip); fragColor = vec4(ip + f);",
+        "float d; elsewhere(d); fragColor = vec4(d);",  # not in this file: unsure, so quiet
+        "float w[3]; w[0] = 1.0; fragColor = vec4(w[2]);",  # arrays: any write counts
+        "Hit h; h.t = 1.0; fragColor = vec4(h.t, h.id, 0.0, 1.0);",  # structs too
+        "float w[3]; int n = w.length(); fragColor = vec4(float(n));",
+        "mat2 m; m[0] = vec2(1.0); m[1] = vec2(0.0); fragColor = vec4(m[0], m[1]);",
+        "float a, b; a = b = 1.0; fragColor = vec4(a + b);",
+        "float x; x = 1.0; { float x; x = 2.0; } fragColor = vec4(x);",
+        "float d; if (fragCoord.x > 1.0) { d = 1.0; } else { discard; } fragColor = vec4(d);",
+        "float d = 1.0; fragColor = vec4(d);",
+        "float d; fragColor = vec4(1.0); return; fragColor = vec4(d);",  # dead code
+    ],
+)
+def test_c103_quiet_when_assigned_or_unsure(body: str) -> None:
+    head = "const int STEPS = 4;\nstruct Hit { float t; float id; };\n" \
+           "void set(out float v) { v = 1.0; }\n"  # fmt: skip
+    assert found(image(body, head)) == []
+
+
+# --- robustness -----------------------------------------------------------------------------
+
+
+def test_long_bodies_and_chains_do_not_recurse() -> None:
+    statements = "\n".join("x = x + 1.0;" for _ in range(4000))
+    chain = " + ".join(["x"] * 400)  # the parser itself gives up (C006) a little beyond this
+    src = image(f"float x = 0.0;\n{statements}\nfloat y = {chain};\nfragColor = vec4(y);")
+    ctx = build_context(src, "x.glsl", FAST)
+    assert ctx.tree is not None
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(len(inspect.stack()) + 200)  # far less than the chain is deep
+    try:
+        assert list(ColourNotWritten().check(ctx)) == []
+        assert list(UsedBeforeInitialised().check(ctx)) == []
+    finally:
+        sys.setrecursionlimit(limit)
