@@ -33,6 +33,7 @@ from ._lighting_terms import (
     resolve,
     root_var,
     schlick_base,
+    semantic,
     var_name,
 )
 
@@ -160,7 +161,9 @@ class UnclampedCosine(Rule):
                     colour = True  # a function returning the bare cosine is a diffuse term
                 elif binary_op(node) == "*" and binary_op(up.get(id(node))) != "*":
                     candidates = operands(node, "*")
-                    others = [c for c in candidates if const_value(c) is None]
+                    # a scalar constant scales the cosine (half-Lambert); a colour does not
+                    others = [c for c in candidates if const_value(c) is None
+                              or (isinstance(c, Tree) and c.data == "constructor")]  # fmt: skip
                     colour = len(others) >= 2 and self._colour(node, candidates, fn, up)
                 else:
                     continue
@@ -444,7 +447,11 @@ def _main(ctx: LintContext) -> tuple[Function, str] | None:
     return None
 
 
-def _vector(node: Node, fn: Function | None) -> bool:
+def _vector(ctx: LintContext, node: Node, fn: Function | None) -> bool:
+    """Whether the expression is a vector (a colour), by the model's type when there is one."""
+    model = semantic(ctx)
+    if model is not None:
+        return (model.type_of(node) or "").startswith("vec")  # type: ignore[attr-defined]
     name = var_name(node)
     if name and fn is not None:
         return (fn.type_of(name) or "").startswith("vec")
@@ -493,7 +500,7 @@ class _Output:
             text = self.ctx.node_text(args[1]).lower()
             if (value is not None and 0.38 <= value <= 0.5) or "gamma" in text:
                 return args[0]
-        if name == "sqrt" and len(args) == 1 and _vector(args[0], fn):
+        if name == "sqrt" and len(args) == 1 and _vector(self.ctx, args[0], fn):
             return args[0]
         if not direct and name in self.encoders and args:
             return args[0]
@@ -718,7 +725,7 @@ class HdrWithoutTonemap(Rule):
         for node in calls_in(fn.body):
             name = call_name(node)
             args = call_args(node)
-            if name in ("clamp", "saturate") and args and _vector(args[0], fn):
+            if name in ("clamp", "saturate") and args and _vector(ctx, args[0], fn):
                 return True
             if name == "min" and any(const_value(a) == 1.0 for a in args):
                 return True
