@@ -21,6 +21,7 @@ from dataclasses import dataclass, field, replace
 from lark import Token, Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+from glint.compiler.glsl.keywords import words
 
 from ..context import LintContext, walk
 from . import types as T
@@ -60,19 +61,43 @@ Env = Mapping[str, "Value"]
 class Value:
     """What the model knows about a value: GLSL type, range (hull of the components), whether
     it is a unit vector, and its origin: the builtin that produced it ("dot", "length",
-    "cross" ...) or "sum"/"difference" of two unit vectors."""
+    "cross" ...) or "sum"/"difference" of two unit vectors. `zero` says that 0 is reached on
+    evidence (a constant 0, max(x, 0.0), a length, a product with such a factor), not merely
+    inside a range widened by interval arithmetic: (0.5 - x) * x is in [0, inf) for x in
+    [0, 0.5] without being 0 anywhere the author cares about."""
 
     type: str | None = None
     range: Interval = UNKNOWN
     unit: bool = False
     origin: str | None = None
+    zero: bool = False
+    comps: tuple[Interval, ...] | None = None  # per component of a vector, when known
+
+    def __post_init__(self) -> None:
+        if self.comps is not None:  # the range is always the hull of the components
+            object.__setattr__(self, "range", hull_all(self.comps))
+
+    def parts(self, n: int) -> list[Interval]:
+        """n component ranges: the known ones, else the hull for each (a scalar broadcasts)."""
+        if self.comps is not None and len(self.comps) == n:
+            return list(self.comps)
+        return [self.range] * n
 
     def join(self, other: Value) -> Value:
+        comps = None
+        if (
+            self.comps is not None
+            and other.comps is not None
+            and (len(self.comps) == len(other.comps))
+        ):
+            comps = tuple(a.hull(b) for a, b in zip(self.comps, other.comps, strict=True))
         return Value(
             self.type if self.type == other.type else None,
             self.range.hull(other.range),
             self.unit and other.unit,
             self.origin if self.origin == other.origin else None,
+            self.zero or other.zero,
+            comps,
         )
 
     def unknown(self) -> Value:
@@ -89,7 +114,7 @@ SHADERTOY_RANGES: dict[str, Interval] = {
     "iFrameRate": NONNEG,
     "iDate": NONNEG,
     "iChannelTime": NONNEG,
-    "iChannelResolution": NONNEG,
+    "iChannelResolution": Interval(1.0, INF),  # a channel a shader reads is bound
     "iSampleRate": NONNEG,
     "gl_FragCoord": NONNEG,
 }
@@ -115,9 +140,9 @@ _RANGE_1: dict[str, Callable[[Interval], Interval]] = {
     "tanh": lambda x: UNIT,
     "acosh": lambda x: NONNEG,
     "exp": exp_range,
-    "exp2": lambda x: exp_range(x, 2.0),
+    "exp2": lambda x: exp_range(x, math.exp2),
     "log": log_range,
-    "log2": lambda x: log_range(x, 2.0),
+    "log2": lambda x: log_range(x, math.log2),
     "sqrt": sqrt_range,
     "inversesqrt": inversesqrt_range,
     "abs": Interval.abs,
@@ -308,7 +333,7 @@ def widen(scopes: Scopes, names: set[str]) -> Scopes:
     for frame in out.frames:
         for name in names & frame.keys():
             v = frame[name]
-            frame[name] = Value(v.type, UNKNOWN, v.unit, v.origin)
+            frame[name] = Value(v.type, UNKNOWN, v.unit, v.origin)  # zero: not known either
     return out
 
 
@@ -450,7 +475,7 @@ class Model:
                 env = scopes.flat()
                 self.record(init, env)
                 got = Evaluator(self, env).eval(init)
-                value = Value(dtype, got.range, got.unit, got.origin)
+                value = replace(got, type=dtype)
                 if is_global and not const and name in self._written:
                     value = Value(dtype)  # some function assigns it
             scopes.declare(name, value)
@@ -779,7 +804,7 @@ class _Flow:
         if op not in ("=", *_ASSIGN_OPS):
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
-            scopes.assign(name, Value(old.type, got.range, got.unit, got.origin))
+            scopes.assign(name, replace(got, type=old.type))
         else:  # one component or element: each is now the old value or the new one
             scopes.assign(name, Value(old.type, old.range.hull(got.range)))
 
@@ -816,13 +841,14 @@ class Evaluator:
 
     def _float_literal(self, node: Tree) -> Value:
         text = str(node.children[0]).rstrip("fF")
-        return Value("float", Interval.point(float(text)))
+        x = float(text)
+        return Value("float", Interval.point(x), zero=x == 0)
 
     def _int_literal(self, node: Tree) -> Value:
         text = str(node.children[0])
         n = int_value(text)
         ty = "uint" if text[-1] in "uU" else "int"
-        return Value(ty, Interval.point(float(n)) if n is not None else UNKNOWN)
+        return Value(ty, Interval.point(float(n)) if n is not None else UNKNOWN, zero=n == 0)
 
     def _bool_literal(self, node: Tree) -> Value:
         return Value("bool", Interval.point(1.0 if str(node.children[0]) == "true" else 0.0))
@@ -835,7 +861,8 @@ class Evaluator:
     def _unary(self, node: Tree) -> Value:
         op, operand = str(node.children[0]), self._sub(node.children[1])
         if op == "-":
-            return Value(operand.type, -operand.range, operand.unit, operand.origin)
+            comps = tuple(-c for c in operand.comps) if operand.comps is not None else None
+            return replace(operand, range=-operand.range, comps=comps)
         if op == "+":
             return operand
         if op == "!":
@@ -856,26 +883,31 @@ class Evaluator:
         if ty == "bool":
             return Value("bool", BOOL)
         both_units = a.unit and b.unit and T.is_vector(a.type)
-        if op == "+":
-            return Value(ty, a.range + b.range, origin="sum" if both_units else None)
-        if op == "-":
-            return Value(ty, a.range - b.range, origin="difference" if both_units else None)
-        if op == "*":
-            return Value(ty, self._product(a, b, left, right))
-        if op == "/":
-            return Value(ty, a.range / b.range)
+        if op in _ARITH:
+            rng, comps = self._arith(op, a, b, ty, same_expression(left, right))
+            zero = _zero_of(op, a, b)
+            origin = {"+": "sum", "-": "difference"}.get(op) if both_units else None
+            return Value(ty, rng, origin=origin, zero=zero, comps=comps)
         if op == "%" and a.range.lo >= 0 and b.range.lo > 0:
             return Value(ty, Interval(0.0, b.range.hi))
         return Value(ty)
 
-    def _product(self, a: Value, b: Value, left: Node, right: Node) -> Interval:
+    @staticmethod
+    def _arith(
+        op: str, a: Value, b: Value, ty: str | None, same: bool
+    ) -> tuple[Interval, tuple[Interval, ...] | None]:
+        """The range of a + - * / b, per component for vectors."""
         lm, rm = T.matrix_shape(a.type), T.matrix_shape(b.type)
-        if (lm or rm) and not (T.is_scalar(a.type) or T.is_scalar(b.type)):
+        if op == "*" and (lm or rm) and not (T.is_scalar(a.type) or T.is_scalar(b.type)):
             inner = lm[0] if lm else (rm[1] if rm else 0)  # type: ignore[index]
-            return _sum_of(a.range * b.range, inner)  # a row times a column
-        if same_expression(left, right):
-            return a.range.square()
-        return a.range * b.range
+            return _sum_of(a.range * b.range, inner), None  # a row times a column
+        combine = _ARITH[op]
+        if op == "*" and same:
+            combine = _square_of
+        n = T.size(ty)
+        if n > 1 and not (lm or rm):
+            return UNKNOWN, tuple(map(combine, a.parts(n), b.parts(n)))
+        return combine(a.range, b.range), None
 
     def _ternary(self, node: Tree) -> Value:
         cond, then, other = node.children
@@ -892,13 +924,11 @@ class Evaluator:
         op = str(op_token)
         old, new = self._sub(target), self._sub(rhs)
         if op == "=":
-            return Value(old.type or new.type, new.range, new.unit, new.origin)
+            return replace(new, type=old.type or new.type)
         if op in _ASSIGN_OPS:
-            combine = {"+": Interval.__add__, "-": Interval.__sub__, "*": Interval.__mul__,
-                       "/": Interval.__truediv__}[_ASSIGN_OPS[op]]  # fmt: skip
-            if T.matrix_shape(old.type) or T.matrix_shape(new.type):
-                return Value(old.type)
-            return Value(old.type, combine(old.range, new.range))
+            arith = _ASSIGN_OPS[op]
+            rng, comps = self._arith(arith, old, new, old.type, False)
+            return Value(old.type, rng, zero=_zero_of(arith, old, new), comps=comps)
         return Value(old.type)
 
     def _sequence(self, node: Tree) -> Value:
@@ -913,17 +943,25 @@ class Evaluator:
         swizzled = T.swizzle(base.type, name)
         if swizzled is not None:
             unit = base.unit and len(name) == T.size(base.type) and len(set(name)) == len(name)
-            return Value(swizzled, base.range, unit)
+            parts = base.parts(T.size(base.type))
+            picked = tuple(parts[_swizzle_index(c)] for c in name)
+            if len(picked) == 1:
+                return Value(swizzled, picked[0], zero=base.zero)
+            return Value(swizzled, unit=unit, zero=base.zero, comps=picked)
         member = self.model.structs.get(base.type or "", {}).get(name)
         return Value(member)
 
     def _index(self, node: Tree) -> Value:
         base = self._sub(node.children[0])
-        self._sub(node.children[1])
+        index = self._sub(node.children[1]).range
         element = T.element(base.type)
         # a struct array element's range says nothing; a vector's component is in its hull
         known = bool(T.components(element) or T.matrix_shape(element))
-        return Value(element, base.range if known else UNKNOWN)
+        rng = base.range if known else UNKNOWN
+        n = T.size(base.type)
+        if n > 1 and index.is_point and 0 <= index.lo < n:
+            rng = base.parts(n)[int(index.lo)]
+        return Value(element, rng, zero=known and base.zero)
 
     # --- calls and constructors ------------------------------------------------------------
 
@@ -939,7 +977,10 @@ class Evaluator:
         shape = T.matrix_shape(ty)
         if shape and len(args) == 1 and T.is_scalar(args[0].type):
             rng = rng.hull(Interval.point(0.0))  # mat3(s): s on the diagonal, 0 elsewhere
-        return Value(ty, rng, self._unit_constructor(ty, args))
+        zero = any(a.zero or a.range == Interval.point(0.0) for a in args)
+        unit = self._unit_constructor(ty, args)
+        comps = _constructor_parts(ty, args)
+        return Value(ty, rng, unit, zero=zero, comps=comps)
 
     @staticmethod
     def _unit_constructor(ty: str, args: list[Value]) -> bool:
@@ -970,8 +1011,14 @@ class Evaluator:
         if name not in BUILTIN_FUNCTIONS:
             return Value()
         ty = T.builtin_return(name, [v.type for v in values])
-        rng, unit = _builtin(name, values, args)
-        return Value(ty, rng, unit, name)
+        rng, unit, comps = _builtin(name, values, args, T.size(ty))
+        if comps is not None:
+            rng = hull_all(comps)
+        zero = rng.may_be_zero and (name in _REACH_ZERO or any(v.zero for v in values))
+        origin = name
+        if name == "cross" and any(all(c.is_point for c in v.parts(3)) for v in values):
+            origin = "cross-axis"  # with a fixed axis: degenerate only along that axis
+        return Value(ty, rng, unit, origin, zero, comps)
 
 
 def _converted(value: Value, ty: str) -> Interval:
@@ -989,6 +1036,65 @@ def _converted(value: Value, ty: str) -> Interval:
     return r
 
 
+# Builtins whose result really passes through 0 when its range contains it (a length at the
+# origin, sin at kπ, fract at integers), as opposed to a range widened by interval arithmetic.
+_REACH_ZERO = words(
+    """length distance dot cross sin cos tan asin atan sinh tanh fract mod floor ceil trunc
+    round roundEven sign step smoothstep"""
+)
+
+_ARITH: dict[str, Callable[[Interval, Interval], Interval]] = {
+    "+": Interval.__add__,
+    "-": Interval.__sub__,
+    "*": Interval.__mul__,
+    "/": Interval.__truediv__,
+}
+
+
+def _square_of(a: Interval, b: Interval) -> Interval:
+    return a.square()
+
+
+def _zero_of(op: str, a: Value, b: Value) -> bool:
+    """Whether a op b reaches 0 on evidence (see Value.zero)."""
+    if op == "+":  # a sum is surely 0 only when both terms are, and of one sign
+        same_sign = (a.range.is_nonnegative and b.range.is_nonnegative) or (
+            a.range.hi <= 0 and b.range.hi <= 0
+        )
+        return same_sign and a.zero and b.zero
+    if op in "+-" and b.range.is_point:  # x - c crosses 0 where x passes the constant c
+        c = b.range.lo if op == "-" else -b.range.lo
+        return (a.zero and c == 0) or a.range.lo < c < a.range.hi
+    if op == "-":
+        return a.zero and b.range == Interval.point(0.0)
+    if op == "*":
+        return a.zero or b.zero
+    return op == "/" and a.zero
+
+
+def _swizzle_index(letter: str) -> int:
+    for names in ("xyzw", "rgba", "stpq"):
+        if letter in names:
+            return names.index(letter)
+    return 0
+
+
+def _constructor_parts(ty: str, args: list[Value]) -> tuple[Interval, ...] | None:
+    """Component ranges of vecN(...): the arguments' components in order, a scalar broadcast."""
+    n = T.size(ty)
+    if n < 2:
+        return None
+    parts: list[Interval] = []
+    for a in args:
+        k = T.size(a.type)
+        if k == 0:  # a matrix, or an argument of unknown type: sizes cannot be lined up
+            return None
+        parts += [_converted(Value(a.type, c), ty) for c in a.parts(k)]
+    if len(parts) == 1:
+        parts *= n
+    return tuple(parts[:n]) if len(parts) >= n else None
+
+
 def _sum_of(term: Interval, n: int) -> Interval:
     """The sum of n terms each in `term`; any count from 1 to 4 when n is unknown."""
     if n:
@@ -996,84 +1102,128 @@ def _sum_of(term: Interval, n: int) -> Interval:
     return hull_all([term.scale(float(k)) for k in range(1, 5)])
 
 
-def _builtin(name: str, values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
-    """Range and unit-length of a builtin function's result."""
-    ranges = [v.range for v in values]
+Comps = tuple[Interval, ...] | None
+
+
+def _builtin(
+    name: str, values: list[Value], nodes: list[Node], n: int
+) -> tuple[Interval, bool, Comps]:
+    """Range, unit-length and component ranges of a builtin's result (`n` components)."""
     special = _SPECIAL.get(name)
     if special is not None:
         return special(values, nodes)
-    table = {1: _RANGE_1, 2: _RANGE_2, 3: _RANGE_3}.get(len(ranges), {})
+    table = {1: _RANGE_1, 2: _RANGE_2, 3: _RANGE_3}.get(len(values), {})
     rule = table.get(name)
     if rule is None:
-        return UNKNOWN, False
-    return rule(*ranges), False  # type: ignore[operator]
+        return UNKNOWN, False, None
+    if n > 1:  # genType functions work per component; a scalar argument broadcasts
+        columns = zip(*(v.parts(n) for v in values), strict=True)
+        comps = tuple(rule(*column) for column in columns)  # type: ignore[operator]
+        return hull_all(comps), False, comps
+    return rule(*(v.range for v in values)), False, None  # type: ignore[operator]
 
 
 def _n(value: Value) -> int:
     return T.size(value.type)
 
 
-def _dot(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+def _total(terms: Iterable[Interval]) -> Interval:
+    out = Interval.point(0.0)
+    for term in terms:
+        out = out + term
+    return out
+
+
+def _dot(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     if len(values) != 2:
-        return UNKNOWN, False
+        return UNKNOWN, False, None
     a, b = values
     n = _n(a) or _n(b)
     if same_expression(nodes[0], nodes[1]):
-        return (Interval.point(1.0) if a.unit else _sum_of(a.range.square(), n)), False
-    rng = _sum_of(a.range * b.range, n)
+        if a.unit:
+            return Interval.point(1.0), False, None
+        if n:
+            return _total(c.square() for c in a.parts(n)), False, None
+        return _sum_of(a.range.square(), n), False, None
+    if n:
+        rng = _total(x * y for x, y in zip(a.parts(n), b.parts(n), strict=True))
+    else:
+        rng = _sum_of(a.range * b.range, n)
     if a.unit and b.unit:
-        return rng.meet(UNIT), False
+        return rng.meet(UNIT), False, None
     for u, other in ((a, b), (b, a)):
         if u.unit:  # |dot(u, v)| <= |v|
             reach = _length(other, n).hi
             rng = rng.meet(Interval(-reach, reach))
-    return rng, False
+    return rng, False, None
 
 
 def _length(v: Value, n: int) -> Interval:
     if v.unit:
         return Interval.point(1.0)
+    if n and v.comps is not None:
+        return sqrt_range(_total(c.square() for c in v.parts(n)))
     return length_bound(v.range, n or 4)
 
 
-def _length_rule(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
-    return (_length(values[0], _n(values[0])) if values else NONNEG), False
+def _length_rule(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
+    return (_length(values[0], _n(values[0])) if values else NONNEG), False, None
 
 
-def _distance(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+def _distance(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     if len(values) != 2:
-        return NONNEG, False
+        return NONNEG, False, None
     a, b = values
     if a.unit and b.unit:
-        return Interval(0.0, 2.0), False
-    return length_bound(a.range - b.range, _n(a) or _n(b) or 4), False
+        return Interval(0.0, 2.0), False, None
+    n = _n(a) or _n(b)
+    if n:
+        diff = tuple(x - y for x, y in zip(a.parts(n), b.parts(n), strict=True))
+        return _length(Value(a.type, comps=diff), n), False, None
+    return length_bound(a.range - b.range, 4), False, None
 
 
-def _normalize(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
-    r = values[0].range if values else UNKNOWN
-    # each component keeps its sign: normalize(vec3(1.0)) has no negative component
-    return Interval(-1.0 if r.lo < 0 else 0.0, 1.0 if r.hi > 0 else 0.0), True
+def _normalize(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
+    v = values[0] if values else Value()
+    n = _n(v)
+    if n < 2:
+        return Interval(-1.0, 1.0), True, None
+    parts = v.parts(n)
+    longest = _length(Value(v.type, comps=tuple(parts)), n).hi
+    # each component keeps its sign, and one bounded away from 0 stays away after dividing
+    comps = tuple(
+        Interval(
+            c.lo / longest if c.lo > 0 else (-1.0 if c.lo < 0 else 0.0),
+            c.hi / longest if c.hi < 0 else (1.0 if c.hi > 0 else 0.0),
+        )
+        for c in parts
+    )
+    return hull_all(comps), True, comps
 
 
-def _cross(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+def _cross(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     if len(values) != 2:
-        return UNKNOWN, False
+        return UNKNOWN, False, None
     a, b = values
-    rng = a.range * b.range - a.range * b.range
-    return (rng.meet(UNIT) if a.unit and b.unit else rng), False
+    x, y = a.parts(3), b.parts(3)
+    comps = tuple(x[(i + 1) % 3] * y[(i + 2) % 3] - x[(i + 2) % 3] * y[(i + 1) % 3]
+                  for i in range(3))  # fmt: skip
+    if a.unit and b.unit:
+        comps = tuple(c.meet(UNIT) for c in comps)
+    return hull_all(comps), False, comps
 
 
-def _reflect(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+def _reflect(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     unit = len(values) >= 2 and values[0].unit and values[1].unit
-    return (UNIT if unit else UNKNOWN), unit
+    return (UNIT if unit else UNKNOWN), unit, None
 
 
-def _faceforward(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool]:
+def _faceforward(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     n = values[0] if values else Value()
-    return n.range.hull(-n.range), n.unit
+    return n.range.hull(-n.range), n.unit, None
 
 
-_SPECIAL: dict[str, Callable[[list[Value], list[Node]], tuple[Interval, bool]]] = {
+_SPECIAL: dict[str, Callable[[list[Value], list[Node]], tuple[Interval, bool, Comps]]] = {
     "dot": _dot,
     "length": _length_rule,
     "distance": _distance,

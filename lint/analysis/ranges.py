@@ -116,11 +116,13 @@ class Interval:
 
     def __truediv__(self, other: Interval) -> Interval:
         if other.lo > 0 or other.hi < 0:
-            return self * Interval(*sorted((_inv(other.lo), _inv(other.hi))))
-        if other.lo == 0 and other.hi > 0:  # [0, b]: the quotient only grows towards zero
-            return self * Interval(1 / other.hi, INF)
+            quotients = [_div(a, b) for a in (self.lo, self.hi) for b in (other.lo, other.hi)]
+            quotients = [q for q in quotients if not math.isnan(q)]  # inf / inf: a limit
+            return Interval(min(quotients), max(quotients))
+        if other.lo == 0 and other.hi > 0:  # (0, b]: the quotient only grows towards zero
+            return _towards_zero(self, other.hi)
         if other.hi == 0 and other.lo < 0:
-            return self * Interval(-INF, 1 / other.lo)
+            return -_towards_zero(self, -other.lo)
         return UNKNOWN  # the divisor takes both signs, or is exactly zero
 
     def scale(self, k: float) -> Interval:
@@ -150,8 +152,10 @@ class Interval:
         return self.max(lo).min(hi)
 
     def monotone(self, f: Callable[[float], float]) -> Interval:
-        """f applied to the bounds of an increasing f."""
-        return Interval(_safe(f, self.lo, -INF), _safe(f, self.hi, INF))
+        """f applied to the bounds of an increasing f, one ulp outwards (libm's exp or atan
+        may round either way)."""
+        lo, hi = _safe(f, self.lo, -INF), _safe(f, self.hi, INF)
+        return Interval(math.nextafter(lo, -INF), math.nextafter(hi, INF))
 
 
 UNKNOWN = Interval(-INF, INF)
@@ -176,6 +180,21 @@ def _mul(a: float, b: float) -> float:
 
 def _inv(x: float) -> float:
     return 0.0 if math.isinf(x) else 1 / x
+
+
+def _div(a: float, b: float) -> float:
+    if math.isinf(b):
+        return math.nan if math.isinf(a) else 0.0
+    return a / b
+
+
+def _towards_zero(num: Interval, hi: float) -> Interval:
+    """num / d for d in (0, hi]: unbounded away from zero on the numerator's side."""
+    if num.lo >= 0:
+        return Interval(_div(num.lo, hi), INF)
+    if num.hi <= 0:
+        return Interval(-INF, _div(num.hi, hi))
+    return UNKNOWN
 
 
 def _safe(f: Callable[[float], float], x: float, fallback: float) -> float:
@@ -235,18 +254,16 @@ def reaches_tan_pole(x: Interval) -> bool:
     return HALF_PI + k * math.pi <= x.hi
 
 
-def exp_range(x: Interval, base: float = math.e) -> Interval:
+def exp_range(x: Interval, f: Callable[[float], float] = math.exp) -> Interval:
     # exp is never 0: keep the lower bound above zero even where it underflows.
-    out = x.monotone(lambda v: base**v)
+    out = x.monotone(f)
     return Interval(max(out.lo, 5e-324), out.hi)
 
 
-def log_range(x: Interval, base: float = math.e) -> Interval:
+def log_range(x: Interval, f: Callable[[float], float] = math.log) -> Interval:
     if x.hi <= 0:
         return UNKNOWN
-    hi = math.log(x.hi, base) if math.isfinite(x.hi) else INF
-    lo = math.log(x.lo, base) if x.lo > 0 and math.isfinite(x.lo) else -INF
-    return Interval(lo, hi)
+    return Interval(max(x.lo, 0.0), x.hi).monotone(lambda v: f(v) if v > 0 else -INF)
 
 
 def sqrt_range(x: Interval) -> Interval:

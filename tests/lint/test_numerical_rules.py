@@ -1,0 +1,335 @@
+"""Numerical-hazard rules N001-N009: a positive and a negative case each, the messages, the
+unsafe fixes (and that the fixed shader still compiles), and the valid corpus and catalog
+snippets staying clean."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from glint.compiler.glslang import validate
+from glint.lint.finding import Finding
+from glint.lint.options import Options
+from glint.lint.rules import all_rules, rule_doc
+from glint.lint.runner import lint_source, lint_text
+
+ROOT = Path(__file__).resolve().parents[2]
+FAST = Options(select=["N"], glslang=False)
+
+HEADER = """
+vec3 N = normalize(vec3(fragCoord, 1.0) - 0.5);
+vec3 L = normalize(vec3(1.0, 2.0, 3.0) * sin(iTime));
+vec3 V = normalize(vec3(fragCoord.yx, 2.0) - 3.0);
+vec3 H = normalize(vec3(fragCoord, 5.0) + 1.0);
+"""
+
+
+def shader(body: str, helpers: str = "", header: bool = True) -> str:
+    """A complete ShaderToy shader with `body` inside mainImage."""
+    head = HEADER if header else ""
+    return (
+        helpers
+        + "\nvoid mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        + head
+        + body
+        + "\n    fragColor = vec4(0.0, 0.0, 0.0, 1.0);\n}\n"
+    )
+
+
+def lint(src: str) -> list[Finding]:
+    return lint_source(src, "t.glsl", FAST)
+
+
+def codes(src: str, code: str | None = None) -> list[str]:
+    found = [f.code for f in lint(src)]
+    return [c for c in found if code is None or c == code]
+
+
+def only(src: str, code: str) -> Finding:
+    found = [f for f in lint(src) if f.code == code]
+    assert len(found) == 1, found
+    return found[0]
+
+
+def fixed(src: str) -> str:
+    return lint_text(src, "t.glsl", FAST, fix=True, unsafe_fixes=True).text
+
+
+def compiles(src: str) -> bool:
+    return not [d for d in validate(src, "t.glsl") if d.severity == "error"]
+
+
+# --- the registry -----------------------------------------------------------------------------
+
+
+def test_rules_are_registered_with_docs_names_and_fixability() -> None:
+    rules = {c: r for c, r in all_rules().items() if c.startswith("N")}
+    assert sorted(rules) == [f"N00{i}" for i in range(1, 10)]
+    for rule in rules.values():
+        doc = rule_doc(rule)
+        assert doc["summary"] and doc["why"] and doc["example"] and doc["fix"]
+        assert rule.category == "numerical" and rule.name == rule.name.lower()
+    assert rules["N001"].fixable == "unsafe" and rules["N005"].fixable == "unsafe"
+
+
+# --- N001 pow -------------------------------------------------------------------------------
+
+
+def test_pow_of_an_unclamped_dot_product() -> None:
+    f = only(shader("float s = pow(dot(N, H), 32.0);"), "N001")
+    assert f.message == (
+        "pow base dot(N, H) may be negative (range [-1, 1]); clamp it: max(dot(N, H), 0.0)"
+    )
+    assert f.severity == "warning" and f.fix is not None and f.fix.applicability == "unsafe"
+
+
+def test_pow_of_a_clamped_dot_product_is_clean() -> None:
+    assert codes(shader("float s = pow(max(dot(N, H), 0.0), 32.0);"), "N001") == []
+    assert codes(shader("float s = pow(clamp(dot(N, H), 0.0, 1.0), 32.0);"), "N001") == []
+    assert codes(shader("float d = dot(N, H);\nif (d > 0.0) { float s = pow(d, 8.0); }")) == []
+
+
+def test_pow_through_a_variable_and_in_a_helper_with_unknown_vectors() -> None:
+    assert codes(shader("float nh = dot(N, H);\nfloat s = pow(nh, 16.0);"), "N001") == ["N001"]
+    helper = "float spec(vec3 n, vec3 h, float e) { return pow(dot(n, h), e); }\n"
+    f = only(shader("", helper, header=False), "N001")
+    assert "unclamped dot product" in f.message
+
+
+def test_pow_of_an_unknown_value_is_not_reported() -> None:
+    helper = "vec3 gamma(vec3 c) { return pow(c, vec3(1.0 / 2.2)); }\n"
+    assert codes(shader("", helper, header=False)) == []
+
+
+def test_pow_fix_inserts_max_and_still_compiles() -> None:
+    src = shader("float s = pow(dot(N, H), 32.0);\nfragColor = vec4(s);")
+    out = fixed(src)
+    assert "pow(max(dot(N, H), 0.0), 32.0)" in out
+    assert codes(out, "N001") == []
+    assert compiles(out)
+
+
+def test_no_fix_on_a_macro_line() -> None:
+    src = "#define SPEC(a, b) pow(dot(a, b), 8.0)\n" + shader("float s = SPEC(N, H);")
+    f = only(src, "N001")
+    assert f.fix is None
+
+
+# --- N002 sqrt / log ------------------------------------------------------------------------
+
+
+def test_sqrt_of_a_value_that_may_be_negative() -> None:
+    f = only(shader("float s = sqrt(sin(iTime));"), "N002")
+    assert "sqrt of sin(iTime), which may be negative (range [-1, 1])" in f.message
+    out = fixed(shader("float s = sqrt(sin(iTime));\nfragColor = vec4(s);"))
+    assert "sqrt(max(sin(iTime), 0.0))" in out and compiles(out)
+
+
+def test_log_of_a_value_that_may_be_zero() -> None:
+    f = only(shader("float l = log(max(sin(iTime), 0.0));"), "N002")
+    assert "log of max(sin(iTime), 0.0), which may be zero or negative" in f.message
+    assert f.fix is not None and "1e-6" in f.fix.edits[0].content
+
+
+def test_sqrt_and_log_of_safe_values_are_clean() -> None:
+    body = """
+    float a = sqrt(max(sin(iTime), 0.0));
+    float b = sqrt(dot(N, N));
+    float c = log(1.0 + iTime);
+    float d = log2(exp(sin(iTime)));
+    float r2 = dot(fragCoord, fragCoord);
+    if (r2 > 1.0) return;
+    float e = sqrt(1.0 - r2);
+    """
+    assert codes(shader(body)) == []
+
+
+def test_sqrt_of_one_minus_an_unknown_square_is_not_reported() -> None:
+    helper = "float sinOf(float c) { return sqrt(1.0 - c * c); }\n"
+    assert codes(shader("", helper, header=False)) == []
+
+
+# --- N003 acos / asin -------------------------------------------------------------------------
+
+
+def test_acos_of_an_unclamped_dot_of_unit_vectors() -> None:
+    f = only(shader("float a = acos(dot(N, L));"), "N003")
+    assert "unclamped dot product" in f.message and "rounds past" in f.message
+    out = fixed(shader("float a = acos(dot(N, L));\nfragColor = vec4(a);"))
+    assert "acos(clamp(dot(N, L), -1.0, 1.0))" in out and compiles(out)
+
+
+def test_asin_of_a_value_beyond_one() -> None:
+    f = only(shader("float a = asin(sin(iTime) * 1.5);"), "N003")
+    assert "range [-1.5, 1.5]" in f.message
+
+
+def test_acos_of_a_clamped_value_is_clean() -> None:
+    assert codes(shader("float a = acos(clamp(dot(N, L), -1.0, 1.0));")) == []
+    assert codes(shader("float a = acos(0.5 * sin(iTime));")) == []
+
+
+# --- N004 tan -------------------------------------------------------------------------------
+
+
+def test_tan_reaching_a_pole() -> None:
+    assert codes(shader("float k = tan(iTime);")) == ["N004"]
+    assert codes(shader("float k = tan(sin(iTime) * 2.0);")) == ["N004"]
+
+
+def test_tan_away_from_poles_or_unknown_is_clean() -> None:
+    assert codes(shader("float k = tan(sin(iTime));")) == []  # |x| <= 1 < pi/2
+    assert codes(shader("float k = tan(radians(45.0));")) == []
+    assert codes(shader("", "float f(float a) { return tan(a); }\n", header=False)) == []
+
+
+# --- N005 division --------------------------------------------------------------------------
+
+
+def test_division_by_a_dot_product_or_length() -> None:
+    f = only(shader("float a = 1.0 / dot(N, L);"), "N005")
+    assert "division by dot(N, L), which may be 0 (range [-1, 1])" in f.message
+    assert f.fix is None  # a floor would flip the sign of negative divisors: no fix
+    f = only(shader("vec2 d = fragCoord / length(fragCoord);"), "N005")
+    assert "add an epsilon: max(length(fragCoord), 1e-4)" in f.message
+    assert codes(shader("float k = 2.0;\nk /= max(dot(N, L), 0.0);"), "N005") == ["N005"]
+
+
+def test_division_fix_inserts_an_epsilon_and_compiles() -> None:
+    src = shader("vec2 d = fragCoord - 0.5 * iResolution.xy;\nfloat a = 1.0 / dot(d, d);\n"
+                 "fragColor = vec4(a);")  # fmt: skip
+    out = fixed(src)
+    assert "1.0 / max(dot(d, d), 1e-4)" in out and codes(out) == [] and compiles(out)
+
+
+def test_division_by_safe_values_is_clean() -> None:
+    body = """
+    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
+    float a = 1.0 / max(dot(N, L), 1e-4);
+    float b = 1.0 / (abs(dot(N, V)) + 1e-5);
+    float c = 1.0 / (1.0 + dot(uv, uv));
+    float d = 0.5 / (2.0 + sin(iTime));
+    """
+    assert codes(shader(body)) == []
+
+
+def test_division_by_products_widened_by_interval_arithmetic_is_clean() -> None:
+    # GGX: f = NoH^2 (a2 - 1) + 1 >= a2 > 0, though intervals only see [0, inf)
+    helper = """
+    float D(float NoH, float a) {
+        float a2 = a * a;
+        float f = (NoH * a2 - NoH) * NoH + 1.0;
+        return a2 / (3.14159 * f * f);
+    }
+    """
+    body = "float n = clamp(dot(N, H), 0.0, 1.0);\nfloat d = D(n, 0.5);"
+    assert codes(shader(body, helper)) == []
+
+
+def test_division_by_constant_zero() -> None:
+    assert codes(shader("float z = 1.0 / 0.0;")) == ["N005"]
+
+
+# --- N006 normalize ---------------------------------------------------------------------------
+
+
+def test_normalize_of_a_sum_of_unit_vectors_and_of_a_cross_product() -> None:
+    f = only(shader("vec3 h = normalize(L + V);"), "N006")
+    assert "the sum of two unit vectors is zero when they are opposite" in f.message
+    assert codes(shader("vec3 t = normalize(cross(N, L));")) == ["N006"]
+    assert codes(shader("vec3 z = normalize(vec3(0.0));")) == ["N006"]
+
+
+def test_normalize_of_other_vectors_is_clean() -> None:
+    body = """
+    vec3 a = normalize(vec3(fragCoord, 1.0));
+    vec3 b = normalize(N + vec3(0.0, 2.0, 0.0));
+    vec3 up = normalize(cross(N, vec3(0.0, 1.0, 0.0)));
+    """
+    assert codes(shader(body)) == []
+
+
+# --- N007 mod / atan --------------------------------------------------------------------------
+
+
+def test_mod_by_zero_and_atan_of_zero_zero_are_errors() -> None:
+    f = only(shader("float m = mod(iTime, 0.0);"), "N007")
+    assert f.severity == "error"
+    f = only(shader("#define ZERO 0.0\nfloat a = atan(ZERO, 0.0);"), "N007")
+    assert f.severity == "error" and f.message == "atan(0, 0) is undefined"
+
+
+def test_atan_where_both_arguments_may_be_zero() -> None:
+    f = only(shader("vec2 p = vec2(max(sin(iTime), 0.0), 0.5 * sin(iTime));\n"
+                    "float a = atan(p.y, p.x);"), "N007")  # fmt: skip
+    assert f.severity == "warning" and "both may be 0" in f.message
+
+
+def test_mod_and_atan_with_safe_arguments_are_clean() -> None:
+    body = """
+    float m = mod(iTime, 2.0);
+    float a = atan(sin(iTime), cos(iTime));
+    float b = atan(fragCoord.y - 0.5 * iResolution.y, fragCoord.x);
+    float c = atan(sin(iTime), 1.0);
+    """
+    assert codes(shader(body)) == []
+
+
+# --- N008 clamp / N009 smoothstep -------------------------------------------------------------
+
+
+def test_clamp_with_inverted_constant_bounds() -> None:
+    f = only(shader("float c = clamp(sin(iTime), 1.0, 0.0);"), "N008")
+    assert f.severity == "error" and "1.0 > 0.0" in f.message
+    assert codes(shader("float c = clamp(sin(iTime), 0.0, 1.0);")) == []
+    assert codes(shader("", "float f(float x, float a) { return clamp(x, a, 1.0); }\n",
+                        header=False)) == []  # fmt: skip
+
+
+def test_smoothstep_with_inverted_edges_and_its_fix() -> None:
+    src = shader("float s = smoothstep(1.0, 0.0, sin(iTime));\nfragColor = vec4(s);")
+    f = only(src, "N009")
+    assert f.severity == "error" and f.fix is not None and f.fix.applicability == "safe"
+    out = lint_text(src, "t.glsl", FAST, fix=True).text
+    assert "(1.0 - smoothstep(0.0, 1.0, sin(iTime)))" in out and compiles(out)
+    assert codes(out) == []
+
+
+def test_smoothstep_with_equal_edges_has_no_fix() -> None:
+    f = only(shader("float s = smoothstep(0.5, 0.5, sin(iTime));"), "N009")
+    assert f.fix is None and "equal" in f.message
+
+
+def test_smoothstep_in_order_is_clean() -> None:
+    assert codes(shader("float s = smoothstep(0.0, 0.01, abs(sin(iTime)));")) == []
+
+
+# --- the valid corpus and the catalog ----------------------------------------------------------
+
+# Correct shaders are clean (16_pbr's h = normalize(v + l) is safe because the one call passes
+# v = +z and an l whose y is at least 0.34; sdSegment's dot(ba, ba) is non-zero for every
+# segment the file draws), but for one true hazard: 06_macros divides by the distance to a ring,
+# abs(length(p) - r), which is 0 on the ring itself (+inf there, which the clamp then hides).
+EXPECTED_CORPUS: dict[str, list[str]] = {"06_macros.glsl": ["N005"]}
+
+
+@pytest.mark.parametrize(
+    "path", sorted((ROOT / "tests/corpus/valid").glob("*.glsl")), ids=lambda p: p.name
+)
+def test_valid_corpus(path: Path) -> None:
+    found = codes(path.read_text(encoding="utf-8"))
+    assert found == EXPECTED_CORPUS.get(path.name, [])
+
+
+# The catalog: clean too. (The two cameras' cross(ww, world up) is degenerate only for a view
+# straight up or down, a fixed-axis cross product N006 deliberately leaves alone.)
+EXPECTED_SNIPPETS: dict[str, list[str]] = {}
+
+
+@pytest.mark.parametrize(
+    "path", sorted((ROOT / "snippets").rglob("*.glsl")), ids=lambda p: str(p.relative_to(ROOT))
+)
+def test_catalog_snippets(path: Path) -> None:
+    found = codes(path.read_text(encoding="utf-8"))
+    assert found == EXPECTED_SNIPPETS.get(path.name, [])
