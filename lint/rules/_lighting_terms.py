@@ -88,10 +88,16 @@ def binary_op(node: Node) -> str | None:
 
 def operands(node: Node, op: str) -> list[Node]:
     """The operands of a chain of one associative operator (`a + b + c` -> [a, b, c])."""
-    if binary_op(node) == op:
-        assert isinstance(node, Tree)
-        return operands(node.children[0], op) + operands(node.children[2], op)
-    return [node]
+    found: list[Node] = []
+    stack = [node]  # iterative: long sums must not exhaust the stack
+    while stack:
+        item = stack.pop()
+        if binary_op(item) == op:
+            assert isinstance(item, Tree)
+            stack += [item.children[2], item.children[0]]
+        else:
+            found.append(item)
+    return found
 
 
 def parents(root: Tree) -> dict[int, Tree]:
@@ -288,17 +294,6 @@ def writes_of(node: Tree, out_params: dict[str, list[int]]) -> set[str]:
 def out_param_map(ctx: LintContext) -> dict[str, list[int]]:
     return {f.name: [i for i, p in enumerate(f.param_order) if "out" in f.params[p][0]]
             for f in functions(ctx)}  # fmt: skip
-
-
-def enclosing_function(ctx: LintContext, node: Node) -> Function | None:
-    line = node.meta.line if isinstance(node, Tree) and not node.meta.empty else None
-    if line is None:
-        return None
-    for fn in functions(ctx):
-        meta = fn.node.meta
-        if meta.start_pos <= node.meta.start_pos and node.meta.end_pos <= meta.end_pos:
-            return fn
-    return None
 
 
 def resolve(node: Node, fn: Function | None, depth: int = 4) -> Node:
