@@ -120,6 +120,7 @@ class FresnelCosine(Rule):
                 )
 
 
+_DIFFUSE_FUNCTION = re.compile(r"diffuse|lambert|brdf|shade|light|illum|^fd|^dif", re.I)
 _CLAMPS = {"max", "clamp", "saturate", "abs", "smoothstep", "step", "sqrt", "pow"}
 _COLOUR_TYPES = ("vec3", "vec4")
 
@@ -134,9 +135,11 @@ class UnclampedCosine(Rule):
     pow or sqrt of the sum is undefined.
 
     The range comes from the semantic model (a value whose interval may be negative) when it
-    is available; candidates are dot(N, L) / dot(N, V) calls and locals holding one. A cosine
-    that the function compares (`if (ndl > 0.0)`) is taken as guarded, and a product with a
-    constant only (half-Lambert's `dot(N, L) * 0.5 + 0.5`) is not a lighting term.
+    is available; candidates are dot(N, L) / dot(N, V) calls and locals holding one, in a
+    product with a colour (a vec3/vec4 factor or target) or returned bare by a function named
+    like diffuse, Lambert, BRDF, shade or light. A cosine that the function compares
+    (`if (ndl > 0.0)`) is taken as guarded, and a product with a scalar constant only
+    (half-Lambert's `dot(N, L) * 0.5 + 0.5`) is not a lighting term.
 
     Example:
         vec3 col = albedo * dot(N, L);
@@ -158,7 +161,9 @@ class UnclampedCosine(Rule):
             for node in walk(fn.body):
                 if node.data == "jump_statement" and len(node.children) == 2:
                     candidates = [node.children[1]]
-                    colour = True  # a function returning the bare cosine is a diffuse term
+                    # a bare cosine returned by a diffuse-named function is its diffuse term;
+                    # elsewhere (`facing(n, v)`) a signed cosine may be the point
+                    colour = bool(_DIFFUSE_FUNCTION.search(fn.name))
                 elif binary_op(node) == "*" and binary_op(up.get(id(node))) != "*":
                     candidates = operands(node, "*")
                     # a scalar constant scales the cosine (half-Lambert); a colour does not
@@ -553,7 +558,9 @@ class MissingOutputTransfer(Rule):
     effects are left alone: their colours are already display values). An encoding is a pow
     by an exponent of 0.38 to 0.5 (1/2.2, 0.4545, 1/2.4), a pow by something named gamma, a
     sqrt of a colour (gamma 2), or a function named like gamma/sRGB/outputTransfer; anywhere
-    in the shader counts, since where it sits is for L006 to judge.
+    in the shader counts, since where it sits is for L006 to judge. A buffer pass that hands
+    linear colour to the Image pass is correct without an encoding: suppress L005 there
+    (`// glint: file-ignore[L005, L007]`).
 
     Example:
         col = albedo * max(dot(n, l), 0.0);

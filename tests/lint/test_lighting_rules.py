@@ -131,6 +131,7 @@ def test_l002_clamped_guarded_and_half_lambert_are_fine() -> None:
     if (ndl <= 0.0) return col;
     return col + albedo * ndl;
 }
+float facing(vec3 n, vec3 v) { return dot(n, v); }
 """
     assert found(src) == []
 
