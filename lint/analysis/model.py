@@ -328,12 +328,14 @@ def join_scopes(items: Sequence[Scopes]) -> Scopes:
     return Scopes(frames)
 
 
-def widen(scopes: Scopes, names: set[str]) -> Scopes:
+def widen(scopes: Scopes, names: set[str], keep_flags: bool = True) -> Scopes:
+    """The variables `names` with unknown ranges; unit and origin kept unless told not to
+    (a loop's later passes take them away where the body breaks them)."""
     out = scopes.copy()
     for frame in out.frames:
         for name in names & frame.keys():
             v = frame[name]
-            frame[name] = Value(v.type, UNKNOWN, v.unit, v.origin)  # zero: not known either
+            frame[name] = Value(v.type, UNKNOWN, v.unit, v.origin) if keep_flags else Value(v.type)
     return out
 
 
@@ -731,30 +733,43 @@ class _Flow:
             for t in _written_targets(n, self.model)
             if (name := root_variable(t)) is not None
         }
+        # Nested loops would multiply the passes: deep inside, one pass that knows nothing of
+        # what the loop assigns (sound at once, no fixpoint needed). Elsewhere the passes stop
+        # when the loop-head state is stable, and fall back to that one pass if it is not.
+        deep = sum(not lp.switch for lp in self.loops) >= 3
         entry = widen(scopes, assigned)
-        state = entry
-        exits = _Loop()
-        for _ in range(4):
-            self.loops.append(_Loop())
-            inner = state.copy()
-            if cond is not None and test_first:
-                self.expression(cond, inner)
-                inner = self.narrowed(inner, cond, True)
-            self.statement(body, inner)
-            exits = self.loops.pop()
-            inner = join_scopes([inner, *exits.continues])
-            if update is not None:
-                self.expression(update, inner)
-            if cond is not None and not test_first:
-                self.expression(cond, inner)
+        state, converged = entry, False
+        for _ in range(0 if deep else 4):
+            inner, exits = self._pass(state, cond, update, body, test_first)
             new_state = widen(join_scopes([entry, inner]), assigned)
-            if new_state.flat() == state.flat():
+            converged = new_state.flat() == state.flat()
+            if converged:
                 break
             state = new_state
+        if not converged:
+            state = widen(scopes, assigned, keep_flags=False)
+            _, exits = self._pass(state, cond, update, body, test_first)
         leave = self.narrowed(state, cond, False) if cond is not None else state.copy()
         if cond is None:
             leave.dead = True  # `for (;;)` ends only through a break
         scopes.become(join_scopes([leave, *exits.breaks]))
+
+    def _pass(self, state: Scopes, cond: Node | None, update: Node | None, body: Node,
+              test_first: bool) -> tuple[Scopes, _Loop]:  # fmt: skip
+        """One run of the loop from `state`: the state after it, and its breaks/continues."""
+        self.loops.append(_Loop())
+        inner = state.copy()
+        if cond is not None and test_first:
+            self.expression(cond, inner)
+            inner = self.narrowed(inner, cond, True)
+        self.statement(body, inner)
+        exits = self.loops.pop()
+        inner = join_scopes([inner, *exits.continues])
+        if update is not None:
+            self.expression(update, inner)
+        if cond is not None and not test_first:
+            self.expression(cond, inner)
+        return inner, exits
 
     def narrowed(self, scopes: Scopes, cond: Node | None, truth: bool) -> Scopes:
         out = scopes.copy()
@@ -944,7 +959,10 @@ class Evaluator:
         if swizzled is not None:
             unit = base.unit and len(name) == T.size(base.type) and len(set(name)) == len(name)
             parts = base.parts(T.size(base.type))
-            picked = tuple(parts[_swizzle_index(c)] for c in name)
+            indices = [_swizzle_index(c) for c in name]
+            if max(indices) >= len(parts):  # `v2.z`: invalid, glslang reports it
+                return Value(swizzled)
+            picked = tuple(parts[i] for i in indices)
             if len(picked) == 1:
                 return Value(swizzled, picked[0], zero=base.zero)
             return Value(swizzled, unit=unit, zero=base.zero, comps=picked)

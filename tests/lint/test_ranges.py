@@ -406,3 +406,42 @@ def test_deep_nesting_raises_recursion_error_the_runner_reports() -> None:
     src = f"void mainImage(out vec4 c, in vec2 p) {{ float x = {deep}; c = vec4(x); }}"
     findings = lint_source(src, "deep.glsl", Options(select=["N", "C006"], glslang=False))
     assert all(f.code == "C006" for f in findings)
+
+
+def test_switch_joins_the_cases_and_the_fall_through() -> None:
+    body = """
+    float x = 0.0;
+    switch (iFrame) {
+        case 0: x = 1.0; break;
+        case 1: x = 2.0;
+        default: x += 5.0;
+    }
+    float y = x;
+    """
+    assert rng(body, "x") == Interval(1.0, 7.0)
+
+
+def test_while_and_do_loops_narrow_on_exit() -> None:
+    body = "float x = iTime;\nwhile (x > 1.0) { x -= 1.0; }\nfloat y = x;"
+    assert rng(body, "x").hi == 1.0
+    body = "float x = 4.0;\ndo { x *= 0.5; } while (x > 2.0);\nfloat y = x;"
+    assert rng(body, "x").hi == 2.0
+
+
+def test_deeply_nested_loops_stay_fast() -> None:
+    import time
+
+    body = "float t = 0.0;\nvec3 n = normalize(vec3(1.0));\n"
+    for i in range(12):
+        body += f"for (int i{i} = 0; i{i} < 4; i{i}++) {{ t += 1.0; n = normalize(n + t); "
+    body += "}" * 12
+    start = time.perf_counter()
+    ctx, model = model_of(body)
+    assert model.range_of(node(ctx, "t", nth=-1)).is_unknown
+    assert time.perf_counter() - start < 5.0
+
+
+def test_invalid_code_gives_unknowns_not_crashes() -> None:
+    ctx, model = model_of("vec2 v = vec2(1.0);\nfloat z = v.z + undefinedThing.x * foo(3.0);")
+    assert model.range_of(node(ctx, "v.z")).is_unknown
+    assert model.type_of(node(ctx, "foo(3.0)")) is None
