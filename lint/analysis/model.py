@@ -538,15 +538,30 @@ class Model:
         return self._bound(env, right, _FLIP[op], left)
 
     def _bound(self, env: Env, target: Node, op: str, other: Node) -> Env:
+        """Narrow a scalar variable `x`, or one component `v.y` of a vector variable."""
+        component = None
+        if is_tree(target, "field") and is_tree(target.children[0], "variable"):  # type: ignore
+            letter = str(target.children[1])  # type: ignore[union-attr]
+            if len(letter) != 1:
+                return env
+            component, target = _swizzle_index(letter), target.children[0]  # type: ignore
         if not is_tree(target, "variable"):
             return env
         name = str(target.children[0])  # type: ignore[union-attr]
         old = env.get(name)
-        if old is None or not T.is_scalar(old.type):
+        if old is None or (component is None and not T.is_scalar(old.type)):
             return env
         limit = Evaluator(self, env).eval(other).range
         bound = Interval(-INF, limit.hi) if op in ("<", "<=") else Interval(limit.lo, INF)
-        narrowed = replace(old, range=old.range.meet(bound))
+        if component is None:
+            narrowed = replace(old, range=old.range.meet(bound))
+        else:
+            n = T.size(old.type)
+            if component >= n:
+                return env
+            parts = old.parts(n)
+            parts[component] = parts[component].meet(bound)
+            narrowed = replace(old, comps=tuple(parts))
         return {**env, name: narrowed} if narrowed != old else env
 
 
@@ -963,8 +978,8 @@ class Evaluator:
             if max(indices) >= len(parts):  # `v2.z`: invalid, glslang reports it
                 return Value(swizzled)
             picked = tuple(parts[i] for i in indices)
-            if len(picked) == 1:
-                return Value(swizzled, picked[0], zero=base.zero)
+            if len(picked) == 1:  # the vector's evidence of a 0 may be another component's
+                return Value(swizzled, picked[0], zero=base.zero and not picked[0].is_unknown)
             return Value(swizzled, unit=unit, zero=base.zero, comps=picked)
         member = self.model.structs.get(base.type or "", {}).get(name)
         return Value(member)
@@ -1082,7 +1097,8 @@ def _zero_of(op: str, a: Value, b: Value) -> bool:
         return same_sign and a.zero and b.zero
     if op in "+-" and b.range.is_point:  # x - c crosses 0 where x passes the constant c
         c = b.range.lo if op == "-" else -b.range.lo
-        return (a.zero and c == 0) or a.range.lo < c < a.range.hi
+        known = not a.range.is_unknown  # an unknown x passing c is no evidence
+        return (a.zero and c == 0) or (known and a.range.lo < c < a.range.hi)
     if op == "-":
         return a.zero and b.range == Interval.point(0.0)
     if op == "*":

@@ -154,8 +154,7 @@ class Interval:
     def monotone(self, f: Callable[[float], float]) -> Interval:
         """f applied to the bounds of an increasing f, one ulp outwards (libm's exp or atan
         may round either way)."""
-        lo, hi = _safe(f, self.lo, -INF), _safe(f, self.hi, INF)
-        return Interval(math.nextafter(lo, -INF), math.nextafter(hi, INF))
+        return Interval(_outward(f, self.lo, -INF), _outward(f, self.hi, INF))
 
 
 UNKNOWN = Interval(-INF, INF)
@@ -195,6 +194,17 @@ def _towards_zero(num: Interval, hi: float) -> Interval:
     if num.hi <= 0:
         return Interval(-INF, _div(num.hi, hi))
     return UNKNOWN
+
+
+def _outward(f: Callable[[float], float], x: float, direction: float) -> float:
+    y = _safe(f, x, direction)
+    if _integral(x) and _integral(y):
+        return y  # exp(0) = 1, log2(8) = 3: libm gets integers exactly
+    return math.nextafter(y, direction)
+
+
+def _integral(x: float) -> bool:
+    return not math.isfinite(x) or x == int(x)
 
 
 def _safe(f: Callable[[float], float], x: float, fallback: float) -> float:
@@ -325,9 +335,18 @@ def step_range(edge: Interval, x: Interval) -> Interval:
 
 
 def mix_range(x: Interval, y: Interval, a: Interval) -> Interval:
+    """x (1 - a) + y a is linear in each of x, y and a: its extremes are at the corners."""
     if a.within(0, 1):
         return x.hull(y)
-    return x + (y - x) * a
+    values = [
+        _mul(xv, 1 - av) + _mul(yv, av)
+        for xv in (x.lo, x.hi)
+        for yv in (y.lo, y.hi)
+        for av in (a.lo, a.hi)
+    ]
+    if any(math.isnan(v) for v in values):
+        return UNKNOWN
+    return Interval(min(values), max(values))
 
 
 def sign_range(x: Interval) -> Interval:

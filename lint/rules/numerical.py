@@ -31,14 +31,19 @@ LOG_FLOOR = "1e-6"  # log(0) is -inf, so the floor for log must be above zero
 # --- evidence: when a range really reaches a bad value --------------------------------------
 
 
+# How far past a limit a bound must be to count: 1 - exp(-x) may come out as -2e-16 from the
+# bounds' own rounding, which is not a negative value anyone wrote.
+SLACK = 1e-9
+
+
 def reaches_below(r: Interval, c: float) -> bool:
     """Values below c are reached on evidence: a finite lower bound under c, or a range that
     lies under c entirely. (-inf, 1] from `1.0 - x * x` with x unknown is no such evidence."""
-    return r.lo < c and (r.lo > -math.inf or r.hi <= c)
+    return r.lo < c - SLACK and (r.lo > -math.inf or r.hi <= c)
 
 
 def reaches_above(r: Interval, c: float) -> bool:
-    return r.hi > c and (r.hi < math.inf or r.lo >= c)
+    return r.hi > c + SLACK and (r.hi < math.inf or r.lo >= c)
 
 
 def reaches_zero(v: Value) -> bool:
@@ -401,9 +406,11 @@ class ModAtanZero(NumericalRule):
 
 
 def _both_zero(a: Value, b: Value) -> bool:
-    # sin and cos of one angle are never 0 together: trigonometric pairs are left alone
+    # Only bounded coordinates that reach 0 on evidence: polar angles of screen positions
+    # (uv - 0.5) meet (0, 0) at most at one pixel centre, and sin and cos of one angle never
+    # vanish together, so those are left alone.
     trig = {"sin", "cos"}
-    return all(reaches_zero(v) and v.origin not in trig for v in (a, b))
+    return all(reaches_zero(v) and v.range.is_bounded and v.origin not in trig for v in (a, b))
 
 
 @register

@@ -333,3 +333,24 @@ EXPECTED_SNIPPETS: dict[str, list[str]] = {}
 def test_catalog_snippets(path: Path) -> None:
     found = codes(path.read_text(encoding="utf-8"))
     assert found == EXPECTED_SNIPPETS.get(path.name, [])
+
+
+# --- precision: what the analysis proves safe -------------------------------------------------
+
+
+def test_a_guard_on_one_component_protects_the_division() -> None:
+    body = "vec3 rd = normalize(vec3(fragCoord, -1.5));\nfloat t = 1.0;\n" \
+        "if (rd.y < -1e-4) { t = (-0.8 - 2.0) / rd.y; }"  # fmt: skip
+    assert codes(shader(body)) == []
+
+
+def test_rounding_of_range_bounds_is_not_a_negative_value() -> None:
+    body = "vec3 c = max(vec3(fragCoord, 1.0), vec3(0.0));\nc = 1.0 - exp(-2.0 * c);\n" \
+        "fragColor = vec4(pow(c, vec3(1.0 / 2.2)), 1.0);"  # fmt: skip
+    assert codes(shader(body)) == []
+
+
+def test_polar_angle_of_unknown_coordinates_is_not_reported() -> None:
+    helper = "float angle(vec2 p) { return atan(p.y, p.x); }\n"
+    body = "float a = angle(fragCoord / iResolution.y - vec2(0.5));"
+    assert codes(shader(body, helper)) == []
