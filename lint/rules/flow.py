@@ -112,8 +112,7 @@ class ColourReadBeforeWritten(Rule):
                 if read.var is colour:
                     what = f"`{read.var.name}{mask_names(read.var, read.missing)}`"
                     message = (
-                        f"{what} is read before mainImage writes it; out parameters "
-                        "start undefined"
+                        f"{what} is read before mainImage writes it; out parameters start undefined"
                     )
                     yield self.report(ctx, read.node, message)
 

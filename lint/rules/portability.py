@@ -11,9 +11,11 @@ from lark import Token, Tree
 
 from glint.compiler.glsl.keywords import RESERVED_WORDS, words
 from glint.compiler.glsl.pptokens import tokenize
-from glint.compiler.shadertoy import UNIFORM_NAMES, UNIFORMS, is_complete
+from glint.compiler.shadertoy import UNIFORM_NAMES, is_complete
 
 from ..analysis.flow import parameter_parts, prototype_parts, type_of_declaration
+from ..analysis.model import Model, semantic_model
+from ..analysis.types import is_float_like
 from ..context import LintContext, Node, walk
 from ..finding import Finding, Fix
 from . import Rule, register
@@ -350,8 +352,10 @@ class OldShadertoyUniform(Rule):
                 yield self.report(ctx, node, message, fix)
             elif node.data == "field" and "iChannelResolution" not in own:
                 base = node.children[0]
-                if isinstance(base, Tree) and base.data == "variable" and (
-                    base.children[0] == "iChannelResolution"
+                if (
+                    isinstance(base, Tree)
+                    and base.data == "variable"
+                    and (base.children[0] == "iChannelResolution")
                 ):
                     message = ("`iChannelResolution` is an array, one vec3 per channel: "
                                "index it, e.g. `iChannelResolution[0].xy`")  # fmt: skip
@@ -372,237 +376,6 @@ INT_OVERLOADS = frozenset({"abs", "sign", "min", "max", "clamp"})
 FLOAT_ARG_AT = {"texture": 2, "textureProj": 2, "textureLod": 2, "textureProjLod": 2}
 _ARITHMETIC = frozenset({"+", "-", "*", "/", "<", ">", "<=", ">=", "==", "!="})
 _DECIMAL = re.compile(r"^(0|[1-9][0-9]*)$")
-_GENTYPE = FLOAT_ONLY | INT_OVERLOADS | {"modf"}
-_VECTOR = re.compile(r"^([iub]?)vec([234])$")
-_MATRIX = re.compile(r"^mat([234])(x[234])?$")
-
-
-def _float_like(t: str | None) -> bool:
-    """float, a float vector or a matrix: an operand beside which an int does not convert."""
-    return t is not None and (t == "float" or bool(re.match(r"^(vec[234]|mat[234](x[234])?)$", t)))
-
-
-class _Types:
-    """Types of expressions, as far as declarations say them: enough to tell the context of
-    an int literal. Unknown (None) whenever unsure; two passes over the tree, no recursion
-    (a long `a + b + c + ...` chain is a deep tree)."""
-
-    def __init__(self, tree: Tree) -> None:
-        self.of: dict[int, str | None] = {}
-        self.returns: dict[str, set[str]] = {}
-        self.params: dict[str, list[list[str]]] = {}
-        self.structs: dict[str, dict[str, str]] = {}
-        self._collect(tree)
-        self._scopes(tree)
-        self._expressions(tree)
-
-    def __call__(self, node: Node) -> str | None:
-        return self.of.get(id(node))
-
-    @staticmethod
-    def function_names(tree: Tree) -> list[str]:
-        return [str(p.children[1]) for p in _prototypes(tree)]
-
-    def _collect(self, tree: Tree) -> None:
-        for node in walk(tree):
-            if node.data == "struct_specifier" and isinstance(node.children[0], Token):
-                members: dict[str, str] = {}
-                for member in node.children[1:]:
-                    spec = next(c for c in member.children if isinstance(c, Tree)  # type: ignore[union-attr]
-                                and c.data == "type_specifier")  # fmt: skip
-                    mtype, arr = type_of_declaration(spec)
-                    for decl in member.children:  # type: ignore[union-attr]
-                        if isinstance(decl, Tree) and decl.data == "struct_declarator":
-                            is_arr = arr or len(decl.children) > 1
-                            members[str(decl.children[0])] = mtype + ("[]" if is_arr else "")
-                self.structs[str(node.children[0])] = members
-        for proto in _prototypes(tree):
-            ret, name, params = prototype_parts(proto)
-            self.returns.setdefault(str(name), set()).add(ret)
-            types = [t + ("[]" if arr else "") for _, t, arr, _ in map(parameter_parts, params)]
-            self.params.setdefault(str(name), []).append(types if types != ["void"] else [])
-
-    def _scopes(self, tree: Tree) -> None:
-        """Pre-order with a scope stack: the declared type of every variable reference."""
-        scopes: list[dict[str, str]] = [{}]
-        for ty, decl in UNIFORMS:
-            scopes[0][decl.split("[")[0]] = ty + ("[]" if "[" in decl else "")
-        scopes[0].update({"gl_FragCoord": "vec4", "gl_PointCoord": "vec2",
-                          "gl_FragDepth": "float", "gl_FrontFacing": "bool"})  # fmt: skip
-        stack: list[tuple[str, object]] = [("node", tree)]
-        while stack:
-            action, item = stack.pop()
-            if action == "push":
-                scopes.append({})
-            elif action == "pop":
-                scopes.pop()
-            elif action == "declare":
-                name, ty = item  # type: ignore[misc]
-                scopes[-1][name] = ty
-            elif isinstance(item, Tree):
-                stack.extend(reversed(self._steps(item, scopes)))
-
-    def _steps(self, node: Tree, scopes: list[dict[str, str]]) -> list[tuple[str, object]]:
-        kind = node.data
-        if kind == "variable":
-            name = str(node.children[0])
-            self.of[id(node)] = next((s[name] for s in reversed(scopes) if name in s), None)
-            return []
-        if kind == "function_definition":
-            _, _, params = prototype_parts(node.children[0])  # type: ignore[arg-type]
-            steps: list[tuple[str, object]] = [("push", None)]
-            for _, ty, arr, pname in map(parameter_parts, params):
-                if pname is not None:
-                    steps.append(("declare", (str(pname), ty + ("[]" if arr else ""))))
-            return [*steps, ("node", node.children[1]), ("pop", None)]
-        if kind == "variable_declaration":
-            ty, arr = type_of_declaration(node.children[0])  # type: ignore[arg-type]
-            if ty == "struct":
-                spec = node.children[0].children[-1].children[0]  # type: ignore[union-attr]
-                ty = str(spec.children[0]) if isinstance(spec.children[0], Token) else "struct"
-            steps = []
-            for decl in node.children[1:]:
-                if not isinstance(decl, Tree):
-                    continue
-                rest = decl.children[1:]
-                is_arr = arr or any(isinstance(c, Tree) and c.data == "array_specifier"
-                                    for c in rest)  # fmt: skip
-                steps += [("node", c) for c in rest if isinstance(c, Tree)
-                          and c.data != "array_specifier"]  # fmt: skip
-                steps.append(("declare", (str(decl.children[0]), ty + ("[]" if is_arr else ""))))
-            return steps
-        if kind == "condition_declaration":
-            ty, _ = type_of_declaration(node.children[0])  # type: ignore[arg-type]
-            return [("node", node.children[-1]), ("declare", (str(node.children[1]), ty))]
-        if kind in ("function_prototype", "struct_specifier", "parameter", "precision_declaration"):
-            return []
-        children = [("node", c) for c in node.children if isinstance(c, Tree)]
-        if kind in ("compound_statement", "for_statement", "while_statement", "switch_statement"):
-            return [("push", None), *children, ("pop", None)]
-        return children
-
-    def _expressions(self, tree: Tree) -> None:
-        """Post-order: each expression's type from its operands'."""
-        order: list[Tree] = []
-        stack: list[Tree] = [tree]
-        while stack:
-            node = stack.pop()
-            order.append(node)
-            stack.extend(c for c in node.children if isinstance(c, Tree))
-        for node in reversed(order):  # children before parents
-            if node.data != "variable":
-                self.of[id(node)] = self._rule(node)
-
-    def _rule(self, node: Tree) -> str | None:
-        kind, kids = node.data, node.children
-        if kind == "int_literal":
-            return "uint" if str(kids[0])[-1] in "uU" else "int"
-        if kind in ("float_literal", "bool_literal"):
-            return kind.split("_")[0]
-        if kind == "field":
-            return self._field(self.of.get(id(kids[0])), str(kids[1]))
-        if kind == "index":
-            return _element(self.of.get(id(kids[0])))
-        if kind == "constructor":
-            ty, arr = type_of_declaration(kids[0])  # type: ignore[arg-type]
-            return None if arr or ty == "struct" else ty
-        if kind == "call":
-            return self._call(node)
-        if kind == "binary":
-            return self._binary(str(kids[1]), self.of.get(id(kids[0])), self.of.get(id(kids[2])))
-        if kind in ("unary", "prefix"):
-            return "bool" if kids[0] == "!" else self.of.get(id(kids[1]))
-        if kind in ("postfix", "assignment"):
-            return self.of.get(id(kids[0]))
-        if kind == "ternary":
-            a, b = self.of.get(id(kids[1])), self.of.get(id(kids[2]))
-            return a if a == b or b is None else (b if a is None else None)
-        if kind == "sequence":
-            return self.of.get(id(kids[-1]))
-        return None
-
-    def _field(self, base: str | None, name: str) -> str | None:
-        if base is None:
-            return None
-        if base in self.structs:
-            return self.structs[base].get(name)
-        parts = _components(base)
-        if parts is None or not _SWIZZLE.match(name):
-            return None
-        return _vector(parts[0], len(name))
-
-    def _call(self, node: Tree) -> str | None:
-        callee = node.children[0]
-        if not (isinstance(callee, Tree) and callee.data == "variable"):
-            return None
-        name = str(callee.children[0])
-        args = node.children[1].children if len(node.children) > 1 else []  # type: ignore[union-attr]
-        if name in self.returns:
-            returns = self.returns[name]
-            return next(iter(returns)) if len(returns) == 1 else None
-        types = [self.of.get(id(a)) for a in args]
-        if name in _GENTYPE:
-            return next((t for t in types if t and (_VECTOR.match(t) or _MATRIX.match(t))),
-                        types[0] if types else None)  # fmt: skip
-        if name in ("length", "distance", "dot", "determinant"):
-            return "float"
-        if name.startswith("texture") or name.startswith("texel"):
-            return "ivec2" if name == "textureSize" else "vec4"
-        return None
-
-    @staticmethod
-    def _binary(op: str, left: str | None, right: str | None) -> str | None:
-        if op in ("<", ">", "<=", ">=", "==", "!=", "&&", "||", "^^"):
-            return "bool"
-        if left is None or right is None:
-            return None
-        if op == "*" and (_MATRIX.match(left) or _MATRIX.match(right)):
-            if _MATRIX.match(left) and _MATRIX.match(right):
-                return left if left == right else None
-            vec = left if _VECTOR.match(left) else right if _VECTOR.match(right) else None
-            return vec or (left if _MATRIX.match(left) else right)
-        scalar = ("float", "int", "uint", "bool")
-        return right if left in scalar and right not in scalar else left
-
-
-_SCALARS = {"": "float", "i": "int", "u": "uint", "b": "bool"}
-_SWIZZLE = re.compile(r"^([xyzw]{1,4}|[rgba]{1,4}|[stpq]{1,4})$")
-
-
-def _components(t: str) -> tuple[str, int] | None:
-    """(scalar type, width) of a scalar or vector type."""
-    if t in _SCALARS.values():
-        return t, 1
-    match = _VECTOR.match(t)
-    return (_SCALARS[match.group(1)], int(match.group(2))) if match else None
-
-
-def _vector(scalar: str, width: int) -> str:
-    prefix = {v: k for k, v in _SCALARS.items()}[scalar]
-    return scalar if width == 1 else f"{prefix}vec{width}"
-
-
-def _element(t: str | None) -> str | None:
-    if t is None:
-        return None
-    if t.endswith("[]"):
-        return t[:-2]
-    parts = _components(t)
-    if parts is not None and parts[1] > 1:
-        return parts[0]
-    matrix = _MATRIX.match(t)
-    if matrix:
-        rows = matrix.group(2)[1:] if matrix.group(2) else matrix.group(1)
-        return f"vec{rows}"
-    return None
-
-
-def _types(ctx: LintContext) -> _Types:
-    assert ctx.tree is not None
-    cached = ctx.cache.get("portability.types")
-    if cached is None:
-        cached = ctx.cache["portability.types"] = _Types(ctx.tree)
-    return cached  # type: ignore[no-any-return]
 
 
 @register
@@ -632,7 +405,8 @@ class IntWhereFloat(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        types = _types(ctx)
+        model = semantic_model(ctx)
+        types = model.type_of
         parents = _parents(ctx.tree)
         for node in walk(ctx.tree):
             if node.data == "int_literal":
@@ -646,7 +420,7 @@ class IntWhereFloat(Rule):
                 expr = node
             else:
                 continue
-            why = self.float_context(expr, parents, types)
+            why = self.float_context(expr, parents, model)
             if why is None:
                 continue
             text = str(node.children[0])
@@ -663,9 +437,10 @@ class IntWhereFloat(Rule):
                        f"write `{text}.0`")  # fmt: skip
             yield self.report(ctx, node, message, fix)
 
-    def float_context(self, expr: Tree, parents: dict[int, Tree], types: _Types) -> str | None:
+    def float_context(self, expr: Tree, parents: dict[int, Tree], model: Model) -> str | None:
         """Why the expression must be a float there, or None if it need not (or we cannot
         tell)."""
+        types = model.type_of
         while True:
             parent = parents.get(id(expr))
             if parent is None:
@@ -684,14 +459,14 @@ class IntWhereFloat(Rule):
                 target = types(kids[0])
                 if kids[1] == "=":
                     return "is assigned to a float" if target == "float" else None
-                return f"is used in `{kids[1]}` on a float" if _float_like(target) else None
+                return f"is used in `{kids[1]}` on a float" if is_float_like(target) else None
             if kind == "binary" and str(kids[1]) in _ARITHMETIC:
                 other = kids[2] if expr is kids[0] else kids[0]
-                if _float_like(types(other)):
+                if is_float_like(types(other)):
                     return f"is an operand of `{kids[1]}` beside a float"
                 return None
             if kind == "arguments":
-                return self.argument(expr, parent, parents, types)
+                return self.argument(expr, parent, parents, model)
             if kind == "jump_statement":
                 function = parents.get(id(parent))
                 while function is not None and function.data != "function_definition":
@@ -702,14 +477,14 @@ class IntWhereFloat(Rule):
                 return f"is returned from `{name}`, which returns float" if ret == "float" else None
             if kind == "ternary" and expr is not kids[0]:
                 other = kids[2] if expr is kids[1] else kids[1]
-                if _float_like(types(other)):
+                if is_float_like(types(other)):
                     return "is a branch of `?:` beside a float"
                 expr = parent  # the ternary's own context decides
                 continue
             return None
 
     def argument(
-        self, expr: Tree, args: Tree, parents: dict[int, Tree], types: _Types
+        self, expr: Tree, args: Tree, parents: dict[int, Tree], model: Model
     ) -> str | None:
         call = parents.get(id(args))
         position = next(i for i, a in enumerate(args.children) if a is expr)
@@ -723,9 +498,10 @@ class IntWhereFloat(Rule):
             return None
         name = str(callee.children[0])
         count = len(args.children)
-        if name in types.params:  # the file's own function, every overload taking a float
-            overloads = [p for p in types.params[name] if len(p) == count]
-            if overloads and all(p[position] == "float" for p in overloads):
+        own = {str(p.children[1]) for p in _prototypes(model.tree)}
+        if name in own:  # the file's own function, every overload taking a float
+            overloads = [f.params for f in model.functions.get(name, []) if len(f.params) == count]
+            if overloads and all(p[position][1] == "float" for p in overloads):
                 return f"is passed to a float parameter of `{name}`"
             return None
         if name in FLOAT_ONLY:
@@ -733,7 +509,7 @@ class IntWhereFloat(Rule):
         if FLOAT_ARG_AT.get(name) == position:
             return f"is passed as `{name}`'s float bias or level"
         others = [a for i, a in enumerate(args.children) if i != position]
-        if name in INT_OVERLOADS and any(_float_like(types(a)) for a in others):
+        if name in INT_OVERLOADS and any(is_float_like(model.type_of(a)) for a in others):
             return f"is passed to `{name}` beside a float argument"
         return None
 
@@ -772,7 +548,7 @@ class NonConstantGlobal(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        functions = set(_Types.function_names(ctx.tree))
+        functions = {str(p.children[1]) for p in _prototypes(ctx.tree)}
         variables: set[str] = set()  # non-const globals declared so far
         for node in ctx.tree.children:
             if not (isinstance(node, Tree) and node.data == "variable_declaration"):
