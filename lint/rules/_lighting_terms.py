@@ -124,10 +124,13 @@ def calls_in(node: Node) -> list[Tree]:
 # --- constants -------------------------------------------------------------------------------
 
 
-def const_value(node: Node) -> float | None:
-    """The value of a literal expression (`1.0 / 2.2`, `vec3(0.4545)`, `-2.`), else None."""
+def const_value(node: Node, names: dict[str, float] | None = None) -> float | None:
+    """The value of a literal expression (`1.0 / 2.2`, `vec3(0.4545)`, `-2.`), else None;
+    `names` gives the values of named constants (`8.0 * PI`)."""
     if not isinstance(node, Tree):
         return None
+    if names and node.data == "variable":
+        return names.get(str(node.children[0]))
     if node.data in ("float_literal", "int_literal"):
         text = str(node.children[0]).rstrip("fFuU")
         try:
@@ -135,20 +138,21 @@ def const_value(node: Node) -> float | None:
         except ValueError:
             return None
     if node.data == "unary":
-        inner = const_value(node.children[1])
+        inner = const_value(node.children[1], names)
         sign = str(node.children[0])
         if inner is None or sign not in "+-":
             return None
         return -inner if sign == "-" else inner
     if node.data == "constructor":
         args = call_args(node)
-        values = [const_value(a) for a in args]
+        values = [const_value(a, names) for a in args]
         if values and all(v is not None and v == values[0] for v in values):
             return values[0]
         return None
     op = binary_op(node)
     if op in ("+", "-", "*", "/"):
-        left, right = const_value(node.children[0]), const_value(node.children[2])
+        left = const_value(node.children[0], names)
+        right = const_value(node.children[2], names)
         if left is None or right is None:
             return None
         if op == "+":
@@ -485,3 +489,26 @@ def may_be_negative(ctx: LintContext, expr: Node, fn: Function | None) -> bool:
         return bool(model.range_of(expr).may_be_negative)  # type: ignore[attr-defined]
     value = resolve(expr, fn)
     return call_name(value) == "dot"
+
+
+def global_constants(ctx: LintContext) -> dict[str, float]:
+    """Values of scalar `const` globals with literal initializers (`const float PI = ...`)."""
+    cached = ctx.cache.get("lighting.constants")
+    if cached is not None:
+        return cached  # type: ignore[no-any-return]
+    values: dict[str, float] = {}
+    for node in ctx.tree.children if ctx.tree is not None else ():
+        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+            continue
+        spec = node.children[0]
+        qual = spec.children[0] if isinstance(spec, Tree) and spec.children else None
+        if not (isinstance(qual, Tree) and qual.data == "type_qualifier"
+                and "const" in [str(t) for t in qual.children]):  # fmt: skip
+            continue
+        for child in node.children[1:]:
+            if isinstance(child, Tree) and child.data == "declarator" and len(child.children) > 1:
+                value = const_value(child.children[-1], values)
+                if value is not None:
+                    values[str(child.children[0])] = value
+    ctx.cache["lighting.constants"] = values
+    return values

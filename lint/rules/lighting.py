@@ -5,6 +5,7 @@ a miss is cheaper than a false alarm on correct code."""
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterator
 
@@ -23,6 +24,7 @@ from ._lighting_terms import (
     cosine_of,
     function_map,
     functions,
+    global_constants,
     is_fresnel_name,
     last_name,
     may_be_negative,
@@ -658,16 +660,77 @@ class DoubleGamma(Rule):
         )
 
 
-def _light_terms(fn: Function) -> list[Node]:
-    """Products in the function that carry a lighting cosine or a specular lobe."""
+def _factors(node: Node) -> tuple[list[Node], list[Node]]:
+    """Numerators and denominators of a chain of * and / (`a * b / c` -> [a, b], [c])."""
+    top: list[Node] = []
+    bottom: list[Node] = []
+    stack: list[tuple[Node, bool]] = [(node, True)]
+    while stack:
+        item, up = stack.pop()
+        op = binary_op(item)
+        if op in ("*", "/"):
+            assert isinstance(item, Tree)
+            stack.append((item.children[0], up))
+            stack.append((item.children[2], up if op == "*" else not up))
+        else:
+            (top if up else bottom).append(item)
+    return top, bottom
+
+
+def _light_terms(fn: Function, up: dict[int, Tree]) -> list[Node]:
+    """Whole products (chains of * and /) that carry a lighting cosine or a specular lobe."""
     terms = []
     for node in walk(fn.body):
-        if binary_op(node) != "*":
+        if binary_op(node) not in ("*", "/") or binary_op(up.get(id(node))) in ("*", "/"):
             continue
-        factors = operands(node, "*")
-        if any(cosine_of(f, fn) in ("NL", "NH", "NV") or _lobe(f, fn) for f in factors):
+        top, _ = _factors(node)
+        if any(cosine_of(f, fn) in ("NL", "NH", "NV") or _lobe(f, fn) for f in top):
             terms.append(node)
     return terms
+
+
+def _bound(node: Node, fn: Function, names: dict[str, float], depth: int = 6) -> float | None:
+    """A rough upper bound of a light term from its constants: cosines, lobes and values the
+    code does not say are taken as at most 1, so only explicit intensities raise it; None
+    when a divisor is not a constant."""
+    if depth <= 0 or not isinstance(node, Tree):
+        return 1.0
+    value = const_value(node, names)
+    if value is not None:
+        return abs(value)
+    if node.data == "constructor":
+        values = [const_value(a) for a in call_args(node)]
+        known = [abs(v) for v in values if v is not None]
+        return max(known) if known and len(known) == len(values) else 1.0
+    if node.data == "variable":
+        resolved = resolve(node, fn, 1)
+        return 1.0 if resolved is node else _bound(resolved, fn, names, depth - 1)
+    op = binary_op(node)
+    if op in ("*", "/"):
+        top, bottom = _factors(node)
+        result = 1.0
+        for factor in top:
+            b = _bound(factor, fn, names, depth - 1)
+            if b is None:
+                return None
+            result *= b
+        for factor in bottom:
+            divisor = const_value(factor, names)
+            if divisor is None:
+                divisor = _bound(factor, fn, names, depth - 1) if binary_op(factor) == "+" else None
+            if not divisor:
+                return None
+            result /= divisor
+        return result
+    if op == "+":
+        parts = [_bound(p, fn, names, depth - 1) for p in operands(node, "+")]
+        return None if any(p is None for p in parts) else sum(parts)  # type: ignore[arg-type]
+    if op == "-":
+        return _bound(node.children[0], fn, names, depth - 1)
+    if call_name(node) == "clamp" and len(call_args(node)) == 3:
+        hi = const_value(call_args(node)[2])
+        return abs(hi) if hi is not None else 1.0
+    return 1.0
 
 
 def _lobe(node: Node, fn: Function) -> bool:
@@ -685,8 +748,11 @@ class HdrWithoutTonemap(Rule):
     flattens. A tone map (x / (1 + x), an ACES fit, 1 − exp(−x)) rolls highlights off.
 
     Evidence that values exceed 1, in a lit shader: a light term (a product with N·L, N·H or
-    N·V, or a pow lobe) that multiplies a constant above 1 (an intensity such as `2.0 *
-    sunColor`, or `vec3(1.3, 1.0, 0.7)`), or two or more light terms summed in one function.
+    N·V, or a pow lobe) whose bound is above 1, or two or more light terms summed in one
+    function whose bounds add up to more than 1. The bound is the semantic model's when it is
+    finite; otherwise the product of the term's constants (an intensity such as `2.0 *
+    sunColor`, `vec3(1.3, 1.0, 0.7)`, divided by the constant divisors such as π), with
+    cosines, lobes and values the code does not spell out taken as at most 1.
     Decision on clamp: clamp(col, 0.0, 1.0) or min(col, 1.0) is not a tone map, but it shows
     that the author chose to clip, so it is not reported either; this rule is for code that
     never considered the range.
@@ -739,44 +805,57 @@ class HdrWithoutTonemap(Rule):
         return False
 
     def _evidence(self, ctx: LintContext) -> str:
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
         for fn in functions(ctx):
-            terms = _light_terms(fn)
+            terms = _light_terms(fn, up)
             for term in terms:
-                for factor in operands(term, "*"):
-                    if self._bright(factor):
-                        return f"`{_short(ctx, term, 40)}` is scaled by more than 1"
-            sums = self._summed(fn, terms)
+                hi = self._hi(ctx, term, fn)
+                if hi is not None and hi > 1.0:
+                    return f"`{_short(ctx, term, 40)}` reaches about {hi:.3g}"
+            sums = self._summed(ctx, fn, terms)
             if sums:
                 return sums
         return ""
 
-    def _bright(self, node: Node) -> bool:
-        value = const_value(node)
-        if value is not None:
-            return value > 1.0
-        if isinstance(node, Tree) and node.data == "constructor":
-            values = [const_value(a) for a in call_args(node)]
-            return ctx_type(node).startswith("vec") and any(v is not None and v > 1.0
-                                                            for v in values)  # fmt: skip
-        return False
+    def _hi(self, ctx: LintContext, node: Node, fn: Function) -> float | None:
+        """The model's finite upper bound, else the bound from the code's constants."""
+        hi = _bounded_hi(ctx, node)
+        return hi if hi is not None else _bound(node, fn, global_constants(ctx))
 
-    def _summed(self, fn: Function, terms: list[Node]) -> str:
+    def _summed(self, ctx: LintContext, fn: Function, terms: list[Node]) -> str:
         ids = {id(t) for t in terms}
 
         def carries(node: Node) -> bool:
             return any(id(n) in ids for n in walk(node)) if isinstance(node, Tree) else False
 
-        per_target: dict[str, int] = {}
+        def may_exceed(parts: list[Node]) -> bool:
+            his = [self._hi(ctx, p, fn) for p in parts]
+            return sum(1.0 if h is None else h for h in his) > 1.0
+
+        per_target: dict[str, list[Node]] = {}
         for node in walk(fn.body):
-            if binary_op(node) == "+" and sum(1 for p in operands(node, "+") if carries(p)) >= 2:
-                return f"light terms summed in {fn.name}"
+            if binary_op(node) == "+":
+                parts = operands(node, "+")
+                if sum(1 for p in parts if carries(p)) >= 2 and may_exceed(parts):
+                    return f"light terms summed in {fn.name}"
             if node.data == "assignment" and str(node.children[1]) == "+=":
                 target = root_var(node.children[0]) or ""
                 if carries(node.children[2]):
-                    per_target[target] = per_target.get(target, 0) + 1
-                    if per_target[target] >= 2:
+                    added = per_target.setdefault(target, [])
+                    added.append(node.children[2])
+                    if len(added) >= 2 and may_exceed(added):
                         return f"light terms accumulated into `{target}` in {fn.name}"
         return ""
+
+
+def _bounded_hi(ctx: LintContext, node: Node) -> float | None:
+    """The model's upper bound of the value when it has a finite one, else None."""
+    model = semantic(ctx)
+    if model is None:
+        return None
+    hi = model.range_of(node).hi  # type: ignore[attr-defined]
+    return float(hi) if math.isfinite(hi) else None
 
 
 # --- energy split ------------------------------------------------------------------------------
@@ -802,7 +881,8 @@ class EnergyNotSplit(Rule):
 
     Decided per sum, `diffuse + specular` in one expression (including locals it reads):
     the specular side contains a Fresnel call or the inline Schlick form, the diffuse side is
-    named like diffuse, Lambert, albedo or base colour; the split is any factor `1 - x` with x
+    named like diffuse, Lambert, albedo or base colour, or is a product with N·L and no
+    specular lobe; the split is any factor `1 - x` with x
     Fresnel or metallic, a kD factor, or an already split colour (diffuseColor, cdiff), also
     inside the diffuse function it calls. Sums built by separate `+=` statements are not
     followed.
@@ -868,6 +948,9 @@ class EnergyNotSplit(Rule):
         return found
 
     def _diffuse(self, node: Node, fn: Function) -> bool:
+        top, _ = _factors(node)
+        if any(cosine_of(f, fn) == "NL" for f in top) and not any(_lobe(f, fn) for f in top):
+            return True  # a colour times N·L with no specular lobe: Lambert by another name
         for part in self._expand(node, fn):
             if any(_DIFFUSE_NAME.match(n) for n in names_in(part)):
                 return True

@@ -301,6 +301,32 @@ def test_l007_two_lights_summed_without_tonemap() -> None:
     assert found(src) == [("L007", 8)]
 
 
+def test_l007_normalized_highlight_reaches_above_one() -> None:
+    src = image(
+        "    vec3 n = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 h = normalize(vec3(0.2, 0.3, 1.0));\n"
+        "    float NdotH = max(dot(n, h), 0.0);\n"
+        "    float spec = pow(NdotH, 64.0) * (64.0 + 8.0) / (8.0 * PI);\n"
+        "    fragColor = vec4(pow(vec3(spec), vec3(0.4545)), 1.0);",
+        "const float PI = 3.14159265;\n",
+    )
+    assert found(src) == [("L007", 7)]
+    assert "2.86" in lint_source(src, "x.glsl", FAST)[0].message
+
+
+def test_l007_bright_radiance_divided_by_pi_stays_below_one() -> None:
+    src = image(
+        "    vec3 n = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 l = normalize(vec3(0.5, 0.7, 0.5));\n"
+        "    vec3 albedo = vec3(0.7, 0.5, 0.3);\n"
+        "    vec3 radiance = vec3(3.0);\n"
+        "    vec3 col = albedo / PI * radiance * max(dot(n, l), 0.0);\n"
+        "    fragColor = vec4(pow(col, vec3(0.4545)), 1.0);",
+        "const float PI = 3.14159265;\n",
+    )
+    assert found(src) == []
+
+
 def test_l007_tonemap_clamp_or_a_dim_single_light_are_fine() -> None:
     bright = (
         "    vec3 n = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
@@ -339,6 +365,10 @@ def test_l008_diffuse_not_scaled_by_one_minus_f() -> None:
 )
 def test_l008_split_diffuse_is_fine(diffuse: str) -> None:
     assert found(SPLIT.replace("DIFFUSE", diffuse)) == []
+
+
+def test_l008_constant_colour_times_n_dot_l_is_a_diffuse_term() -> None:
+    assert found(SPLIT.replace("DIFFUSE", "vec3(0.5) / PI * NoL")) == [("L008", 5)]
 
 
 def test_l008_split_through_a_local_kd() -> None:
