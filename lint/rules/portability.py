@@ -492,7 +492,13 @@ class IntWhereFloat(Rule):
             return None
         if call.data == "constructor":
             ty, arr = type_of_declaration(call.children[0])  # type: ignore[arg-type]
-            return "is an element of a float array" if arr and ty == "float" else None
+            if arr:
+                return "is an element of a float array" if ty == "float" else None
+            # struct constructors convert nothing; vector and matrix constructors do
+            members = list(model.structs.get(ty, {}).items())
+            if len(members) == len(args.children) and members[position][1] == "float":
+                return f"initialises the float member `{members[position][0]}` of `{ty}`"
+            return None
         callee = call.children[0]
         if call.data != "call" or not (isinstance(callee, Tree) and callee.data == "variable"):
             return None

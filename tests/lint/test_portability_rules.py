@@ -3,15 +3,19 @@ shaders that glslang accepts, idempotent fixing, and silence on the valid corpus
 
 from __future__ import annotations
 
+import inspect
 import re
 import shutil
+import sys
 from pathlib import Path
 
 import pytest
 
+from glint.lint.analysis.model import semantic_model
+from glint.lint.context import walk
 from glint.lint.options import Options
 from glint.lint.rules import REGISTRY, all_rules, rule_doc
-from glint.lint.runner import lint_source, lint_text
+from glint.lint.runner import build_context, lint_source, lint_text
 
 FAST = Options(select=["P", "C1"], glslang=False)
 CORPUS = sorted((Path(__file__).resolve().parent.parent / "corpus" / "valid").glob("*.glsl"))
@@ -202,6 +206,13 @@ def test_p005_return_and_user_function_parameters() -> None:
     assert fixed(src) == image("fragColor = vec4(f(1.0));", head.replace("0;", "0.0;"))
 
 
+def test_p005_struct_constructor_members() -> None:
+    head = "struct Hit { float d; int id; };\n"
+    src = image("Hit h = Hit(1, 2);\nfragColor = vec4(h.d);", head)
+    assert [(c, line, col) for c, line, col in found(src, "P005")] == [("P005", 3, 13)]
+    assert fixed(src) == image("Hit h = Hit(1.0, 2);\nfragColor = vec4(h.d);", head)
+
+
 def test_p005_int_variable_is_reported_without_a_fix() -> None:
     src = image("int i = 3;\nfloat x = fragCoord.x * i;\nfragColor = vec4(x);")
     findings = [f for f in lint_source(src, "x.glsl", FAST) if f.code == "P005"]
@@ -323,6 +334,24 @@ def test_fixing_is_idempotent() -> None:
     once = lint_text(OLD_SHADER, "x.glsl", FAST, fix=True)
     twice = lint_text(once.text, "x.glsl", FAST, fix=True)
     assert twice.fixed == 0 and twice.text == once.text
+
+
+def test_long_chains_do_not_recurse() -> None:
+    # the shared model recurses over chains, so keep it short enough for it to build
+    chain = " + ".join(["fragCoord.x"] * 150)
+    src = image(f"float y = {chain} + 1;\nfragColor = vec4(texture2D(iChannel0, vec2(y)));")
+    ctx = build_context(src, "x.glsl", FAST)
+    assert ctx.tree is not None
+    model = semantic_model(ctx)
+    for node in reversed(list(walk(ctx.tree))):  # and warm its memo, children first
+        model.type_of(node)
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(len(inspect.stack()) + 100)  # less than the chain is deep
+    try:
+        codes = [f.code for code in OUR_CODES for f in all_rules()[code]().check(ctx)]
+    finally:
+        sys.setrecursionlimit(limit)
+    assert sorted(codes) == ["P003", "P005"]
 
 
 @pytest.mark.parametrize("path", CORPUS, ids=lambda p: p.name)
