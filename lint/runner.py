@@ -3,6 +3,9 @@ apply fixes when asked. Nothing here raises on bad input: every problem is a fin
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 from glint.compiler.errors import InputError
@@ -18,6 +21,7 @@ from .suppressions import Suppression, apply_suppressions, parse_suppressions
 # Files larger than this are reported (C006) rather than analysed: glslang still sees them, but
 # parsing megabytes of GLSL in Python would take minutes and no real shader is that large.
 MAX_BYTES = 1_000_000
+RECURSION_LIMIT = 20_000
 UNUSED_SUPPRESSION = "S001"
 
 
@@ -70,24 +74,49 @@ def lint_source(
 ) -> list[Finding]:
     """Every enabled finding for `text`, sorted by position."""
     options = options or Options()
-    ctx = build_context(text, file, options)
-    ctx.read_problem = read_problem
-    findings: list[Finding] = []
-    for code, rule in all_rules().items():
-        if code == UNUSED_SUPPRESSION or not options.enabled(code, file):
-            continue
-        if rule.needs_tree and ctx.tree is None:
-            continue
-        try:
-            findings.extend(rule().check(ctx))
-        except RecursionError:
-            ctx.too_deep = True
+    with _recursion_limit(RECURSION_LIMIT):
+        ctx = build_context(text, file, options)
+        ctx.read_problem = read_problem
+        findings: list[Finding] = []
+        # Rules that report on what the others found out (C006: too deep) run last.
+        rules = sorted(all_rules().items(), key=lambda item: item[1].runs_last)
+        for code, rule in rules:
+            if code == UNUSED_SUPPRESSION or not options.enabled(code, file):
+                continue
+            if rule.needs_tree and ctx.tree is None:
+                continue
+            try:
+                findings.extend(rule().check(ctx))
+            except RecursionError:
+                ctx.too_deep = True
+    findings = _without_explained_glslang_errors(findings)
     suppressions = parse_suppressions(text)
     kept = apply_suppressions(findings, suppressions)
     if options.enabled(UNUSED_SUPPRESSION, file):
         ran = {c for c in all_rules() if options.enabled(c, file)}
         kept += _unused(ctx, suppressions, ran)
     return sorted(set(kept), key=lambda f: f.sort_key)
+
+
+def _without_explained_glslang_errors(findings: list[Finding]) -> list[Finding]:
+    """glslang's error (C001) on a line where a glint rule reports an error says the same thing
+    less clearly (`float x = 1;` is P005 with a fix, and glslang's "cannot convert"): keep
+    glint's."""
+    explained = {(f.file, f.line) for f in findings if f.severity == "error" and f.code != "C001"}
+    return [f for f in findings if f.code != "C001" or (f.file, f.line) not in explained]
+
+
+@contextmanager
+def _recursion_limit(limit: int) -> Iterator[None]:
+    """Expressions are analysed recursively, and generated shaders have long operator chains
+    (hundreds of `+` terms); Python's default limit of 1000 frames is too low for them. Python
+    3.11 runs Python-to-Python calls without C stack, so a higher limit is safe."""
+    old = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old, limit))
+    try:
+        yield
+    finally:
+        sys.setrecursionlimit(old)
 
 
 def _unused(ctx: LintContext, suppressions: list[Suppression], ran: set[str]) -> list[Finding]:

@@ -45,6 +45,7 @@ class Rule:
     severity: ClassVar[Severity] = "warning"
     needs_tree: ClassVar[bool] = True  # skipped when the file did not parse
     fixable: ClassVar[Literal["safe", "unsafe", "none"]] = "none"
+    runs_last: ClassVar[bool] = False  # reports on what the other rules ran into
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         raise NotImplementedError

@@ -132,6 +132,7 @@ class TooDeep(Rule):
     category = "correctness"
     severity = "error"
     needs_tree = False
+    runs_last = True
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         if ctx.too_deep:
