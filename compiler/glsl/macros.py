@@ -92,6 +92,8 @@ class Expander:
                     out.append(tok)
                     continue
                 args, close = call
+                # Arguments count too: calls nested in arguments copy them once per level.
+                self._count(sum(len(a) for a in args), tok.col)
                 args = self._check_arity(macro, args, tok.col)
                 self.used.add(name)
                 body = self._substitute(macro, args, (tok.hide & close.hide) | {name})
@@ -103,8 +105,8 @@ class Expander:
         self.produced += n
         if self.produced > MAX_EXPANDED_TOKENS:
             raise MacroCallError(
-                f"macro expansion too large (over {MAX_EXPANDED_TOKENS:,} tokens); "
-                "does a macro use another one twice, nested many times?",
+                f"macro expansion too large (over {MAX_EXPANDED_TOKENS:,} tokens): macro calls "
+                "nested too deeply, or macros that use another one twice, nested many times",
                 col,
             )
 
