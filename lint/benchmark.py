@@ -11,7 +11,8 @@ Three timings, each the median of N passes over every file after one warm-up pas
 - glslangValidator alone, one process per file, wrapped exactly as `glint lint` wraps it
   (`glint.compiler.glslang.validate`).
 
-The default files are the repository's shader corpora (tests/corpus/lint, tests/corpus/valid).
+The default files are the repository's shader corpora (tests/corpus/lint, tests/corpus/valid)
+and the composed example scene (site/docs/examples), all of which glslang accepts.
 """
 
 from __future__ import annotations
@@ -32,7 +33,12 @@ from .runner import lint_text
 
 EXTENSIONS = (".glsl", ".frag", ".fs")
 _ROOT = Path(__file__).resolve().parents[1]
-DEFAULT_PATHS = [_ROOT / "tests" / "corpus" / "lint", _ROOT / "tests" / "corpus" / "valid"]
+# The shader corpora and the composed example scene (catalog snippets put together).
+DEFAULT_PATHS = [
+    _ROOT / "tests" / "corpus" / "lint",
+    _ROOT / "tests" / "corpus" / "valid",
+    _ROOT / "site" / "docs" / "examples",
+]
 
 
 def shader_files(paths: list[Path]) -> list[Path]:
