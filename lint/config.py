@@ -68,5 +68,5 @@ def options_from_table(table: dict[str, Any], where: str) -> Options:
 
 def _codes(value: Any, where: str) -> list[str]:
     if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-        raise UsageError(f"{where}: expected a list of rule codes, e.g. [\"N001\", \"L\"]")
+        raise UsageError(f'{where}: expected a list of rule codes, e.g. ["N001", "L"]')
     return [v.strip().upper() for v in value]

@@ -11,18 +11,18 @@ from dataclasses import dataclass, field
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import parse, preprocess, symbols_of
 
-from .context import LintContext
+from .context import MAX_NESTING, LintContext
 from .finding import Finding
 from .fixes import apply_fixes
 from .options import Options
 from .rules import all_rules
-from .suppressions import Suppression, apply_suppressions, parse_suppressions
+from .rules.housekeeping import UNUSED_SUPPRESSION, unused_suppressions
+from .suppressions import apply_suppressions, parse_suppressions
 
 # Files larger than this are reported (C006) rather than analysed: glslang still sees them, but
 # parsing megabytes of GLSL in Python would take minutes and no real shader is that large.
 MAX_BYTES = 1_000_000
 RECURSION_LIMIT = 20_000
-UNUSED_SUPPRESSION = "S001"
 
 
 @dataclass
@@ -57,6 +57,10 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
     except RecursionError:  # macro calls nested thousands deep in arguments
         ctx.too_deep = True
         return ctx
+    ctx.nesting = nesting_depth(ctx.pre.text)
+    if ctx.nesting > MAX_NESTING:
+        ctx.too_deep = True
+        return ctx
     try:
         ctx.tree = parse(ctx.pre.text, file)
         ctx.symbols = symbols_of(ctx.tree, ctx.pre)
@@ -67,6 +71,19 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
         ctx.tree = None
         ctx.too_deep = True
     return ctx
+
+
+def nesting_depth(text: str) -> int:
+    """The deepest nesting of (), [] and {} (comments are already blanked by the
+    preprocessor). The analyses are quadratic in nesting on pathological input."""
+    depth = deepest = 0
+    for char in text:
+        if char in "([{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif char in ")]}":
+            depth = max(depth - 1, 0)
+    return deepest
 
 
 def lint_source(
@@ -94,7 +111,7 @@ def lint_source(
     kept = apply_suppressions(findings, suppressions)
     if options.enabled(UNUSED_SUPPRESSION, file):
         ran = {c for c in all_rules() if options.enabled(c, file)}
-        kept += _unused(ctx, suppressions, ran)
+        kept += unused_suppressions(ctx, suppressions, ran)
     return sorted(set(kept), key=lambda f: f.sort_key)
 
 
@@ -117,35 +134,6 @@ def _recursion_limit(limit: int) -> Iterator[None]:
         yield
     finally:
         sys.setrecursionlimit(old)
-
-
-def _unused(ctx: LintContext, suppressions: list[Suppression], ran: set[str]) -> list[Finding]:
-    known = set(all_rules())
-    found = []
-    for s in suppressions:
-        span = (s.line, s.column, s.line, s.end_column)
-        if s.codes is None:
-            if not s.used:
-                found.append(
-                    ctx.finding(
-                        UNUSED_SUPPRESSION,
-                        "warning",
-                        span,
-                        "suppression silences nothing; remove it",
-                    )
-                )
-            continue
-        unknown = sorted(s.codes - known)
-        unused = sorted(c for c in s.codes & ran if c not in s.used)
-        if unknown:
-            message = f"suppression names unknown code{'s' if len(unknown) > 1 else ''} " + (
-                ", ".join(unknown) + "; see `glint rule --all`"
-            )
-            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message))
-        if unused:
-            message = f"unused suppression of {', '.join(unused)}: nothing to silence; remove it"
-            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message))
-    return found
 
 
 def lint_text(

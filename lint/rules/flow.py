@@ -10,6 +10,7 @@ from lark import Tree
 
 from ..analysis.flow import FunctionFlow, Var, function_flows, mask_names
 from ..context import LintContext, walk
+from ..context import tokens as tokens_of
 from ..finding import Finding
 from . import Rule, register
 
@@ -22,6 +23,21 @@ def _main_colour(flow: FunctionFlow) -> Var | None:
     first = params[2].children[0] if len(params) > 2 else None  # type: ignore[union-attr]
     out = flow.outs[0]
     return out if isinstance(first, Tree) and out.token in first.children else None
+
+
+def _assigns(definition: Tree, name: str) -> bool:
+    """Whether any statement assigns to `name` (or a component of it), on any path."""
+    for node in walk(definition):
+        if node.data == "assignment" or (node.data in ("prefix", "postfix")):
+            target = node.children[0] if node.data != "prefix" else node.children[1]
+            first = next((t for t in tokens_of(target) if t.type == "IDENTIFIER"), None)
+            if first == name:
+                return True
+        if node.data == "call":  # an out/inout argument may write it
+            args = [c for c in node.children if isinstance(c, Tree) and c.data == "arguments"]
+            if args and any(t == name for t in tokens_of(args[0])):
+                return True
+    return False
 
 
 def _writes_gl_fragcolor(definition: Tree) -> bool:
@@ -59,15 +75,13 @@ class ColourNotWritten(Rule):
             colour = _main_colour(flow)
             if colour is None or _writes_gl_fragcolor(flow.definition):
                 continue  # P002 reports the colour written to the wrong place
-            ever = 0
-            for exit_ in flow.exits:
-                ever |= exit_.state.get(id(colour), 0)
+            ever = _assigns(flow.definition, colour.name)
             for exit_ in flow.exits:
                 missing = colour.full & ~exit_.state.get(id(colour), 0)
                 if not missing:
                     continue
                 what = f"`{colour.name}{mask_names(colour, missing)}`"
-                if missing == colour.full and ever == 0:
+                if missing == colour.full and not ever:
                     message = f"mainImage never writes {what}; the pixel is undefined"
                     yield self.report(ctx, colour.token, message)
                     break

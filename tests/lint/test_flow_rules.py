@@ -194,3 +194,16 @@ def test_long_bodies_and_chains_do_not_recurse() -> None:
         assert list(UsedBeforeInitialised().check(ctx)) == []
     finally:
         sys.setrecursionlimit(limit)
+
+
+def test_colour_written_on_one_path_is_not_called_never_written() -> None:
+    from glint.lint.options import Options
+    from glint.lint.runner import lint_source
+
+    text = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    if (fragCoord.x > 0.0) { fragColor = vec4(1.0); }\n}\n"
+    )
+    found = lint_source(text, "x.glsl", Options(select=["C101"], glslang=False))
+    assert [f.code for f in found] == ["C101"]
+    assert "not written on every path" in found[0].message

@@ -57,7 +57,7 @@ CASES: dict[str, tuple[Callable[[], bytes], set[str]]] = {
     "extra-closing-brace": (lambda: _shader(b"fragColor = vec4(1.0);") + b"}\n}\n", {"C003"}),
     "missing-closing-brace": (lambda: HEAD + b"if (true) {\nfragColor = vec4(1.0);\n", {"C003"}),
     "unbalanced-parens": (lambda: _shader(b"fragColor = vec4((1.0);"), {"C003"}),
-    "only-braces": (lambda: b"{" * 5000, {"C003"}),
+    "only-braces": (lambda: b"{" * 5000, {"C003", "C006"}),
     "unknown-directive": (lambda: b"#frobnicate 3\n" + _shader(b"fragColor = vec4(1);"), {"C004"}),
     "include": (lambda: b'#include "common.glsl"\n' + _shader(b""), {"C004"}),
     "unterminated-if": (lambda: b"#ifdef FAST\n" + _shader(b""), {"C004"}),
@@ -166,20 +166,36 @@ def test_a_deep_tree_is_reported_alone() -> None:
 @pytest.mark.parametrize(
     "body",
     [
-        b"float x = " + b"(1.0 + " * 5000 + b"1.0" + b")" * 5000 + b";",
-        b"{" * 2000 + b"float x = 1.0;" + b"}" * 2000,
-        b"if (fragCoord.x > 0.0) {" * 1000 + b"fragColor.x = 0.5;" + b"}" * 1000,
+        # Bracket nesting up to MAX_NESTING (256) is analysed; deeper is C006 (below).
+        b"float x = " + b"(1.0 + " * 250 + b"1.0" + b")" * 250 + b";",
+        b"{" * 250 + b"float x = 1.0;" + b"}" * 250,
+        b"if (fragCoord.x > 0.0) {" * 120 + b"fragColor.x = 0.5;" + b"}" * 120,
         b"float x = 1.0" + b" + fragCoord.x" * 5000 + b";",
         b"if (fragCoord.x < 0.0) fragColor = vec4(0.0);\n"
         + b"else if (fragCoord.x < 1.0) fragColor = vec4(1.0);\n" * 1000,
         b"float x = " + b"fragCoord.x > 0.0 ? 1.0 : " * 1000 + b"0.0;",
     ],
-    ids=["5000-parens", "2000-blocks", "1000-ifs", "5000-terms", "1000-else-ifs", "1000-ternaries"],
+    ids=["250-parens", "250-blocks", "120-ifs", "5000-terms", "1000-else-ifs", "1000-ternaries"],
 )
 def test_deep_but_valid_code_is_analysed(body: bytes) -> None:
     # Generated code nests deeply and is valid (glslang takes it): analysed, no error.
     findings = _lint(_shader(b"fragColor = vec4(1.0);\n" + body)).findings
     assert [f for f in findings if f.severity == "error"] == [], findings[:3]
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        b"float x = " + b"(1.0 + " * 5000 + b"1.0" + b")" * 5000 + b";",
+        b"{" * 2000 + b"float x = 1.0;" + b"}" * 2000,
+        b"if (fragCoord.x > 0.0) {" * 1000 + b"fragColor.x = 0.5;" + b"}" * 1000,
+    ],
+    ids=["5000-parens", "2000-blocks", "1000-ifs"],
+)
+def test_bracket_nesting_past_the_limit_is_c006_alone(body: bytes) -> None:
+    findings = _lint(_shader(b"fragColor = vec4(1.0);\n" + body)).findings
+    assert [f.code for f in findings] == ["C006"]
+    assert "levels; glint follows 256" in findings[0].message
 
 
 def test_parentheses_alone_nest_without_depth() -> None:
