@@ -41,7 +41,8 @@ def decode(data: bytes, file: str) -> tuple[str, str | None]:
     if b"\0" in data:
         return "", "binary data (a NUL byte), not GLSL source"
     try:
-        return data.decode("utf-8"), None
+        # utf-8-sig drops a byte-order mark, which editors on Windows write and GLSL rejects.
+        return data.decode("utf-8-sig"), None
     except UnicodeDecodeError as exc:
         line = data[: exc.start].count(b"\n") + 1
         return "", f"not UTF-8 text (invalid byte 0x{data[exc.start]:02x} on line {line})"

@@ -254,3 +254,8 @@ def test_a_fix_that_would_break_the_shader_is_not_applied(monkeypatch: pytest.Mo
     result = lint_text(text, "x.glsl", Options(select=["S998", "C003"], glslang=False), fix=True)
     assert result.text == text and result.fixed == 0
     assert result.notes and "fixes not applied" in result.notes[0]
+
+
+def test_a_byte_order_mark_is_not_a_syntax_error() -> None:
+    data = b"\xef\xbb\xbfvoid mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n}\n"
+    assert lint_bytes(data, "x.glsl", Options(glslang=False)).findings == []
