@@ -40,6 +40,7 @@ class LintContext:
     # Analyses computed once per file and shared by rules (e.g. the semantic model), by name.
     cache: dict[str, Any] = field(default_factory=dict)
     _glslang: list[Diagnostic] | None = None
+    _index: dict[str, list[Tree]] | None = None
 
     def __post_init__(self) -> None:
         if not self.lines:
@@ -50,6 +51,16 @@ class LintContext:
         if self._glslang is None:
             self._glslang = validate(self.text, self.file, self.target) if self.text else []
         return self._glslang
+
+    def nodes(self, kind: str) -> list[Tree]:
+        """Every subtree of this kind (`call`, `variable`, ...), in source order. The tree is
+        walked once per file for all rules, which would otherwise each walk it again."""
+        if self._index is None:
+            self._index = {}
+            if self.tree is not None:
+                for node in walk(self.tree):
+                    self._index.setdefault(node.data, []).append(node)
+        return self._index.get(kind, [])
 
     # --- positions ------------------------------------------------------------------------
 

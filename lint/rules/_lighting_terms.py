@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
+from ..analysis.model import call_args, callee_name, is_tree, semantic_model
 from ..context import LintContext, Node, walk
 
 # --- tree shapes -----------------------------------------------------------------------------
@@ -30,19 +31,7 @@ from ..context import LintContext, Node, walk
 
 def call_name(node: Node) -> str | None:
     """The called name of a `call` node (`f(x)` -> "f"), None for anything else."""
-    if isinstance(node, Tree) and node.data == "call":
-        head = node.children[0]
-        if isinstance(head, Tree) and head.data == "variable":
-            return str(head.children[0])
-    return None
-
-
-def call_args(node: Tree) -> list[Node]:
-    """Arguments of a call or constructor node."""
-    for child in node.children[1:]:
-        if isinstance(child, Tree) and child.data == "arguments":
-            return list(child.children)
-    return []
+    return callee_name(node) if is_tree(node, "call") else None  # type: ignore[arg-type]
 
 
 def var_name(node: Node) -> str | None:
@@ -463,32 +452,17 @@ def schlick_base(node: Node) -> Node | None:
     return None
 
 
-# --- the shared semantic model (lint/analysis/model.py), when it is there -------------------
-
-
-def semantic(ctx: LintContext) -> object | None:
-    """The file's semantic model, or None while the analysis package does not provide one."""
-    try:
-        from ..analysis.model import semantic_model
-    except ImportError:
-        return None
-    return semantic_model(ctx)
+# --- the shared semantic model (lint/analysis/model.py) ---------------------------------------
 
 
 def is_unit(ctx: LintContext, expr: Node) -> bool:
-    """Whether the model proves the expression unit length (False without a model)."""
-    model = semantic(ctx)
-    return bool(model is not None and model.is_unit(expr))  # type: ignore[attr-defined]
+    """Whether the model proves the expression unit length."""
+    return semantic_model(ctx).is_unit(expr)
 
 
-def may_be_negative(ctx: LintContext, expr: Node, fn: Function | None) -> bool:
-    """Whether the value can be below zero: the model's range when there is a model, else
-    whether the expression is an unclamped dot product (directly or through a local)."""
-    model = semantic(ctx)
-    if model is not None:
-        return bool(model.range_of(expr).may_be_negative)  # type: ignore[attr-defined]
-    value = resolve(expr, fn)
-    return call_name(value) == "dot"
+def may_be_negative(ctx: LintContext, expr: Node) -> bool:
+    """Whether the model's range of the value reaches below zero."""
+    return semantic_model(ctx).range_of(expr).may_be_negative
 
 
 def global_constants(ctx: LintContext) -> dict[str, float]:

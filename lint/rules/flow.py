@@ -9,8 +9,8 @@ from collections.abc import Iterator
 from lark import Tree
 
 from ..analysis.flow import FunctionFlow, Var, function_flows, mask_names
+from ..analysis.model import call_args, root_variable
 from ..context import LintContext, walk
-from ..context import tokens as tokens_of
 from ..finding import Finding
 from . import Rule, register
 
@@ -28,15 +28,18 @@ def _main_colour(flow: FunctionFlow) -> Var | None:
 def _assigns(definition: Tree, name: str) -> bool:
     """Whether any statement assigns to `name` (or a component of it), on any path."""
     for node in walk(definition):
-        if node.data == "assignment" or (node.data in ("prefix", "postfix")):
-            target = node.children[0] if node.data != "prefix" else node.children[1]
-            first = next((t for t in tokens_of(target) if t.type == "IDENTIFIER"), None)
-            if first == name:
+        if node.data in ("assignment", "postfix"):
+            target = node.children[0]
+        elif node.data == "prefix":
+            target = node.children[1]
+        elif node.data == "call":  # an out/inout argument may write it
+            if any(root_variable(arg) == name for arg in call_args(node)):
                 return True
-        if node.data == "call":  # an out/inout argument may write it
-            args = [c for c in node.children if isinstance(c, Tree) and c.data == "arguments"]
-            if args and any(t == name for t in tokens_of(args[0])):
-                return True
+            continue
+        else:
+            continue
+        if root_variable(target) == name:
+            return True
     return False
 
 

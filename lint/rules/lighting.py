@@ -11,6 +11,7 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ..analysis.model import semantic_model
 from ..context import LintContext, Node, walk
 from ..finding import Finding, Fix
 from . import Rule, register
@@ -35,7 +36,6 @@ from ._lighting_terms import (
     resolve,
     root_var,
     schlick_base,
-    semantic,
     var_name,
 )
 
@@ -180,7 +180,7 @@ class UnclampedCosine(Rule):
                     if (
                         self._raw(operand, fn, compared)
                         and not self._clamped(node, up, fn)
-                        and may_be_negative(ctx, operand, fn)
+                        and may_be_negative(ctx, operand)
                     ):
                         yield self._finding(ctx, operand, fn)
 
@@ -454,19 +454,9 @@ def _main(ctx: LintContext) -> tuple[Function, str] | None:
     return None
 
 
-def _vector(ctx: LintContext, node: Node, fn: Function | None) -> bool:
-    """Whether the expression is a vector (a colour), by the model's type when there is one."""
-    model = semantic(ctx)
-    if model is not None:
-        return (model.type_of(node) or "").startswith("vec")  # type: ignore[attr-defined]
-    name = var_name(node)
-    if name and fn is not None:
-        return (fn.type_of(name) or "").startswith("vec")
-    if isinstance(node, Tree) and node.data == "constructor":
-        return ctx_type(node).startswith("vec")
-    if isinstance(node, Tree) and node.data == "field":
-        return len(str(node.children[-1])) in (3, 4)
-    return False
+def _vector(ctx: LintContext, node: Node) -> bool:
+    """Whether the expression is a vector (a colour), by the model's type."""
+    return (semantic_model(ctx).type_of(node) or "").startswith("vec")
 
 
 class _Output:
@@ -507,7 +497,7 @@ class _Output:
             text = self.ctx.node_text(args[1]).lower()
             if (value is not None and 0.38 <= value <= 0.5) or "gamma" in text:
                 return args[0]
-        if name == "sqrt" and len(args) == 1 and _vector(self.ctx, args[0], fn):
+        if name == "sqrt" and len(args) == 1 and _vector(self.ctx, args[0]):
             return args[0]
         if not direct and name in self.encoders and args:
             return args[0]
@@ -798,7 +788,7 @@ class HdrWithoutTonemap(Rule):
         for node in calls_in(fn.body):
             name = call_name(node)
             args = call_args(node)
-            if name in ("clamp", "saturate") and args and _vector(ctx, args[0], fn):
+            if name in ("clamp", "saturate") and args and _vector(ctx, args[0]):
                 return True
             if name == "min" and any(const_value(a) == 1.0 for a in args):
                 return True
@@ -851,10 +841,7 @@ class HdrWithoutTonemap(Rule):
 
 def _bounded_hi(ctx: LintContext, node: Node) -> float | None:
     """The model's upper bound of the value when it has a finite one, else None."""
-    model = semantic(ctx)
-    if model is None:
-        return None
-    hi = model.range_of(node).hi  # type: ignore[attr-defined]
+    hi = semantic_model(ctx).range_of(node).hi
     return float(hi) if math.isfinite(hi) else None
 
 

@@ -66,11 +66,10 @@ def is_raw_dot(v: Value) -> bool:
 
 def builtin_calls(ctx: LintContext, model: Model, *names: str) -> Iterator[tuple[Tree, str]]:
     """Calls of these builtins (a user function of the same name is not the builtin)."""
-    for node in walk(ctx.tree):  # type: ignore[arg-type]
-        if node.data == "call":
-            name = callee_name(node)
-            if name in names and name not in model.functions:
-                yield node, name
+    for node in ctx.nodes("call"):
+        name = callee_name(node)
+        if name in names and name not in model.functions:
+            yield node, name
 
 
 def text(ctx: LintContext, node: Node, limit: int = 48) -> str:

@@ -84,7 +84,7 @@ class PowSmallInteger(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
         up = parents(ctx.tree)
-        for node in walk(ctx.tree):
+        for node in ctx.nodes("call"):
             if call_name(node) != "pow":
                 continue
             args = call_args(node)

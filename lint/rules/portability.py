@@ -176,8 +176,8 @@ class MainImageSignature(Rule):
             yield self.report(ctx, near[0], f"`{near[0]}` is not `mainImage`: ShaderToy "
                               "calls `mainImage`, with this capitalisation")  # fmt: skip
             return
-        uses = next((n for n in walk(ctx.tree) if n.data == "variable"
-                     and n.children[0] in ("gl_FragColor", "gl_FragData", "gl_FragCoord")),
+        uses = next((n for n in ctx.nodes("variable")
+                     if n.children[0] in ("gl_FragColor", "gl_FragData", "gl_FragCoord")),
                     None)  # fmt: skip
         if uses is not None:
             yield self.report(
@@ -223,8 +223,8 @@ class FragColor(Rule):
         if main is not None and not _declares(main[0].children[1], main[1]):  # type: ignore[arg-type]
             inside = {id(n) for n in walk(main[0])}
         parents = _parents(ctx.tree)
-        for node in walk(ctx.tree):
-            if node.data != "variable" or node.children[0] not in ("gl_FragColor", "gl_FragData"):
+        for node in ctx.nodes("variable"):
+            if node.children[0] not in ("gl_FragColor", "gl_FragData"):
                 continue
             target: Node = node
             if node.children[0] == "gl_FragData":
@@ -295,9 +295,7 @@ class Es1Texture(Rule):
         if _es1(ctx):
             return
         own = _defined_names(ctx)  # a file may define its own texture2D as a shim
-        for node in walk(ctx.tree):
-            if node.data != "call":
-                continue
+        for node in ctx.nodes("call"):
             callee = node.children[0]
             if not (isinstance(callee, Tree) and callee.data == "variable"):
                 continue
