@@ -208,14 +208,22 @@ def _albedo(material: Material) -> tuple[str, list[str]]:
     return _vec3(material.albedo), []
 
 
+def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
+    """Function-body lines that run `bodies[i]` for material i (the last one as the default)
+    and what they require: one material needs no lookup, more branch on `materialAt`."""
+    if len(bodies) == 1:
+        return [f"    {line}" for line in bodies[0]], []
+    lines = ["    int id = materialAt(P);"]
+    for index in range(len(bodies) - 1, 0, -1):
+        lines += [f"    if (id == {index}) {{", *[f"        {x}" for x in bodies[index]], "    }"]
+    return lines + [f"    {line}" for line in bodies[0]], ["materialAt"]
+
+
 def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
-    lines = ["// The material at a hit point.", "Surface surfaceAt(vec3 P, vec3 N, vec3 V) {"]
     requires = ["Surface", "makeSurface"]
-    if len(materials) > 1:
-        lines.append("    int id = materialAt(P);")
-        requires.append("materialAt")
-    for index in range(len(materials) - 1, -1, -1):
-        material = scene.materials[materials[index]]
+    bodies = []
+    for name in materials:
+        material = scene.materials[name]
         albedo, needs = _albedo(material)
         requires += needs
         call = (
@@ -226,35 +234,29 @@ def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
         if material.diffuse_roughness is not None:
             sigma = glsl_float(material.diffuse_roughness)
             body = [f"Surface s = {call};", f"s.diffuseRoughness = {sigma};", "return s;"]
-        if index == 0:
-            lines += [f"    {line}" for line in body]
-        else:
-            lines += [f"    if (id == {index}) {{", *[f"        {x}" for x in body], "    }"]
-    lines.append("}")
-    return generated("scene.surface", ["surfaceAt"], requires, "\n".join(lines) + "\n")
+        bodies.append(body)
+    branches, lookup = _by_material(bodies)
+    lines = ["// The material at a hit point.", "Surface surfaceAt(vec3 P, vec3 N, vec3 V) {"]
+    lines += [*branches, "}"]
+    return generated("scene.surface", ["surfaceAt"], requires + lookup, "\n".join(lines) + "\n")
 
 
 def _subsurface_unit(scene: Scene, materials: list[str]) -> Unit:
     """`subsurfaceAt(P)`: the scattering colour and phase asymmetry g of the material at P;
     zero colour for opaque materials."""
+    bodies = []
+    for name in materials:
+        material = scene.materials[name]
+        color = _vec3(material.subsurface or [0.0, 0.0, 0.0])
+        bodies.append([f"return vec4({color}, {glsl_float(material.subsurface_g)});"])
+    branches, lookup = _by_material(bodies)
     lines = [
         "// Subsurface scattering colour (rgb) and phase asymmetry g (w) of the material at P.",
         "vec4 subsurfaceAt(vec3 P) {",
+        *branches,
+        "}",
     ]
-    requires = []
-    if len(materials) > 1:
-        lines.append("    int id = materialAt(P);")
-        requires.append("materialAt")
-    for index in range(len(materials) - 1, -1, -1):
-        material = scene.materials[materials[index]]
-        color = _vec3(material.subsurface or [0.0, 0.0, 0.0])
-        value = f"vec4({color}, {glsl_float(material.subsurface_g)})"
-        if index == 0:
-            lines.append(f"    return {value};")
-        else:
-            lines.append(f"    if (id == {index}) return {value};")
-    lines.append("}")
-    return generated("scene.subsurface", ["subsurfaceAt"], requires, "\n".join(lines) + "\n")
+    return generated("scene.subsurface", ["subsurfaceAt"], lookup, "\n".join(lines) + "\n")
 
 
 def _translucency(ident: str) -> str:
