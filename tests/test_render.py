@@ -27,6 +27,16 @@ def test_constant_colour_is_exact_in_a_float_framebuffer() -> None:
     assert result.draw_seconds >= 0.0
 
 
+def test_repeated_draws_are_each_timed_and_give_the_same_frame() -> None:
+    once = render_full(shader("fragColor = vec4(fragCoord, iTime, 1.0);"), W, H, time=2.0)
+    many = render_full(
+        shader("fragColor = vec4(fragCoord, iTime, 1.0);"), W, H, time=2.0, repeats=4
+    )
+    assert len(once.draw_times) == 1 and len(many.draw_times) == 4
+    assert all(t > 0.0 for t in many.draw_times)
+    assert np.array_equal(once.image, many.image)
+
+
 def test_rows_start_at_the_top_of_the_picture() -> None:
     img = render(shader("fragColor = vec4(fragCoord / iResolution.xy, 0.0, 1.0);"), W, H)
     # fragCoord is at pixel centres, so the bottom row has y = 0.5 / H.
@@ -65,13 +75,10 @@ def test_nan_is_reported_by_image_stats() -> None:
 def test_non_terminating_shader_is_stopped() -> None:
     # llvmpipe cuts every loop off after 65535 iterations, so an endless loop alone would
     # finish; a heavy body (256 sines per iteration) keeps it busy for minutes.
-    source = (
-        "#define X4(s) s s s s\n"
-        + shader(
-            "float a = fragCoord.x;\n"
-            "    while (iTime >= 0.0) { X4(X4(X4(X4(a = sin(a) + 1.0;)))) }\n"
-            "    fragColor = vec4(a);"
-        )
+    source = "#define X4(s) s s s s\n" + shader(
+        "float a = fragCoord.x;\n"
+        "    while (iTime >= 0.0) { X4(X4(X4(X4(a = sin(a) + 1.0;)))) }\n"
+        "    fragColor = vec4(a);"
     )
     start = time.monotonic()
     with pytest.raises(InputError, match="did not finish within 5 s") as raised:

@@ -128,8 +128,9 @@ def set_uniforms(program: Any, frame: Frame) -> None:
             program[name].value = unit
 
 
-def draw(ctx: Any, program: Any, frame: Frame) -> tuple[np.ndarray, float]:
-    """Draw one frame; return it in image convention (row 0 at the top) and the draw time."""
+def draw(ctx: Any, program: Any, frame: Frame, repeats: int = 1) -> tuple[np.ndarray, list[float]]:
+    """Draw the frame `repeats` times; return it in image convention (row 0 at the top) and the
+    time of each draw (for benchmarks: the first may include the driver's lazy compilation)."""
     import moderngl
 
     black = ctx.texture((CHANNEL_SIZE, CHANNEL_SIZE), 4, dtype="f4")
@@ -146,10 +147,12 @@ def draw(ctx: Any, program: Any, frame: Frame) -> tuple[np.ndarray, float]:
     framebuffer.clear(0.0, 0.0, 0.0, 0.0)
     set_uniforms(program, frame)
     vertex_array = ctx.vertex_array(program, [])
-    start = time.perf_counter()
-    vertex_array.render(moderngl.TRIANGLES, vertices=3)
-    ctx.finish()
-    seconds = time.perf_counter() - start
+    seconds = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        vertex_array.render(moderngl.TRIANGLES, vertices=3)
+        ctx.finish()
+        seconds.append(time.perf_counter() - start)
     raw = framebuffer.read(components=4, dtype="f4")
     pixels = np.frombuffer(raw, dtype=np.float32).reshape(frame.height, frame.width, 4)
     # GL's origin is the bottom-left corner; images start at the top.

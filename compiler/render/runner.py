@@ -39,7 +39,8 @@ class RenderResult:
     image: np.ndarray
     renderer: str  # GL_RENDERER and version, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (OpenGL 4.5 …)"
     glsl_version: str  # "300 es", or "330" where the driver lacks ES 3.00 shaders
-    draw_seconds: float  # time of the draw call alone; on llvmpipe this is CPU time
+    draw_seconds: float  # time of the (first) draw call alone; on llvmpipe this is CPU time
+    draw_times: list[float]  # seconds of each of the `repeats` draws, the first included
 
 
 def _tail(text: str) -> str:
@@ -140,15 +141,24 @@ def render_full(
     timeout: float = DEFAULT_TIMEOUT_S,
     date: tuple[float, float, float, float] = DEFAULT_DATE,
     channels: Sequence[np.ndarray] = (),
+    repeats: int = 1,
 ) -> RenderResult:
-    """Render one frame of a ShaderToy Image-tab shader; see `render`."""
+    """Render one frame of a ShaderToy Image-tab shader; see `render`. With `repeats` > 1 the
+    frame is drawn that many times in one context and every draw is timed (for benchmarks)."""
     if width < 1 or height < 1:
         raise UsageError(f"image size must be positive, got {width}x{height}")
     with tempfile.TemporaryDirectory(prefix="glint-render-") as output_dir:
         job = {
-            "source": source, "width": width, "height": height, "time": time, "frame": frame,
-            "mouse": list(mouse), "date": list(date), "output_dir": output_dir,
+            "source": source,
+            "width": width,
+            "height": height,
+            "time": time,
+            "frame": frame,
+            "mouse": list(mouse),
+            "date": list(date),
+            "output_dir": output_dir,
             "channels": _save_channels(channels, output_dir),
+            "repeats": max(1, repeats),
         }
         stderr = _run_worker(job, timeout)
         outcome = _outcome(output_dir, stderr)
@@ -167,7 +177,8 @@ def render_full(
         image=image,
         renderer=str(outcome["renderer"]),
         glsl_version=str(outcome["glsl_version"]),
-        draw_seconds=float(outcome["seconds"]),  # type: ignore[arg-type]
+        draw_seconds=float(outcome["seconds"][0]),  # type: ignore[index]
+        draw_times=[float(t) for t in outcome["seconds"]],  # type: ignore[union-attr]
     )
 
 

@@ -37,7 +37,7 @@ def run_job(job: dict[str, Any]) -> dict[str, Any]:
         program, version = gl.build_program(ctx, job["source"])
     except gl.CompileFailure as exc:
         return {"status": "compile", "message": str(exc), "version": gl.glsl_version(ctx)}
-    image, seconds = gl.draw(ctx, program, frame)
+    image, seconds = gl.draw(ctx, program, frame, int(job.get("repeats", 1)))
     np.save(os.path.join(job["output_dir"], "image.npy"), image)
     return {"status": "ok", "renderer": renderer, "glsl_version": version, "seconds": seconds}
 
