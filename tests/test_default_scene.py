@@ -1,19 +1,18 @@
 """The composed default scene is the template's scene: it renders like an independent,
-monolithic rewrite of the lighting-model skill's template (tests/fixtures), with no NaN/Inf."""
+monolithic rewrite of the lighting-model skill's template (compiler/bench/template.glsl), with no
+NaN/Inf."""
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 import pytest
 
+from glint.compiler.bench.scenes import template_source
 from glint.compiler.compose import compose
 from glint.compiler.render import flip_error, image_stats, render
 
 pytestmark = pytest.mark.render
 
-FIXTURE = Path(__file__).parent / "fixtures" / "template_reference.glsl"
 # Mean FLIP between the two renders. They compute the same model with the same float
 # operations, so anything beyond rounding noise means the composed scene drifted. Measured on
 # llvmpipe: 0.0 for the composed scene; 0.004 for the sphere at roughness 0.45 instead of 0.35,
@@ -33,7 +32,7 @@ def composed() -> str:
 @pytest.mark.parametrize("time", [0.0, 1.0, 7.5])
 def test_composed_default_matches_the_template(composed: str, time: float) -> None:
     ours = render(composed, *SIZE, time=time)
-    reference = render(FIXTURE.read_text(), *SIZE, time=time)
+    reference = render(template_source(), *SIZE, time=time)
     stats = image_stats(ours)
     assert stats["nan"] == 0 and stats["inf"] == 0
     # Not a blank frame: sky, sphere and ground give real contrast.

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from glint.compiler.bench.scenes import template_source
 from glint.compiler.glslang import validate
 from glint.lint.options import Options
 from glint.lint.rules import all_rules, rule_doc
@@ -17,7 +18,6 @@ from glint.lint.runner import lint_source, lint_text
 
 FAST = Options(select=["L"], glslang=False)
 CORPORA = Path(__file__).resolve().parent.parent / "corpus"
-TEMPLATE = Path(__file__).resolve().parent.parent / "fixtures" / "template_reference.glsl"
 needs_glslang = pytest.mark.skipif(
     shutil.which("glslangValidator") is None, reason="glslangValidator is not installed"
 )
@@ -397,4 +397,4 @@ def test_valid_corpus_has_no_lighting_findings(path: Path) -> None:
 
 
 def test_template_reference_lints_clean_of_lighting_rules() -> None:
-    assert lint_source(TEMPLATE.read_text(), str(TEMPLATE), FAST) == []
+    assert lint_source(template_source(), "template.glsl", FAST) == []
