@@ -18,7 +18,7 @@ from . import shadertoy
 from .catalog import Catalog, Snippet, load_catalog
 from .errors import InputError
 from .glsl.symbols import FunctionDef, analyze
-from .render import render
+from .render import render, render_full
 from .slots import SLOTS
 from .standalone import SCENE_STUB, standalone_source
 
@@ -27,6 +27,7 @@ PROBE_PRELUDE = (
     "precision highp float;\n"
     "precision highp int;\n"
     "uniform vec3 iResolution;\n"
+    "uniform float iTime;\n"  # read by camera.orbit; 0 in a probe
     "uniform highp sampler2D iChannel0;\n"
     "uniform highp sampler2D iChannel1;\n"
     "uniform highp sampler2D iChannel2;\n"
@@ -52,6 +53,9 @@ _RESULTS = {
 _CHANNELS = 4
 _SLOTS_PER_SAMPLE = 4 * _CHANNELS
 _ROW = 256  # texels per row of the input textures and the framebuffer
+# Evaluations per timed pass: every variant is timed over the same 256 x 256 grid, its samples
+# repeated to fill it, so that passes of different variants do the same amount of work.
+TIMED_PIXELS = _ROW * _ROW
 
 
 @dataclass(frozen=True)
@@ -83,8 +87,10 @@ def entry_function(snippet: Snippet) -> FunctionDef:
     return snippet_function(snippet, slot.entry)
 
 
-def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
-    """The scalar input names a probe of `function` takes, and the GLSL call that uses them."""
+def probe_inputs(function: FunctionDef, out_params: bool = False) -> tuple[list[str], str]:
+    """The scalar input names a probe of `function` takes, and the GLSL call that uses them.
+    An out parameter is refused unless `out_params`, where it becomes the probe's local
+    `out_<name>` (see `probe_shader`)."""
     names: list[str] = []
     args: list[str] = []
 
@@ -95,8 +101,10 @@ def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
 
     for param in function.params:
         if "out" in param.qualifier.split():
-            raise InputError(f"{function.name}: cannot probe an out parameter ({param.name})")
-        if param.type in _SIZES:
+            if not out_params:
+                raise InputError(f"{function.name}: cannot probe an out parameter ({param.name})")
+            args.append(f"out_{param.name}")
+        elif param.type in _SIZES:
             size = _SIZES[param.type]
             if size == 1:
                 args.append(scalar(param.name))
@@ -119,27 +127,45 @@ def probe_inputs(function: FunctionDef) -> tuple[list[str], str]:
     return names, f"{function.name}({', '.join(args)})"
 
 
+def _fetches(channels: int = _CHANNELS) -> str:
+    return "    ivec2 texel = ivec2(fragCoord);\n" + "".join(
+        f"    vec4 in{c} = texelFetch(iChannel{c}, texel, 0);\n" for c in range(channels)
+    )
+
+
+def _outputs(function: FunctionDef, call: str) -> tuple[str, str, str]:
+    """For a void function with out parameters (cameraRay): the statements that declare them
+    and make the call, the result and its type. The result is their sum, so that no output is
+    optimised away: it serves timing and static cost, its value means little."""
+    outs = [p for p in function.params if "out" in p.qualifier.split()]
+    if function.return_type != "void" or len({p.type for p in outs}) != 1:
+        raise InputError(f"{function.name}: out parameters of one type, and no result, expected")
+    declare = "".join(f"    {p.type} out_{p.name};\n" for p in outs)
+    return f"{declare}    {call};\n", " + ".join(f"out_{p.name}" for p in outs), outs[0].type
+
+
 def probe_shader(
     snippet: Snippet,
     catalog: Catalog,
     scene_stub: str = SCENE_STUB,
     function: str | None = None,
+    out_params: bool = False,
 ) -> tuple[str, list[str], int]:
     """The probe's source, its scalar input names and the width of its result (1 to 4).
     `scene_stub` defines `map` (and `materialAt`) for snippets that query the scene; `function`
-    names a function of the snippet to probe instead of its slot's entry."""
+    names a function of the snippet to probe instead of its slot's entry; `out_params` allows a
+    void function with out parameters (see `_outputs`)."""
     probed = entry_function(snippet) if function is None else snippet_function(snippet, function)
-    names, call = probe_inputs(probed)
-    if probed.return_type not in _RESULTS:
-        raise InputError(f"{probed.name}: cannot probe a {probed.return_type} result")
-    result, width = _RESULTS[probed.return_type].format(call), _SIZES[probed.return_type]
+    names, call = probe_inputs(probed, out_params)
+    statements, value, result_type = "", call, probed.return_type
+    if out_params and any("out" in p.qualifier.split() for p in probed.params):
+        statements, value, result_type = _outputs(probed, call)
+    if result_type not in _RESULTS:
+        raise InputError(f"{probed.name}: cannot probe a {result_type} result")
+    result, width = _RESULTS[result_type].format(value), _SIZES[result_type]
     main = (
         "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-        "    ivec2 texel = ivec2(fragCoord);\n"
-        "    vec4 in0 = texelFetch(iChannel0, texel, 0);\n"
-        "    vec4 in1 = texelFetch(iChannel1, texel, 0);\n"
-        "    vec4 in2 = texelFetch(iChannel2, texel, 0);\n"
-        "    vec4 in3 = texelFetch(iChannel3, texel, 0);\n"
+        f"{_fetches()}{statements}"
         f"    fragColor = {result};\n"
         "}\n"
     )
@@ -163,19 +189,100 @@ def run_probe(
     sphere above the plane y = -1. `function` probes that function of the snippet (defined in its
     own body, e.g. a helper such as envBRDFApprox) instead of the slot's entry."""
     catalog = catalog or load_catalog()
+    source, names, width = probe_shader(catalog.get(snippet_id), catalog, scene_stub, function)
+    count = _sample_count(snippet_id, names, inputs)
+    channels, rows, cols = _pack(names, inputs, count, min(count, _ROW))
+    return _unpack(render(source, cols, rows, channels=channels), count, width)
+
+
+@dataclass(frozen=True)
+class TimedProbe:
+    """A probe pass drawn several times: its values and how long each draw took."""
+
+    values: np.ndarray  # as `run_probe` returns them, one per sample given
+    draw_times: list[float]  # seconds per draw, the first (lazy compilation on Mesa) included
+    pixels: int  # evaluations per draw
+    renderer: str  # GL_RENDERER and version of the driver that drew it
+
+    def median_draw(self) -> float:
+        """Median seconds of the draws after the first (that one may compile the shader)."""
+        times = self.draw_times[1:] or self.draw_times
+        return float(np.median(times))
+
+
+def run_probe_timed(
+    snippet_id: str,
+    inputs: dict[str, np.ndarray],
+    catalog: Catalog | None = None,
+    scene_stub: str = SCENE_STUB,
+    function: str | None = None,
+    repeats: int = 7,
+    pixels: int = TIMED_PIXELS,
+    out_params: bool = False,
+) -> TimedProbe:
+    """`run_probe` drawn `repeats` times in one context over a grid of at least `pixels`
+    evaluations: the samples are repeated, in order, to fill it. `out_params` lets a void entry
+    with out parameters (cameraRay) be timed; its values are then the sum of its outputs."""
+    catalog = catalog or load_catalog()
     snippet = catalog.get(snippet_id)
-    source, names, width = probe_shader(snippet, catalog, scene_stub, function)
+    source, names, width = probe_shader(snippet, catalog, scene_stub, function, out_params)
+    count = _sample_count(snippet_id, names, inputs)
+    channels, rows, cols = _pack(names, inputs, max(count, pixels), _ROW)
+    frame = render_full(source, cols, rows, channels=channels, repeats=repeats)
+    values = _unpack(frame.image, count, width)
+    return TimedProbe(values, frame.draw_times, rows * cols, frame.renderer)
+
+
+def probe_channels(names: list[str]) -> int:
+    """How many input textures a probe with these scalar inputs reads (four scalars each)."""
+    return max(1, math.ceil(len(names) / 4))
+
+
+def empty_probe_shader(channels: int) -> str:
+    """A probe that evaluates nothing: it fetches the first `channels` input texels, as a probe
+    with that many inputs does, and writes their sum, so that no fetch is optimised away."""
+    fetched = " + ".join(f"in{c}" for c in range(channels)) or "vec4(0.0)"
+    main = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        f"{_fetches(channels)}"
+        f"    fragColor = {fetched};\n"
+        "}\n"
+    )
+    return PROBE_PRELUDE + main + shadertoy.EPILOGUE
+
+
+def run_empty_probe(channels: int, repeats: int = 7, pixels: int = TIMED_PIXELS) -> TimedProbe:
+    """The timed pass of `empty_probe_shader` over the same grid as `run_probe_timed`: what a
+    probe costs before its function does anything."""
+    names = [f"x{i}" for i in range(4 * channels)]
+    inputs = {name: np.linspace(0.0, 1.0, pixels) for name in names}
+    data, rows, cols = _pack(names, inputs, pixels, _ROW)
+    frame = render_full(empty_probe_shader(channels), cols, rows, channels=data, repeats=repeats)
+    values = _unpack(frame.image, pixels, 4)
+    return TimedProbe(values, frame.draw_times, rows * cols, frame.renderer)
+
+
+def _sample_count(snippet_id: str, names: list[str], inputs: dict[str, np.ndarray]) -> int:
     missing = [n for n in names if n not in inputs]
     if missing:
         raise InputError(f"{snippet_id}: probe inputs missing: {', '.join(missing)}")
-    count = len(np.asarray(inputs[names[0]]))
-    rows = max(1, math.ceil(count / _ROW))
-    cols = min(count, _ROW)
+    return len(np.asarray(inputs[names[0]]))
+
+
+def _pack(
+    names: list[str], inputs: dict[str, np.ndarray], pixels: int, cols: int
+) -> tuple[list[np.ndarray], int, int]:
+    """The input textures for `pixels` texels, `cols` per row: sample i in texel i, the samples
+    repeated in order where there are fewer than texels. Returns them, the rows and the cols."""
+    rows = max(1, math.ceil(pixels / cols))
     data = np.zeros((rows * cols, _SLOTS_PER_SAMPLE), dtype=np.float32)
     for index, name in enumerate(names):
-        data[:count, index] = np.asarray(inputs[name], dtype=np.float32)
+        data[:, index] = np.resize(np.asarray(inputs[name], dtype=np.float32), rows * cols)
     channels = [data[:, 4 * c : 4 * c + 4].reshape(rows, cols, 4) for c in range(_CHANNELS)]
-    image = render(source, cols, rows, channels=channels)
+    return channels, rows, cols
+
+
+def _unpack(image: np.ndarray, count: int, width: int) -> np.ndarray:
     # Rendered rows come top-first; texel row 0 (the first samples) is the bottom row.
-    values = image[::-1].reshape(rows * cols, 4)[:count]
+    values = image[::-1].reshape(-1, 4)[:count]
     return values[:, 0] if width == 1 else values[:, :width]
