@@ -10,10 +10,18 @@ import numpy as np
 import pytest
 
 from glint.compiler import shadertoy
+from glint.compiler.bench.errors import set_errors
+from glint.compiler.bench.occlusion import (
+    TMAX,
+    TMIN,
+    ao_inputs,
+    ao_sets,
+    shadow_inputs,
+    shadow_sets,
+)
 from glint.compiler.catalog import Snippet, load_catalog
 from glint.compiler.probes import PROBE_PRELUDE, run_probe
-from glint.compiler.references import reference
-from glint.compiler.references.occlusion_cases import ao_cases, shadow_cases
+from glint.compiler.references.occlusion_cases import shadow_cases
 from glint.compiler.references.scenes import SCENES
 from glint.compiler.references.scenes import scene as reference_scene
 from glint.compiler.render import render
@@ -23,56 +31,26 @@ pytestmark = pytest.mark.render
 CATALOG = load_catalog()
 SHADOWS = sorted(s.id for s in CATALOG.in_slot("shadow"))
 AOS = sorted(s.id for s in CATALOG.in_slot("ao"))
-# The default scene's shadow ray starts 0.02 off the surface; every occluder of the reference
-# scenes is within 20, so no variant is cut short by tmax, only by its own step count.
-TMIN, TMAX = 0.02, 20.0
-
-
-def shadow_inputs(ro: np.ndarray, rd: np.ndarray, tmin: float, tmax: float) -> dict:
-    count = len(ro)
-    rd = np.broadcast_to(rd, ro.shape)
-    inputs = {f"ro{i}": ro[:, i] for i in range(3)} | {f"rd{i}": rd[:, i] for i in range(3)}
-    return inputs | {"tmin": np.full(count, tmin), "tmax": np.full(count, tmax)}
-
-
-def ao_inputs(p: np.ndarray, n: np.ndarray) -> dict:
-    return {f"p{i}": p[:, i] for i in range(3)} | {f"n{i}": n[:, i] for i in range(3)}
-
-
-@cache
-def shadow_truth(snippet_id: str, case: int) -> np.ndarray:
-    """Ground truth for one shadow case: a disc light matched to the snippet's SHADOW_K, or a
-    single ray for the hard shadow. Cached: presets of one base share nothing but the scene."""
-    snippet = CATALOG.snippets[snippet_id]
-    c = shadow_cases()[case]
-    args = {"scene": c.scene, "ro": c.ro, "rd": c.light, "tmax": TMAX}
-    if "SHADOW_K" in snippet.params:
-        args["k"] = float(snippet.params["SHADOW_K"].default)
-    return reference(snippet.reference)(**args)
-
-
-@cache
-def ao_truth(case: int) -> np.ndarray:
-    c = ao_cases()[case]
-    return reference("ao_cosine_visibility")(scene=c.scene, p=c.p, n=c.n)
 
 
 @cache
 def shadow_errors(snippet_id: str) -> np.ndarray:
-    """|GPU − truth| over every shadow case, pooled."""
+    """|GPU − truth| over every shadow case, pooled. The truth is the snippet's own reference:
+    a disc light matched to its SHADOW_K, or a single ray for the hard shadow."""
+    snippet = CATALOG.snippets[snippet_id]
+    k = snippet.params.get("SHADOW_K")
     errors = []
-    for index, c in enumerate(shadow_cases()):
-        stub = reference_scene(c.scene).glsl()
-        gpu = run_probe(snippet_id, shadow_inputs(c.ro, c.light, TMIN, TMAX), CATALOG, stub)
-        errors.append(np.abs(gpu.astype(np.float64) - shadow_truth(snippet_id, index)))
+    for case in shadow_sets(snippet.reference, None if k is None else float(k.default)):
+        gpu = run_probe(snippet_id, case.inputs, CATALOG, case.scene_stub)
+        errors.append(set_errors(case, gpu))
     return np.concatenate(errors)
 
 
 def ao_errors(snippet_id: str) -> np.ndarray:
     errors = []
-    for index, c in enumerate(ao_cases()):
-        gpu = run_probe(snippet_id, ao_inputs(c.p, c.n), CATALOG, reference_scene(c.scene).glsl())
-        errors.append(np.abs(gpu.astype(np.float64) - ao_truth(index)))
+    for case in ao_sets():
+        gpu = run_probe(snippet_id, case.inputs, CATALOG, case.scene_stub)
+        errors.append(set_errors(case, gpu))
     return np.concatenate(errors)
 
 

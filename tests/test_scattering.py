@@ -7,10 +7,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from glint.compiler.bench import subsurface
+from glint.compiler.bench.errors import set_errors
 from glint.compiler.catalog import load_catalog
 from glint.compiler.probes import run_probe
 from glint.compiler.references import scattering
-from glint.compiler.references.scattering import phase_henyey_greenstein, subsurface_sphere
+from glint.compiler.references.scattering import phase_henyey_greenstein
 
 CATALOG = load_catalog()
 PHASES = sorted(s.id for s in CATALOG.in_slot("phase"))
@@ -89,42 +91,19 @@ def test_medium_ends() -> None:
     np.testing.assert_allclose(values[1], scattering.WATER_INSCATTER, atol=1e-7)
 
 
-# --- subsurface on reference spheres ----------------------------------------------------------
-
-RADII = [0.05, 0.1, 0.2, 0.5, 1.0, 3.0]
-
-
-def sphere_scene(radius: float) -> str:
-    return (
-        f"float map(vec3 p) {{ return length(p) - {radius!r}; }}\n"
-        "int materialAt(vec3 p) { return 0; }\n"
-    )
+# --- subsurface on reference spheres (bench/subsurface.py) -----------------------------------
 
 
 @pytest.mark.render
 def test_subsurface_within_its_budget_on_spheres(capsys: pytest.CaptureFixture[str]) -> None:
-    rng = np.random.default_rng(11)
+    rng = np.random.default_rng(subsurface.SEED)
     budget = CATALOG.get("sss.sdf_probe").error_budget["max_abs"]
     report = []
-    for radius in RADII:
-        n = rng.normal(size=(4000, 3))
-        n /= np.linalg.norm(n, axis=1, keepdims=True)
-        L = rng.normal(size=(4000, 3))
-        L /= np.linalg.norm(L, axis=1, keepdims=True)
-        p = n * radius  # on the surface, as a raymarcher's hit is
-        inputs = {f"p{i}": p[:, i] for i in range(3)} | {f"L{i}": L[:, i] for i in range(3)}
-        gpu = run_probe("sss.sdf_probe", inputs, CATALOG, scene_stub=sphere_scene(radius))
-        p32, L32 = p.astype(np.float32), L.astype(np.float32)
-        exact = subsurface_sphere(
-            p0=p32[:, 0],
-            p1=p32[:, 1],
-            p2=p32[:, 2],
-            L0=L32[:, 0],
-            L1=L32[:, 1],
-            L2=L32[:, 2],
-            radius=radius,
-        )
-        error = np.abs(gpu - exact)
+    for radius in subsurface.RADII:
+        n, L = subsurface.sphere_directions(rng, subsurface.SAMPLES)  # noqa: N806
+        case = subsurface.subsurface_set(radius, n, L)
+        gpu = run_probe("sss.sdf_probe", case.inputs, CATALOG, scene_stub=case.scene_stub)
+        error = set_errors(case, gpu)
         lit = np.sum(n * L, axis=1) > 0.3  # leaving the body at once: nothing in the way
         assert np.allclose(gpu[lit], 1.0)
         assert error.max() <= budget, f"radius {radius}: {error.max():.3f}"
