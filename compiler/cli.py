@@ -57,6 +57,12 @@ def build_parser() -> argparse.ArgumentParser:
     compose = sub.add_parser("compose", help="compose a scene into one shader")
     compose.add_argument("scene", nargs="?", help="scene TOML file (default: the embedded scene)")
     compose.add_argument("-o", "--output", help="write the shader here instead of stdout")
+    compose.add_argument(
+        "--explain",
+        action="store_true",
+        help="print, for each slot, whether it is in and why and which variant fills it and why "
+        "(the shader goes to -o if given)",
+    )
     _add_target(compose)
     _add_quality(compose)
     compose.set_defaults(handler=cmd_compose)
@@ -170,10 +176,15 @@ def _read_text(path: str) -> str:
 
 
 def cmd_compose(args: argparse.Namespace) -> int:
-    from .compose import compose
+    from .compose import compose_scene
+    from .explain import explain
     from .outputs import write_atomic
+    from .scene import load_scene
 
-    shader = compose(args.scene, args.target, args.tier, _overrides(args.variant))
+    scene = load_scene(args.scene)
+    shader = compose_scene(scene, args.target, args.tier, _overrides(args.variant))
+    if args.explain:
+        sys.stdout.write(explain(scene, shader.plan))
     if args.output:
         write_atomic(args.output, shader.text.encode("utf-8"))
         snippets = sum(1 for u in shader.units if u.slot != "scene")
@@ -182,7 +193,7 @@ def cmd_compose(args: argparse.Namespace) -> int:
             f"tier {shader.plan.tier}",
             file=sys.stderr,
         )
-    else:
+    elif not args.explain:
         sys.stdout.write(shader.text)
     return 0
 

@@ -1,9 +1,13 @@
-"""The planner: which variant fills each slot, and the parameter values the scene sets.
+"""The planner: which slots the scene exercises, which variant fills each, and why; and the
+parameter values the scene sets.
 
-Slots the scene's content decides (camera, background, tone map, output transfer) follow the
-scene; the quality slots follow the tier table in `snippets/tiers.toml`, then the scene's
-`[quality.variants]`, then the command line. Which slots end up in the shader is not decided
-here: the resolver pulls in only what the generated scene code reaches.
+Which slots are in follows from the scene's content (`scene_slots.py`): no shadow without a
+shadow-casting light, no attenuation without a point light, and so on. Slots the content decides
+(camera, background, tone map, output transfer) follow the scene; the quality slots follow the
+tier table in `snippets/tiers.toml`, then what the content asks for (a rough-diffuse model for
+materials with a diffuse roughness, no specular occlusion without AO), then the scene's
+`[quality.variants]`, then the command line. Only slots in use get a variant, so the resolver
+fails loudly if the generated code reaches a slot the planner did not expect.
 """
 
 from __future__ import annotations
@@ -15,15 +19,19 @@ from importlib import resources
 from .catalog import Catalog, glsl_value
 from .errors import InputError
 from .scene import LookAtCamera, OrbitCamera, Scene
+from .scene_slots import SlotUse, slot_uses
 from .slots import SLOTS
+
+TIERS = ("fast", "balanced", "reference")
 
 
 @dataclass
 class Plan:
     tier: str
-    choices: dict[str, str] = field(default_factory=dict)  # slot -> snippet id
+    choices: dict[str, str] = field(default_factory=dict)  # slot in use -> snippet id
     reasons: dict[str, str] = field(default_factory=dict)  # slot -> why that variant
     params: dict[str, str] = field(default_factory=dict)  # #define name -> GLSL value
+    uses: dict[str, SlotUse] = field(default_factory=dict)  # every slot: in or out, and why
 
 
 def tier_table() -> dict[str, dict[str, str]]:
@@ -45,9 +53,10 @@ def plan(
         result.choices[slot] = f"{slot}.{variant}"
         result.reasons[slot] = why
 
+    own = tiers.get(tier, {})
     for slot, variant in tiers["balanced"].items():
-        choose(slot, variant, "balanced tier default")
-    for slot, variant in tiers.get(tier, {}).items():
+        choose(slot, variant, f"{tier} tier" if slot in own else f"{tier} tier (as balanced)")
+    for slot, variant in own.items():
         choose(slot, variant, f"{tier} tier")
     choose("camera", scene.camera.type, f"camera.type = {scene.camera.type!r}")
     choose("tonemap", scene.post.tonemap, f"post.tonemap = {scene.post.tonemap!r}")
@@ -57,6 +66,12 @@ def plan(
         choose("background", "gradient_sun", "background.sun with a directional light")
     else:
         choose("background", "gradient", "no sun to draw in the background")
+    rough = _rough_materials(scene)
+    if rough:
+        why = f"material {rough[0]!r} has diffuse_roughness; the {tier} tier's rough diffuse"
+        choose("diffuse", tiers["rough_diffuse"][tier], why)
+    if not scene.effects.ao:
+        choose("specocc", "none", "effects.ao = false: no occlusion to derive it from")
     for source, table in (
         ("quality.variants", scene.quality.variants),
         ("--variant", overrides or {}),
@@ -65,10 +80,21 @@ def plan(
             _check_override(catalog, source, slot, variant)
             choose(slot, variant, f"{source} {slot} = {variant!r}")
 
+    result.uses = slot_uses(scene, catalog, result.choices)
+    for slot, use in result.uses.items():
+        if not use.used:
+            result.choices.pop(slot, None)
+            result.reasons.pop(slot, None)
     result.params = scene_params(scene)
     if result.choices.get("irradiance") == "irradiance.sh9" and _has_environment_light(scene):
         result.params |= _sh9_params(result.choices["env"], result.params)
     return result
+
+
+def _rough_materials(scene: Scene) -> list[str]:
+    """Materials in use whose diffuse is rougher than Lambert's."""
+    used = sorted({obj.material for obj in scene.objects})
+    return [m for m in used if (scene.materials[m].diffuse_roughness or 0.0) > 0.0]
 
 
 def _has_environment_light(scene: Scene) -> bool:

@@ -48,7 +48,10 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials))
     units.append(_surface_unit(scene, materials))
-    translucent = any(scene.materials[m].subsurface is not None for m in materials)
+    # Translucency is lit by directional lights only; without one it has nothing to show.
+    translucent = bool(lights.directional) and any(
+        scene.materials[m].subsurface is not None for m in materials
+    )
     if translucent:
         units.append(_subsurface_unit(scene, materials))
     units.append(_shade_unit(scene, lights, translucent))
@@ -226,19 +229,31 @@ def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
         material = scene.materials[name]
         albedo, needs = _albedo(material)
         requires += needs
-        call = (
-            f"makeSurface(P, N, V, {albedo}, "
-            f"{glsl_float(material.roughness)}, {glsl_float(material.metallic)})"
-        )
-        body = [f"return {call};"]
-        if material.diffuse_roughness is not None:
-            sigma = glsl_float(material.diffuse_roughness)
-            body = [f"Surface s = {call};", f"s.diffuseRoughness = {sigma};", "return s;"]
+        body, extra = _material_body(material, albedo)
+        requires += extra
         bodies.append(body)
     branches, lookup = _by_material(bodies)
     lines = ["// The material at a hit point.", "Surface surfaceAt(vec3 P, vec3 N, vec3 V) {"]
     lines += [*branches, "}"]
     return generated("scene.surface", ["surfaceAt"], requires + lookup, "\n".join(lines) + "\n")
+
+
+def _material_body(material: Material, albedo: str) -> tuple[list[str], list[str]]:
+    """The lines that build one material's Surface, and what they require beyond makeSurface:
+    the metallic path and the diffuse roughness appear only for materials that have them."""
+    metal = material.metallic > 0.0
+    prelude = []
+    if metal and albedo.startswith("mix("):  # a pattern: evaluate it once for both uses
+        prelude, albedo = [f"vec3 albedo = {albedo};"], "albedo"
+    call = f"makeSurface(P, N, V, {albedo}, {glsl_float(material.roughness)})"
+    if not metal and material.diffuse_roughness is None:
+        return [f"return {call};"], []
+    lines = [*prelude, f"Surface s = {call};"]
+    if metal:
+        lines.append(f"applyMetallic(s, {albedo}, {glsl_float(material.metallic)});")
+    if material.diffuse_roughness is not None:
+        lines.append(f"s.diffuseRoughness = {glsl_float(material.diffuse_roughness)};")
+    return [*lines, "return s;"], ["applyMetallic"] if metal else []
 
 
 def _subsurface_unit(scene: Scene, materials: list[str]) -> Unit:
@@ -283,7 +298,7 @@ def _shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
     lines.append("    vec3 color = vec3(0.0);")
     for call in light_calls:
         lines.append(f"    color += {call.replace('occlusion', occlusion)};")
-    if translucent and lights.directional:
+    if translucent:
         lines.append("    vec4 sss = subsurfaceAt(s.P);")
         lines += [f"    color += {_translucency(ident)};" for ident in lights.directional]
         requires += ["subsurfaceAt", "subsurface", "phase"]

@@ -157,7 +157,7 @@ def test_catalog_entries_carry_the_parsed_signatures() -> None:
         "void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd)"
     ]
     assert entries["core.surface"]["signature"] == [
-        "Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float metallic)",
+        "Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness)",
         "Dots lightDots(Surface s, vec3 L)",
     ]
 

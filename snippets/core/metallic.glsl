@@ -1,0 +1,15 @@
+/* ---
+id = "core.metallic"
+slot = "core"
+summary = "Metallic workflow: a metal reflects its albedo and has no diffuse"
+provides = ["applyMetallic"]
+requires = ["Surface", "DIELECTRIC_F0"]
+sources = ["lighting-model skill, step 8", "Filament PBR notes, 4.8 (metallic parameterization)"]
+--- */
+// Turns the dielectric that makeSurface built into a blend toward a metal of the same albedo:
+// metals tint their reflection with the albedo and absorb what they refract, so their diffuse
+// is zero. Emitted only for scenes with a metallic material.
+void applyMetallic(inout Surface s, vec3 albedo, float metallic) {
+    s.diffuseColor = albedo * (1.0 - metallic);
+    s.f0 = mix(vec3(DIELECTRIC_F0), albedo, metallic);
+}
