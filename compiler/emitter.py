@@ -2,8 +2,9 @@
 
 The ShaderToy target is exactly what pastes into the Image tab: a header naming the snippets,
 the parameter block, then every unit once, each behind a `// source: FILE:LINE` marker that lets
-`glint validate` map an error back to the snippet it came from. Nothing varies between runs:
-the same scene gives the same bytes.
+`glint validate` map an error back to the snippet it came from (a unit that pruning cut into
+pieces carries a marker of its own before each later piece). Nothing varies between runs: the
+same scene gives the same bytes.
 """
 
 from __future__ import annotations
@@ -67,9 +68,14 @@ def emit(
     for unit in units:
         body = unit.body.strip("\n")
         line = unit.line + _leading_blank_lines(unit.body)
-        parts.append(f"// source: {unit.origin}:{line}\n{body}\n")
+        parts.append(f"{source_marker(unit.origin, line)}\n{body}\n")
     text = "\n".join(parts)
     return shadertoy.wrap_for(target, text)
+
+
+def source_marker(origin: str, line: int) -> str:
+    """The comment saying that the next line is line `line` of `origin` (see sourcemap.py)."""
+    return f"// source: {origin}:{line}"
 
 
 def _leading_blank_lines(body: str) -> int:
