@@ -1,4 +1,4 @@
-"""Scene to shader: plan, generate the scene's own code, resolve, emit."""
+"""Scene to shader: plan, generate the scene's own code, resolve, prune, emit."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ from pathlib import Path
 from .catalog import Snippet, load_catalog
 from .emitter import Shader, emit, parameter_block
 from .planner import plan
+from .reachability import prune_unreachable
 from .resolver import resolve
 from .scene import Scene, load_scene
 from .scenegen import generate
@@ -43,6 +44,9 @@ def compose_scene(
     units = resolve([constants, *code.units], catalog, the_plan.choices)
     block = parameter_block(units, catalog, the_plan, code.defines)
     units = [replace(u, body=block) if u.id == constants.id else u for u in units]
+    # Units come whole; drop what mainImage never reaches, parameters included, now that the
+    # block is written.
+    units = prune_unreachable(units)
     text = emit(scene.name, the_plan, units, target, glint_version())
     return Shader(text=text, units=units, plan=the_plan)
 
@@ -55,4 +59,3 @@ def compose(
 ) -> Shader:
     """Compose a scene file (None: the embedded default scene) into one shader."""
     return compose_scene(load_scene(scene_path), target, tier, overrides)
-
