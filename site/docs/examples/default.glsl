@@ -83,13 +83,14 @@ struct Dots {
 // Dielectric reflectance at normal incidence (IOR 1.5).
 #define DIELECTRIC_F0 0.04
 
-Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness, float metallic) {
+// A dielectric; the core.metallic snippet turns it toward a metal where a material is one.
+Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness) {
     Surface s;
     s.P = P;
     s.N = N;
     s.V = V;
-    s.diffuseColor = albedo * (1.0 - metallic);
-    s.f0 = mix(vec3(DIELECTRIC_F0), albedo, metallic);
+    s.diffuseColor = albedo;
+    s.f0 = vec3(DIELECTRIC_F0);
     s.roughness = roughness;
     s.a = roughness * roughness;
     s.NoV = max(dot(N, V), MIN_NOV);
@@ -346,9 +347,9 @@ vec3 shade(Surface s) {
 Surface surfaceAt(vec3 P, vec3 N, vec3 V) {
     int id = materialAt(P);
     if (id == 1) {
-        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), 0.8, 0.0);
+        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), 0.8);
     }
-    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), 0.35, 0.0);
+    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), 0.35);
 }
 
 // source: <generated>:1
