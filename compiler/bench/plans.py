@@ -1,0 +1,86 @@
+"""What each variant is measured on: its probe passes, the ground truth of each, and the unit.
+
+- A function of its arguments (D, F, V, the lobes, attenuation, phase, media, irradiance, ...):
+  a grid over its domain against its own float64 reference.
+- Shadows: every variant against one disc light on the reference scenes, the hard shadow too,
+  so that the cost/error front compares what a viewer sees, not each variant to its own model.
+- AO: cosine-weighted visibility; subsurface: transmittance through reference spheres.
+- Normals: angle to the exact normal on the reference scenes. The derivative-based flat normal
+  cannot be probed point by point: its error is measured on a rendered box (flat faces only, so
+  it is a reference group of its own); its cost on the same passes as the others.
+- No reference (camera, background, tonemap, output, env, specocc, raymarch, ibl): cost only,
+  on inputs from the domain where there is one, else plausible ones (samples.free_inputs).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..catalog import Catalog, Snippet
+from ..probes import entry_function, probe_inputs
+from ..references.normals import SCENES as NORMAL_SCENES
+from .flat_normal import flat_normal_errors, render_flat
+from .normals import normal_set
+from .occlusion import ao_sets, shadow_sets
+from .samples import ProbeSet, camera_rays, domain_set, free_inputs
+from .subsurface import subsurface_sets
+
+# The disc light every shadow variant is measured against: angular radius atan(1/8) ≈ 7.1°,
+# the light that the soft variants' default SHADOW_K = 8 stands for.
+SHADOW_LIGHT = "shadow_disc_light"
+SHADOW_LIGHT_K = 8.0
+FLAT_FACES = "sdf_normal (flat faces)"
+
+RenderedErrors = Callable[[Catalog], tuple[np.ndarray, dict[str, np.ndarray]]]
+
+
+@dataclass
+class Plan:
+    """How one variant is measured. Every set is timed; those with `exact` give errors too."""
+
+    reference: str | None  # the ground truth's name; None: cost only
+    unit: str  # what the error is in ("" without a reference)
+    sets: list[ProbeSet]
+    relative: bool = False  # whether a relative error means something (values away from 0)
+    rendered: RenderedErrors | None = None  # errors from a render rather than the probes
+    out_params: bool = False  # the entry returns through out parameters (cameraRay)
+
+
+def _flat_errors(catalog: Catalog) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    return flat_normal_errors(render_flat(catalog))
+
+
+def _normal_plan(snippet: Snippet) -> Plan:
+    # Variants that tap `map` are probed point by point; the flat one uses screen derivatives,
+    # which a probe (one unrelated point per pixel) cannot give: it is only timed there.
+    taps = "map" in snippet.requires
+    sets = [normal_set(snippet, scene, with_reference=taps) for scene in sorted(NORMAL_SCENES)]
+    if taps:
+        return Plan(snippet.reference, "degrees", sets)
+    return Plan(FLAT_FACES, "degrees", sets, rendered=_flat_errors)
+
+
+def plan_for(snippet: Snippet) -> Plan:
+    """The passes a variant is measured on; see the module's docstring."""
+    slot = snippet.slot
+    if slot == "shadow":
+        return Plan(SHADOW_LIGHT, "visibility", shadow_sets(SHADOW_LIGHT, SHADOW_LIGHT_K))
+    if slot == "ao":
+        return Plan("ao_cosine_visibility", "visibility", ao_sets())
+    if slot == "sss":
+        return Plan(snippet.reference, "transmittance", subsurface_sets())
+    if slot == "normal":
+        return _normal_plan(snippet)
+    if snippet.domain:
+        case = domain_set(snippet)
+        if case.exact is None:
+            return Plan(None, "", [case])
+        return Plan(snippet.reference, "value", [case], relative=True)
+    if slot == "raymarch":
+        return Plan(None, "", [ProbeSet(camera_rays())])
+    out_params = any("out" in p.qualifier.split() for p in entry_function(snippet).params)
+    names = probe_inputs(entry_function(snippet), out_params)[0]
+    return Plan(None, "", [ProbeSet(free_inputs(names))], out_params=out_params)
