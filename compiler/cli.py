@@ -11,7 +11,8 @@ import argparse
 import json
 import os
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from importlib.metadata import entry_points
 from pathlib import Path
 
@@ -93,6 +94,24 @@ def build_parser() -> argparse.ArgumentParser:
     )
     show.add_argument("id", metavar="ID", help="snippet id, e.g. D.ggx (see `glint catalog`)")
     show.set_defaults(handler=cmd_catalog_show)
+    bench = sub.add_parser(
+        "bench",
+        help="measure each variant's error and cost and each tier's FLIP and frame time",
+    )
+    bench.add_argument("--out", default="bench", help="folder for bench.json, bench.md, charts")
+    bench.add_argument(
+        "--update",
+        action="store_true",
+        help="also write the variants' measurements into the catalog (snippets/measurements.json)",
+    )
+    bench.add_argument("--slots", type=_names, help="only these slots' variants, e.g. D,F,shadow")
+    bench.add_argument("--scenes", type=_names, help="only these example scenes (or .toml files)")
+    bench.add_argument("--size", default="480x270", type=_size, help="scene render size WxH")
+    bench.add_argument("--repeats", type=int, default=7, help="timed draws per measurement")
+    bench.add_argument("--no-variants", action="store_true", help="skip the per-variant part")
+    bench.add_argument("--no-scenes", action="store_true", help="skip the scenes and tiers")
+    bench.add_argument("--no-charts", action="store_true", help="write no PNG charts")
+    bench.set_defaults(handler=cmd_bench)
     _add_plugin_commands(sub)
     return parser
 
@@ -116,6 +135,13 @@ def _add_target(parser: argparse.ArgumentParser) -> None:
 def _add_quality(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--tier", choices=("fast", "balanced", "reference"), help="quality tier")
     parser.add_argument(
+        "--budget",
+        type=_budget,
+        metavar="NS",
+        help="cost budget per pixel in ns, as measured by `glint bench --update`: the most "
+        "accurate variants within it replace the tier's",
+    )
+    parser.add_argument(
         "--variant",
         action="append",
         default=[],
@@ -132,6 +158,23 @@ def _size(text: str) -> tuple[int, int]:
     if not (1 <= w <= 8192 and 1 <= h <= 8192):
         raise argparse.ArgumentTypeError(f"width and height must be 1..8192, got {text!r}")
     return w, h
+
+
+def _names(text: str) -> list[str]:
+    names = [n.strip() for n in text.split(",") if n.strip()]
+    if not names:
+        raise argparse.ArgumentTypeError(f"expected comma-separated names, got {text!r}")
+    return names
+
+
+def _budget(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not value > 0 or value == float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a positive number of ns, got {text!r}")
+    return value
 
 
 def _mouse(text: str) -> tuple[float, float, float, float]:
@@ -182,7 +225,7 @@ def cmd_compose(args: argparse.Namespace) -> int:
     from .scene import load_scene
 
     scene = load_scene(args.scene)
-    shader = compose_scene(scene, args.target, args.tier, _overrides(args.variant))
+    shader = compose_scene(scene, args.target, args.tier, _overrides(args.variant), args.budget)
     if args.explain:
         sys.stdout.write(explain(scene, shader.plan))
     if args.output:
@@ -196,6 +239,56 @@ def cmd_compose(args: argparse.Namespace) -> int:
     elif not args.explain:
         sys.stdout.write(shader.text)
     return 0
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from .bench.report import tier_table, write_measurements, write_report
+    from .bench.run import BenchOptions, run_bench
+
+    if args.update and (args.slots or args.no_variants):
+        raise UsageError("--update writes every variant's measurements: drop --slots/--no-variants")
+    if args.repeats < 2:
+        raise UsageError(
+            f"--repeats must be at least 2 (the first draw is not timed), got {args.repeats}"
+        )
+    options = BenchOptions(
+        slots=args.slots,
+        scenes=args.scenes,
+        size=args.size,
+        repeats=args.repeats,
+        variants=not args.no_variants,
+        tiers=not args.no_scenes,
+    )
+    result = run_bench(options, _progress_bar)
+    timing = "CPU time" if result.machine["cpu"] else "GPU time"
+    print(f"measured on {result.machine['renderer']} ({timing})")
+    if result.tiers:
+        print("\n".join(tier_table(result.tiers)))
+    for goal in result.goals:
+        verdict = "reached" if goal.reached else "NOT reached"
+        print(f"goal {goal.name}: {verdict}: {goal.measured} (target: {goal.target})")
+    if result.variants:
+        front = sum(v.pareto for v in result.variants)
+        print(f"{len(result.variants)} variants measured, {front} on their slot's front")
+    written = write_report(result, Path(args.out), charts=not args.no_charts)
+    if args.update:
+        written.append(write_measurements(result))
+    print("wrote " + ", ".join(str(p) for p in written))
+    return 0
+
+
+@contextmanager
+def _progress_bar(label: str, total: int) -> Iterator[Callable[[str], None]]:
+    """A tqdm bar on stderr (off when stderr is not a terminal); yields the per-item tick."""
+    from tqdm import tqdm
+
+    with tqdm(total=total, desc=label, file=sys.stderr, disable=None) as bar:
+
+        def tick(item: str) -> None:
+            bar.set_postfix_str(item)
+            bar.update()
+
+        yield tick
 
 
 def cmd_validate(args: argparse.Namespace) -> int:
@@ -218,7 +311,8 @@ def cmd_render(args: argparse.Namespace) -> int:
     from .render import image_stats, render_full, save_png
 
     if args.input.endswith(".toml"):
-        source = compose(args.input, "shadertoy", args.tier, _overrides(args.variant)).text
+        overrides = _overrides(args.variant)
+        source = compose(args.input, "shadertoy", args.tier, overrides, args.budget).text
     else:
         source = _read_text(args.input)
     width, height = args.size

@@ -33,9 +33,11 @@ def compose_scene(
     target: str = "shadertoy",
     tier: str | None = None,
     overrides: dict[str, str] | None = None,
+    budget: float | None = None,
 ) -> Shader:
+    """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements."""
     catalog = load_catalog()
-    the_plan = plan(scene, catalog, tier, overrides)
+    the_plan = plan(scene, catalog, tier, overrides, budget)
     normal = catalog.get(the_plan.choices["normal"])
     code = generate(scene, normal_in_uniform_flow=uses_derivatives(normal))
     # The constants come first and provide the light names that snippets may require (SUN_DIR);
@@ -56,6 +58,7 @@ def compose(
     target: str = "shadertoy",
     tier: str | None = None,
     overrides: dict[str, str] | None = None,
+    budget: float | None = None,
 ) -> Shader:
     """Compose a scene file (None: the embedded default scene) into one shader."""
-    return compose_scene(load_scene(scene_path), target, tier, overrides)
+    return compose_scene(load_scene(scene_path), target, tier, overrides, budget)

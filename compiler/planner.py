@@ -13,11 +13,14 @@ fails loudly if the generated code reaches a slot the planner did not expect.
 from __future__ import annotations
 
 import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from importlib import resources
 
+from .budget import calls_per_pixel, candidates_for, estimated_cost, within_budget
 from .catalog import Catalog, glsl_value
 from .errors import InputError
+from .measurements import VariantCost, load_measurements
 from .scene import LookAtCamera, OrbitCamera, Scene
 from .scene_slots import SlotUse, slot_uses
 from .slots import SLOTS
@@ -44,7 +47,10 @@ def plan(
     catalog: Catalog,
     tier: str | None = None,
     overrides: dict[str, str] | None = None,
+    budget: float | None = None,
 ) -> Plan:
+    """The plan of `scene` at `tier`; with `budget` (ns per pixel) the quality slots take the
+    most accurate measured variants within it instead of the tier's (see budget.py)."""
     tier = tier or scene.quality.tier
     tiers = tier_table()
     result = Plan(tier=tier)
@@ -66,11 +72,14 @@ def plan(
         choose("background", "gradient_sun", "background.sun with a directional light")
     else:
         choose("background", "gradient", "no sun to draw in the background")
+    fixed = {"camera", "tonemap", "output", "background"}  # what the budget may not change
     rough = _rough_materials(scene)
     if rough:
+        fixed.add("diffuse")
         why = f"material {rough[0]!r} has diffuse_roughness; the {tier} tier's rough diffuse"
         choose("diffuse", tiers["rough_diffuse"][tier], why)
     if not scene.effects.ao:
+        fixed.add("specocc")
         choose("specocc", "none", "effects.ao = false: no occlusion to derive it from")
     for source, table in (
         ("quality.variants", scene.quality.variants),
@@ -79,8 +88,12 @@ def plan(
         for slot, variant in table.items():
             _check_override(catalog, source, slot, variant)
             choose(slot, variant, f"{source} {slot} = {variant!r}")
+            fixed.add(slot)
 
     result.uses = slot_uses(scene, catalog, result.choices)
+    if budget is not None:
+        _spend(result, scene, fixed, budget, choose)
+        result.uses = slot_uses(scene, catalog, result.choices)
     for slot, use in result.uses.items():
         if not use.used:
             result.choices.pop(slot, None)
@@ -89,6 +102,31 @@ def plan(
     if result.choices.get("irradiance") == "irradiance.sh9" and _has_environment_light(scene):
         result.params |= _sh9_params(result.choices["env"], result.params)
     return result
+
+
+def _spend(
+    result: Plan,
+    scene: Scene,
+    fixed: set[str],
+    budget_ns: float,
+    choose: Callable[[str, str, str], None],
+) -> None:
+    """Replace the tier's variants of the slots in use by the most accurate within the budget."""
+    measurements = load_measurements()
+    calls = calls_per_pixel(scene, result.uses)
+    candidates: dict[str, list[VariantCost]] = {}
+    for slot in calls:
+        options = (
+            None if slot in fixed else candidates_for(slot, result.choices[slot], measurements)
+        )
+        if options:
+            candidates[slot] = options
+    rest = {
+        slot: v for slot, v in result.choices.items() if slot in calls and slot not in candidates
+    }
+    fixed_ns = estimated_cost(rest, calls, measurements)
+    for slot, pick in within_budget(candidates, calls, fixed_ns, budget_ns).items():
+        choose(slot, pick.variant.id.split(".", 1)[1], pick.why)
 
 
 def _rough_materials(scene: Scene) -> list[str]:

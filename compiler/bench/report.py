@@ -1,0 +1,233 @@
+"""What `glint bench` writes: the results as JSON, a Markdown report and PNG charts; and the
+measurements file the planner reads (`--update`)."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..measurements import measurements_path
+from ..outputs import write_atomic
+from .scenes import Goal, TierMeasure
+from .variants import VariantMeasure
+
+
+@dataclass
+class BenchResult:
+    machine: dict[str, Any]  # renderer, whether timings are CPU time, platform, glint version
+    variants: list[VariantMeasure] = field(default_factory=list)
+    tiers: list[TierMeasure] = field(default_factory=list)
+    goals: list[Goal] = field(default_factory=list)
+
+
+def to_json(result: BenchResult) -> str:
+    return json.dumps(asdict(result), indent=2, sort_keys=True) + "\n"
+
+
+def static_part(result: BenchResult) -> dict[str, Any]:
+    """What does not depend on timing: errors and SPIR-V counts of the variants, FLIP and
+    SPIR-V counts of the tiers. Two runs on one machine give the same."""
+    variants = {
+        v.id: {k: getattr(v, k) for k in ("reference", "max_abs", "rms", "max_rel", "spirv")}
+        for v in result.variants
+    }
+    tiers = {f"{t.scene}/{t.tier}": {"flip": t.flip, "spirv": t.spirv} for t in result.tiers}
+    return {"variants": variants, "tiers": tiers}
+
+
+def measurements_json(result: BenchResult) -> str:
+    """The generated file the planner's --budget reads: per variant its cost and error, per
+    scene and tier the frame time and FLIP, and the machine it was measured on."""
+    data = {
+        "generated_by": "glint bench --update; do not edit by hand",
+        "machine": result.machine,
+        "variants": {
+            v.id: {
+                "slot": v.slot,
+                "reference": v.reference,
+                "rms": v.rms,
+                "max_abs": v.max_abs,
+                "spirv": v.spirv,
+                "gpu_ns": round(v.gpu_ns, 3),
+                "pareto": v.pareto,
+            }
+            for v in result.variants
+        },
+        "tiers": {
+            f"{t.scene}/{t.tier}": {
+                "frame_ms": round(t.frame_ms, 3),
+                "flip": t.flip,
+                "time_vs_reference": round(t.time_vs_reference, 3),
+            }
+            for t in result.tiers
+        },
+    }
+    return json.dumps(data, indent=1, sort_keys=True) + "\n"
+
+
+def write_measurements(result: BenchResult) -> Path:
+    path = measurements_path()
+    write_atomic(path, measurements_json(result).encode("utf-8"))
+    return path
+
+
+def _num(value: float | None, digits: int = 3) -> str:
+    if value is None:
+        return "–"
+    if value == 0 or (1e-3 <= abs(value) < 1e5):
+        return f"{value:.{digits}g}"
+    return f"{value:.2e}"
+
+
+def _where(worst: dict[str, float] | None) -> str:
+    if not worst:
+        return "–"
+    return ", ".join(f"{k}={v:.3g}" for k, v in worst.items())
+
+
+def to_markdown(result: BenchResult) -> str:
+    machine = result.machine
+    timing = "CPU time (software renderer)" if machine.get("cpu") else "GPU time"
+    lines = [
+        "# glint bench",
+        "",
+        f"Measured on {machine.get('renderer', '?')}: {timing}; {machine.get('platform', '')}.",
+        "",
+    ]
+    if result.goals:
+        lines += ["## Goals (default scene, against the seed template)", ""]
+        lines += ["| goal | target | measured | reached |", "|---|---|---|---|"]
+        lines += [
+            f"| {g.name} | {g.target} | {g.measured} | {'yes' if g.reached else '**no**'} |"
+            for g in result.goals
+        ]
+        lines.append("")
+    if result.tiers:
+        lines += tier_table(result.tiers) + [""]
+    if result.variants:
+        lines += ["## Variants", ""]
+        lines += [
+            "Error against each variant's float64 reference over its domain; cost as SPIR-V "
+            "instructions after `spirv-opt -O` and as measured time per evaluation of a probe "
+            "pass (empty pass subtracted). ★: on the cost/error front of its slot among the "
+            "variants with the same reference.",
+            "",
+        ]
+        slot = None
+        for v in result.variants:
+            if v.slot != slot:
+                slot = v.slot
+                lines += [
+                    "",
+                    f"### {slot}",
+                    "",
+                    "| variant | reference | max abs | rms | max rel | worst at | SPIR-V | ns "
+                    "| front |",
+                    "|---|---|---|---|---|---|---|---|---|",
+                ]
+            lines.append(
+                f"| {v.id} | {v.reference or '–'} | {_num(v.max_abs)} | {_num(v.rms)} "
+                f"| {_num(v.max_rel)} | {_where(v.worst_at)} | {v.spirv} | {_num(v.gpu_ns)} "
+                f"| {'★' if v.pareto else ''} |"
+            )
+    return "\n".join(lines) + "\n"
+
+
+def tier_table(tiers: list[TierMeasure]) -> list[str]:
+    """The trade table: per scene and tier, frame time and mean FLIP, with ratios."""
+    lines = [
+        "| scene | tier | frame ms | × reference | × template | FLIP vs reference "
+        "| FLIP vs truth | SPIR-V |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for t in tiers:
+        lines.append(
+            f"| {t.scene} | {t.tier} | {t.frame_ms:.2f} | {t.time_vs_reference:.2f} "
+            f"| {_num(t.time_vs_template, 2)} | {t.flip:.4f} | {_num(t.flip_vs_truth, 3)} "
+            f"| {t.spirv} |"
+        )
+    return lines
+
+
+def write_charts(result: BenchResult, folder: Path) -> list[Path]:
+    """variants.png: per slot, error against measured cost, the front joined; tiers.png: per
+    scene, frame time against FLIP for each tier (and the template)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    written = []
+    timing = "CPU ns" if result.machine.get("cpu") else "GPU ns"
+    slots = sorted({v.slot for v in result.variants if v.rms is not None})
+    if slots:
+        columns = 4
+        rows = math.ceil(len(slots) / columns)
+        fig, axes = plt.subplots(rows, columns, figsize=(4 * columns, 3.2 * rows), squeeze=False)
+        for ax, slot in zip(axes.flat, slots, strict=False):
+            measured = [v for v in result.variants if v.slot == slot and v.rms is not None]
+            for v in measured:
+                ax.scatter(v.gpu_ns, v.rms, color="C3" if v.pareto else "C0", zorder=3)
+                ax.annotate(v.id.split(".", 1)[1], (v.gpu_ns, v.rms), fontsize=7)
+            front = sorted((v.gpu_ns, v.rms) for v in measured if v.pareto)
+            if len(front) > 1:
+                ax.plot(*zip(*front, strict=True), color="C3", lw=1)
+            ax.set_title(slot)
+            ax.set_xlabel(f"{timing} per evaluation")
+            ax.set_ylabel("RMS error")
+            if min(v.rms for v in measured) > 0:  # type: ignore[type-var]
+                ax.set_yscale("log")
+        for ax in list(axes.flat)[len(slots) :]:
+            ax.axis("off")
+        fig.tight_layout()
+        path = folder / "variants.png"
+        fig.savefig(path, dpi=80)
+        plt.close(fig)
+        written.append(path)
+    if result.tiers:
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        scenes = sorted({t.scene for t in result.tiers})
+        markers = {"fast": "v", "balanced": "o", "reference": "s", "template": "*"}
+        for index, scene in enumerate(scenes):
+            rows_of = [t for t in result.tiers if t.scene == scene]
+            for t in rows_of:
+                ax.scatter(
+                    t.frame_ms,
+                    t.flip,
+                    marker=markers.get(t.tier, "x"),
+                    color=f"C{index}",
+                    s=90 if t.tier == "template" else 40,
+                )
+            ax.plot(
+                [t.frame_ms for t in rows_of if t.tier != "template"],
+                [t.flip for t in rows_of if t.tier != "template"],
+                color=f"C{index}",
+                lw=1,
+                label=scene,
+            )
+        for tier, marker in markers.items():
+            ax.scatter([], [], marker=marker, color="gray", label=tier)
+        ax.set_xlabel(f"frame time, ms ({'CPU, llvmpipe' if result.machine.get('cpu') else 'GPU'})")
+        ax.set_ylabel("mean FLIP against the reference tier")
+        ax.set_title("Speed for accuracy, per scene and tier")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        path = folder / "tiers.png"
+        fig.savefig(path, dpi=90)
+        plt.close(fig)
+        written.append(path)
+    return written
+
+
+def write_report(result: BenchResult, folder: Path, charts: bool = True) -> list[Path]:
+    """bench.json, bench.md and the charts in `folder`; the paths written."""
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = [folder / "bench.json", folder / "bench.md"]
+    write_atomic(paths[0], to_json(result).encode("utf-8"))
+    write_atomic(paths[1], to_markdown(result).encode("utf-8"))
+    if charts:
+        paths += write_charts(result, folder)
+    return paths
