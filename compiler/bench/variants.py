@@ -105,11 +105,16 @@ def measure_variant(
     baseline = empty(probe_channels(names))
     errors, where, exact, ns = [], [], [], []
     renderer = ""
+    # Scene variants run one pass per reference scene: their cost is the mean over the scenes.
     for case in plan.sets:
         run = run_probe_timed(
-            snippet.id, case.inputs, catalog, case.scene_stub, repeats=repeats,
+            snippet.id,
+            case.inputs,
+            catalog,
+            case.scene_stub,
+            repeats=repeats,
             out_params=plan.out_params,
-        )  # fmt: skip
+        )
         renderer = run.renderer
         ns.append((run.median_draw() - baseline) / run.pixels * 1e9)
         if case.exact is not None:
