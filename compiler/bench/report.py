@@ -172,9 +172,13 @@ def write_charts(result: BenchResult, folder: Path) -> list[Path]:
             for v in measured:
                 ax.scatter(v.gpu_ns, v.rms, color="C3" if v.pareto else "C0", zorder=3)
                 ax.annotate(v.id.split(".", 1)[1], (v.gpu_ns, v.rms), fontsize=7)
-            front = sorted((v.gpu_ns, v.rms) for v in measured if v.pareto)
-            if len(front) > 1:
-                ax.plot(*zip(*front, strict=True), color="C3", lw=1)
+            # A front per reference: variants of different models are not on one line.
+            for reference in sorted({v.reference or "" for v in measured}):
+                front = sorted(
+                    (v.gpu_ns, v.rms) for v in measured if v.pareto and v.reference == reference
+                )
+                if len(front) > 1:
+                    ax.plot(*zip(*front, strict=True), color="C3", lw=1)
             ax.set_title(slot)
             ax.set_xlabel(f"{timing} per evaluation")
             ax.set_ylabel("RMS error")
