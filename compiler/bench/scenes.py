@@ -5,8 +5,11 @@ Frame time: each shader is drawn in one context per round (one round per iTime v
 passes over them), the tiers of a scene in alternating order so that load on the machine falls
 on all of them alike. A context's figure is the median of its draws, the first dropped (it may
 include lazy compilation); a view's is the least over the passes (other processes only ever add
-time); the frame time is the mean over the views. On llvmpipe a draw is CPU time, shared with
-whatever else runs, and the renderer label says so.
+time); the frame time is the mean over the views. The time ratios are paired instead: the
+median over the rounds of the ratio within each round, so that a change of machine speed
+between rounds (a shared 2-core VM halves or doubles its speed for seconds at a time) cancels;
+they are close to, not exactly, the quotient of the frame times. On llvmpipe a draw is CPU
+time, shared with whatever else runs, and the renderer label says so.
 
 Accuracy against the template: the template's FLIP against the reference tier says how far
 apart the two are, not which one is right. So the default scene also gets a ground truth,
@@ -72,9 +75,9 @@ class TierMeasure:
     tier: str  # "fast" | "balanced" | "reference" | "template" (default scene only)
     frame_ms: float  # median draw time (ms) at the bench size, first draw dropped; see above
     flip: float  # mean FLIP against the same scene's reference-tier render (0.0 for it)
-    time_vs_reference: float  # frame_ms / the reference tier's frame_ms, same scene, same run
+    time_vs_reference: float  # time / the reference tier's, same scene, paired by round
     spirv: int  # SPIR-V instructions of the whole shader after spirv-opt -O
-    time_vs_template: float | None = None  # default scene only: frame_ms / template frame_ms
+    time_vs_template: float | None = None  # default scene only: time / the template's, paired
     flip_vs_truth: float | None = None  # default scene only: mean FLIP against the ground truth
 
 
@@ -248,14 +251,19 @@ def _spirv(source: str, what: str) -> int:
 class _Shader:
     label: str  # tier name, or "template"
     source: str
-    # Per iTime, the median draw time (s) of each context that drew it, first draw dropped.
-    medians: dict[int, list[float]] = field(default_factory=dict)
+    # Per round, the median draw time (s) of its context, first draw dropped.
+    medians: list[float] = field(default_factory=list)
     images: list[np.ndarray] = field(default_factory=list)  # one per iTime, from the first pass
 
-    def frame_ms(self) -> float:
+    def frame_ms(self, views: int) -> float:
         """Mean over the views of the quietest context's median: load from other processes only
         adds time, so the least of the passes is the closest to the shader's own cost."""
-        return float(np.mean([min(m) for m in self.medians.values()])) * 1e3
+        return float(np.mean([min(self.medians[v::views]) for v in range(views)])) * 1e3
+
+    def time_vs(self, other: _Shader) -> float:
+        """Median over the rounds of the time ratio within each: the two were drawn a second
+        apart, so a change of machine speed between rounds cancels."""
+        return statistics.median(a / b for a, b in zip(self.medians, other.medians, strict=True))
 
 
 def _render_rounds(
@@ -272,7 +280,7 @@ def _render_rounds(
         view = number % len(times)
         for shader in shaders if number % 2 == 0 else shaders[::-1]:
             result = render_full(shader.source, *size, time=times[view], repeats=repeats)
-            shader.medians.setdefault(view, []).append(statistics.median(result.draw_times[1:]))
+            shader.medians.append(statistics.median(result.draw_times[1:]))
             if number < len(times):
                 shader.images.append(result.image)
             renderer = result.renderer
@@ -311,22 +319,20 @@ def _measure_scene(
 
     by_label = {shader.label: shader for shader in shaders}
     reference = by_label[REFERENCE_TIER]
-    reference_ms = reference.frame_ms()
-    template_ms = by_label[TEMPLATE_ROW].frame_ms() if template else None
+    baseline = by_label[TEMPLATE_ROW] if template else None
     rows = []
     for label in [*tiers, *([TEMPLATE_ROW] if template else [])]:
         shader = by_label[label]
-        frame_ms = shader.frame_ms()
         is_reference = shader is reference
         rows.append(
             TierMeasure(
                 scene=scene.name,
                 tier=label,
-                frame_ms=frame_ms,
+                frame_ms=shader.frame_ms(len(times)),
                 flip=0.0 if is_reference else _mean_flip(reference.images, shader.images),
-                time_vs_reference=1.0 if is_reference else frame_ms / reference_ms,
+                time_vs_reference=1.0 if is_reference else shader.time_vs(reference),
                 spirv=_spirv(shader.source, f"{scene.name}/{label}"),
-                time_vs_template=frame_ms / template_ms if template_ms else None,
+                time_vs_template=shader.time_vs(baseline) if baseline else None,
                 flip_vs_truth=_mean_flip(truth, shader.images) if truth else None,
             )
         )
