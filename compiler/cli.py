@@ -260,8 +260,9 @@ def cmd_bench(args: argparse.Namespace) -> int:
         tiers=not args.no_scenes,
     )
     result = run_bench(options, _progress_bar)
+    renderer = str(result.machine["renderer"])
     timing = "CPU time" if result.machine["cpu"] else "GPU time"
-    print(f"measured on {result.machine['renderer']} ({timing})")
+    print(f"measured on {renderer}" + ("" if timing in renderer else f" ({timing})"))
     if result.tiers:
         print("\n".join(tier_table(result.tiers)))
     for goal in result.goals:
