@@ -3,6 +3,9 @@ variant fills it and why; then the material paths the scene turns on."""
 
 from __future__ import annotations
 
+from .budget import calls_per_pixel, estimated_cost
+from .errors import InputError
+from .measurements import load_measurements
 from .planner import Plan
 from .scene import Scene
 
@@ -19,7 +22,22 @@ def explain(scene: Scene, plan: Plan) -> str:
             lines.append(f"  out  {name}  {use.why}")
     lines += ["", "material paths:"]
     lines += [f"  {path}" for path in material_paths(scene)]
+    cost = estimate(scene, plan)
+    if cost:
+        lines += ["", cost]
     return "\n".join(lines) + "\n"
+
+
+def estimate(scene: Scene, plan: Plan) -> str | None:
+    """The measured cost per lit pixel of the variants chosen, if there are measurements."""
+    try:
+        measurements = load_measurements()
+    except InputError:
+        return None
+    calls = calls_per_pixel(scene, plan.uses)
+    total = estimated_cost(plan.choices, calls, measurements)
+    renderer = measurements.machine.get("renderer", "?")
+    return f"estimated cost: {total:.3g} ns per lit pixel (glint bench --update on {renderer})"
 
 
 def material_paths(scene: Scene) -> list[str]:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from glint.compiler import explain as explain_module
 from glint.compiler import planner as planner_module
 from glint.compiler.budget import calls_per_pixel, front, within_budget
 from glint.compiler.catalog import load_catalog
@@ -86,7 +87,8 @@ def measured(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
             "ao.sdf5": ("ao", 0.01, 2.0),
         },
     )
-    monkeypatch.setattr(planner_module, "load_measurements", lambda: load_measurements(path))
+    for module in (planner_module, explain_module):
+        monkeypatch.setattr(module, "load_measurements", lambda: load_measurements(path))
     return path
 
 
@@ -124,7 +126,10 @@ def test_missing_or_broken_measurements_are_named(tmp_path: Path) -> None:
 
 def test_budget_on_the_command_line(capsys: pytest.CaptureFixture[str], measured: Path) -> None:
     assert main(["compose", "--budget", "2.5", "--explain"]) == 0
-    assert "in   shadow       shadow.hard: --budget 2.5 ns/pixel" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "in   shadow       shadow.hard: --budget 2.5 ns/pixel" in out
+    # hard (1 ns) + sdf3 (1 ns): the measured slots in use; the rest are not in the file.
+    assert "estimated cost: 2 ns per lit pixel (glint bench --update on test)" in out
     assert main(["compose", "--budget", "0.5"]) == 1
     assert "below the cheapest combination" in capsys.readouterr().err
     with pytest.raises(SystemExit):
