@@ -17,15 +17,15 @@
 //   light.directional           Directional light: the surface's response times radiance and visibility
 //   specocc.power               Specular occlusion from AO: clamp((NoV + ao)^a − 1 + ao)
 //   env.gradient                Environment as a vertical gradient from ENV_BOTTOM (down) to ENV_TOP (up)
-//   ibl.simple_reflection       Environment seen along the mirror direction, weighted by Fresnel(NoV) and specular occlusion
+//   ibl.env_brdf_approx         Environment along the mirror direction times Karis's analytic split-sum fit f0·A + B, with specular occlusion
 //   camera.orbit                Pinhole camera orbiting CAMERA_TARGET with iTime, looking at it
 //   background.gradient_sun     The environment gradient plus a glow and a disc around the sun
 //   tonemap.reinhard            Reinhard tone map, c / (c + 1) per channel
 //   output.gamma22              Display encoding with a pure 2.2 gamma
 //   ao.sdf5                     SDF ambient occlusion, 5 taps along the normal
-//   shadow.soft                 Soft shadow by sphere tracing toward the light, penumbra k·h/t (24 steps)
+//   shadow.soft_centered        Soft shadow with the penumbra centred on the hard shadow's edge: signed k·h/t, marched through occluders
 //   normal.central_differences  SDF normal by central differences, 6 taps
-//   raymarch.sphere_tracing     Sphere tracing: distance along the ray to the first hit, or -1
+//   raymarch.cone               Sphere tracing that stops once the scene is within a pixel's cone, then refines the hit by one secant step
 
 // source: <generated>:1
 // Scene constants (light directions point toward the light).
@@ -43,11 +43,14 @@
 #define CAMERA_TARGET vec3(0.0, 0.0, 0.0)
 #define CAMERA_FOCAL 1.5
 #define AO_STRENGTH 3.0
-#define SHADOW_STEPS 24
+#define SHADOW_STEPS 32
 #define SHADOW_K 8.0
+#define SHADOW_MIN_STEP 0.05
+#define SHADOW_MAX_STEP 2.0
 #define NORMAL_EPS 0.001
-#define MARCH_STEPS 128
+#define MARCH_STEPS 64
 #define MARCH_EPSILON 0.001
+#define MARCH_PIXEL 0.002
 #define MARCH_FAR 50.0
 
 // source: snippets/core/constants.glsl:9
@@ -216,13 +219,35 @@ vec3 environment(vec3 dir) {
     return mix(ENV_BOTTOM, ENV_TOP, clamp(dir.y * 0.5 + 0.5, 0.0, 1.0));
 }
 
-// source: snippets/ibl/simple_reflection.glsl:9
-// No prefiltering: rough surfaces dim the reflection instead of blurring it.
+// source: snippets/ibl/env_brdf_approx.glsl:14
+// The split sum (Karis 2013) factors specular environment light into the environment seen
+// around the mirror direction times the BRDF's directional albedo, f0·A + B. Here A and B
+// come from Karis's analytic fit instead of a lookup table, and the environment is sampled
+// once along R without prefiltering (fine for a smooth sky, too sharp for a rough mirror of
+// a detailed one).
+//
+// Error of (A, B) against the float64 split sum with GGX, height-correlated Smith and Schlick
+// (compiler/references/environment.dfg_split_sum), roughness and NoV in [0, 1]: see
+// tests/test_environment_light.py. The fit was made for a table with a different masking
+// term, so it is close at normal incidence and far off at grazing angles on rough surfaces,
+// where height-correlated Smith keeps much more energy: f0·A + B off by up to 0.55 (metals,
+// NoV → 0, roughness 1), 0.08 for f0 = 0.04. The GPU gives the same (A, B) as the float32
+// evaluator to 2e-7, NoV just outside [0, 1] included. A dips to −0.044 for a grazing mirror
+// (f0·A + B up to 1.042 there) and B to −0.0024 at roughness 1: f0·A + B stays ≥ 0 for
+// f0 ≥ 0.04, not quite for f0 = 0.
+
+// (A, B) such that the directional albedo is f0·A + B. Perceptual roughness, as Karis fits it.
+vec2 envBRDFApprox(float NoV, float roughness) {
+    vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+    float grazing = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+    return vec2(-1.04, 1.04) * grazing + r.zw;
+}
+
 vec3 environmentLight(Surface s, float ao) {
     vec3 R = reflect(-s.V, s.N);
-    vec3 F = fresnel(s.f0, s.NoV);
+    vec2 AB = envBRDFApprox(s.NoV, s.roughness);
     float occlusion = specularOcclusion(s.NoV, ao, s.a);
-    return F * environment(R) * occlusion * (1.0 - s.roughness * 0.7);
+    return (s.f0 * AB.x + AB.y) * environment(R) * occlusion;
 }
 
 // source: snippets/camera/orbit.glsl:10
@@ -279,23 +304,30 @@ float ambientOcclusion(vec3 p, vec3 n) {
     return clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
 }
 
-// source: snippets/shadow/soft.glsl:14
-// A miss by h at distance t along the ray leaves a gap of about h/t radians between the ray
-// and the occluder; the light counts as fully visible once every gap is at least 1/SHADOW_K,
-// i.e. for a light of angular radius about atan(1/SHADOW_K). The penumbra lies outside the
-// hard shadow: a ray that grazes an occluder gives 0. Larger SHADOW_K gives harder edges.
+// source: snippets/shadow/soft_centered.glsl:16
+// shadow.soft draws the whole penumbra outside the hard shadow: a ray that grazes an occluder
+// gives 0 where a disc light is half hidden. Here the gap h/t is signed. The march goes on into
+// an occluder, where the distance field is negative, so x = k·h/t, the ray's angular distance
+// to the occluder's edge in units of the light's radius atan(1/k), runs from +1 (the disc
+// clears the edge) through 0 (the disc's centre on the edge) to −1 (the disc hidden). The
+// visible fraction of a disc cut by a straight edge at x, 1/2 + (x·√(1 − x²) + asin x)/π, is
+// fitted by the cubic 0.25·(1 + x)²·(2 − x) (within 0.04; equal at x = −1, 0 and 1).
+//
+// Steps are |h|, the radius of a ball free of surfaces around the sample, inside an occluder
+// as outside, and at least SHADOW_MIN_STEP so the march crosses an edge it runs along; the
+// march ends once the light is hidden (x ≤ −1) or past tmax. At most SHADOW_MAX_STEP, a
+// bound on how far past an occluder's closest approach a step may land.
 float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
     float res = 1.0;
     float t = max(tmin, 1e-3);  // h/t has no value at t = 0
     for (int i = 0; i < SHADOW_STEPS; i++) {
         float h = map(ro + rd * t);
         res = min(res, SHADOW_K * h / t);
-        // At least 0.02 so the march moves on beside a surface, at most 0.2 so the closest
-        // approach to an occluder is not stepped over.
-        t += clamp(h, 0.02, 0.2);
-        if (res < 0.001 || t > tmax) break;
+        t += clamp(abs(h), SHADOW_MIN_STEP, SHADOW_MAX_STEP);
+        if (res <= -1.0 || t > tmax) break;
     }
-    return clamp(res, 0.0, 1.0);
+    res = max(res, -1.0);
+    return 0.25 * (1.0 + res) * (1.0 + res) * (2.0 - res);
 }
 
 // source: snippets/normal/central_differences.glsl:12
@@ -308,16 +340,42 @@ vec3 calcNormal(vec3 p) {
     ));
 }
 
-// source: snippets/raymarch/sphere_tracing.glsl:10
+// source: snippets/raymarch/cone.glsl:10
+// A pixel sees a cone about 2 / (iResolution.y · focal) radians wide. Once the scene is nearer
+// the ray than MARCH_PIXEL · t (or MARCH_EPSILON, near the eye) the march stops: more steps
+// would not change which surface the pixel shows. A grazing ray along a plane shrinks its
+// distance only by a factor 1 − sin θ per step, so the fixed tolerance of
+// raymarch.sphere_tracing spends most of its steps there (or all of them, and misses).
+// MARCH_PIXEL = 0.002 is about half a pixel at 640 × 360 with a focal length of 1.5. Half the
+// steps of raymarch.sphere_tracing: on the default scene at 480 × 270, 64 steps miss 38 pixels
+// that 128 steps of sphere tracing hit (0.03%) and hit 1014 that it misses (0.8%: far ground
+// near the horizon, where sphere tracing runs out of steps).
+//
+// Stopping early leaves the hit short of the surface, along a grazing ray by d / sin θ, about
+// a pixel's footprint: texture edges would move. Along a straight stretch the distance falls
+// linearly with t, so the last two samples (d_prev one plain step of d_prev behind, d here)
+// say where it reaches 0: d · d_prev / (d_prev − d) further on, exact for a plane. One more
+// map() checks the secant point and it is kept only where it lies nearer the surface.
 float raymarch(vec3 ro, vec3 rd) {
     float t = 0.0;
+    float d = MARCH_FAR;
+    float dPrev = 0.0;  // distance at the previous sample, which lies dPrev behind t
+    bool hit = false;
     for (int i = 0; i < MARCH_STEPS; i++) {
-        float d = map(ro + rd * t);
-        if (d < MARCH_EPSILON) return t;
+        d = map(ro + rd * t);
+        if (d < max(MARCH_EPSILON, MARCH_PIXEL * t)) {
+            hit = true;
+            break;
+        }
+        dPrev = d;
         t += d;
         if (t > MARCH_FAR) break;
     }
-    return -1.0;
+    if (!hit) return -1.0;
+    // Refined outside the loop: a branch taken by some pixels of a SIMD group costs all of them.
+    float ahead = d < dPrev ? d * dPrev / (dPrev - d) : 0.0;
+    float dAhead = map(ro + rd * (t + ahead));
+    return abs(dAhead) < abs(d) ? t + ahead : t;
 }
 
 // source: <generated>:1
