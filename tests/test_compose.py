@@ -51,7 +51,7 @@ def test_webgl2_and_desktop_are_complete_shaders() -> None:
 
 
 def test_variant_override_swaps_the_snippet() -> None:
-    soft = compose().text
+    soft = compose(overrides={"shadow": "soft"}).text
     hard = compose(overrides={"shadow": "hard"}).text
     assert "snippets/shadow/soft.glsl" in soft and "snippets/shadow/hard.glsl" not in soft
     assert "snippets/shadow/hard.glsl" in hard and "snippets/shadow/soft.glsl" not in hard

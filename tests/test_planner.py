@@ -123,11 +123,13 @@ def test_attenuation_only_with_a_point_light() -> None:
 
 
 def test_no_brdf_without_a_directional_or_point_light() -> None:
-    slots = planned_slots(build([{"type": "sky"}]))
-    assert not {"D", "F", "V", "diffuse", "specular"} & (slots - {"F"})
-    # F stays for the environment reflection, which is weighted by Fresnel.
-    assert "F" in slots and "ibl" in slots
-    assert "F" not in planned_slots(build([{"type": "sky"}], environment={"reflection": False}))
+    sky = build([{"type": "sky"}])
+    assert not {"D", "F", "V", "diffuse", "specular"} & planned_slots(sky)
+    # F comes back with a reflection variant that is weighted by Fresnel.
+    slots = planned_slots(sky, ibl="simple_reflection")
+    assert "F" in slots and "ibl" in slots and "D" not in slots
+    unreflected = build([{"type": "sky"}], environment={"reflection": False})
+    assert "F" not in planned_slots(unreflected, ibl="simple_reflection")
 
 
 def test_metallic_path_only_with_a_metallic_material() -> None:
@@ -192,7 +194,7 @@ def test_explain_names_every_slot_with_its_reason() -> None:
         if not spec.many:
             assert f"  {slot} " in text
     assert "out  ao           effects.ao = false" in text
-    assert "in   shadow       shadow.soft: balanced tier" in text
+    assert "in   shadow       shadow.soft_centered: balanced tier" in text
     assert "in because lights[0] (directional) casts shadows" in text
     assert "in   metallic (core.metallic): 'a' (metallic > 0)" in text
 
