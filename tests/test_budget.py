@@ -82,6 +82,7 @@ def measured(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
             "shadow.hard": ("disc", 0.30, 1.0),
             "shadow.soft_12": ("disc", 0.20, 2.0),
             "shadow.soft": ("disc", 0.10, 4.0),
+            "shadow.soft_centered": ("disc", 0.07, 6.0),
             "shadow.soft_64": ("disc", 0.05, 10.0),
             "ao.sdf3": ("ao", 0.02, 1.0),
             "ao.sdf5": ("ao", 0.01, 2.0),
