@@ -3,6 +3,7 @@ side by side on one machine, with a progress bar per part."""
 
 from __future__ import annotations
 
+import os
 import platform
 from collections.abc import Callable, Sequence
 from contextlib import AbstractContextManager
@@ -76,8 +77,6 @@ def machine_info(renderer: str) -> dict[str, object]:
 
 
 def _cores() -> int:
-    import os
-
     return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
 
 
