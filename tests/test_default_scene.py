@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from glint.compiler.bench.scenes import template_source
+from glint.compiler.bench.scenes import TEMPLATE_MODELS, template_source
 from glint.compiler.compose import compose
 from glint.compiler.render import flip_error, image_stats, render
 
@@ -22,24 +22,6 @@ FLIP_TOLERANCE = 0.001
 PIXEL_STEP = 2.0 / 255.0
 MAX_DIFFERING_FRACTION = 0.001
 SIZE = (320, 180)
-
-
-# The template's models, named explicitly: the tiers are tuned from measurements (the balanced
-# tier need not stay the template's), while this test checks the same scene with the same models.
-TEMPLATE_MODELS = {
-    "D": "ggx",
-    "F": "schlick",
-    "V": "smith_ggx_correlated",
-    "diffuse": "lambert",
-    "specular": "cook_torrance",
-    "specocc": "power",
-    "env": "gradient",
-    "raymarch": "sphere_tracing",  # 128 steps, epsilon 0.001
-    "shadow": "soft",  # 24 steps, k = 8
-    "ao": "sdf5",
-    "normal": "central_differences",
-    "ibl": "simple_reflection",  # Schlick at N·V, times 1 − 0.7·roughness
-}
 
 
 @pytest.fixture(scope="module")

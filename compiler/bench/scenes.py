@@ -57,6 +57,22 @@ TIERS = ("fast", "balanced", "reference")
 REFERENCE_TIER = "reference"
 TEMPLATE_ROW = "template"
 TEMPLATE_SCENE = "default"  # the example scene that the template renders
+# The template's models as variant overrides: the tiers are tuned from measurements and need not
+# stay the template's; composed with these, the default scene is the template's picture.
+TEMPLATE_MODELS = {
+    "D": "ggx",
+    "F": "schlick",
+    "V": "smith_ggx_correlated",
+    "diffuse": "lambert",
+    "specular": "cook_torrance",
+    "specocc": "power",
+    "env": "gradient",
+    "raymarch": "sphere_tracing",  # 128 steps, epsilon 0.001
+    "shadow": "soft",  # 24 steps, k = 8
+    "ao": "sdf5",
+    "normal": "central_differences",
+    "ibl": "simple_reflection",  # Schlick at N·V, times 1 − 0.7·roughness
+}
 DEFAULT_SIZE = (480, 270)
 # The camera of the default scene orbits at 0.3 rad/s: three views 0.75 rad apart.
 DEFAULT_TIMES = (0.0, 2.5, 5.0)
