@@ -42,7 +42,7 @@ def estimate(scene: Scene, plan: Plan) -> str | None:
 
 def material_paths(scene: Scene) -> list[str]:
     """The optional parts of a Surface, in or out with the materials that ask for them."""
-    used = sorted({obj.material for obj in scene.objects})
+    used = scene.used_materials()
     metals = [m for m in used if scene.materials[m].metallic > 0.0]
     rough = [m for m in used if scene.materials[m].diffuse_roughness is not None]
     translucent = [m for m in used if scene.materials[m].subsurface is not None]

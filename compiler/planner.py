@@ -131,8 +131,9 @@ def _spend(
 
 def _rough_materials(scene: Scene) -> list[str]:
     """Materials in use whose diffuse is rougher than Lambert's."""
-    used = sorted({obj.material for obj in scene.objects})
-    return [m for m in used if (scene.materials[m].diffuse_roughness or 0.0) > 0.0]
+    return [
+        m for m in scene.used_materials() if (scene.materials[m].diffuse_roughness or 0.0) > 0.0
+    ]
 
 
 def _has_environment_light(scene: Scene) -> bool:

@@ -215,6 +215,10 @@ class Scene(Strict):
     post: Post = Post()
     quality: Quality = Quality()
 
+    def used_materials(self) -> list[str]:
+        """Names of the materials objects use, in order of first use; unused ones emit nothing."""
+        return list(dict.fromkeys(obj.material for obj in self.objects))
+
     @model_validator(mode="after")
     def _references(self) -> Scene:
         for i, obj in enumerate(self.objects):

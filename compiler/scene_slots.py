@@ -52,8 +52,7 @@ _OUT = {
 
 
 def translucent_materials(scene: Scene) -> list[str]:
-    used = {obj.material for obj in scene.objects}
-    return sorted(m for m in used if scene.materials[m].subsurface is not None)
+    return [m for m in scene.used_materials() if scene.materials[m].subsurface is not None]
 
 
 def _roots(scene: Scene) -> list[tuple[str, str]]:

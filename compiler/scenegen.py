@@ -43,7 +43,7 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     """The scene's own code. `normal_in_uniform_flow` computes the normal outside the hit
     branch, for normal variants built on screen-space derivatives."""
     lights = _lights(scene)
-    materials = _used_materials(scene)
+    materials = scene.used_materials()
     units = [_map_unit(scene)]
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials))
@@ -145,15 +145,6 @@ def _lights(scene: Scene) -> LightCode:
             calls.append(f"irradianceLight(s, {ident}_SCALE, occlusion)")
             requires.append("irradianceLight")
     return LightCode(defines, calls, requires, directional)
-
-
-def _used_materials(scene: Scene) -> list[str]:
-    """Material names in order of first use; unused materials emit nothing."""
-    seen: list[str] = []
-    for obj in scene.objects:
-        if obj.material not in seen:
-            seen.append(obj.material)
-    return seen
 
 
 def _distance(obj: Sphere | Plane | Box) -> tuple[str, str]:

@@ -13,7 +13,14 @@ from ..catalog import load_catalog
 from ..errors import UsageError
 from ..slots import SLOTS
 from .report import BenchResult
-from .scenes import DEFAULT_SIZE, example_scenes, measure_scenes, template_goals
+from .scenes import (
+    DEFAULT_SIZE,
+    TEMPLATE_SCENE,
+    TIERS,
+    example_scenes,
+    measure_scenes,
+    template_goals,
+)
 from .variants import is_cpu_renderer, measurable_ids, measure_variants
 
 # A progress bar: given a label and a total, a context manager whose value is called once per
@@ -53,8 +60,8 @@ def run_bench(options: BenchOptions, progress: ProgressFactory | None = None) ->
             )
     if options.tiers:
         scenes = list(options.scenes) if options.scenes is not None else example_scenes()
-        # One row per tier per scene, and the template's on the default scene.
-        total = 3 * len(scenes) + ("default" in scenes)
+        # One row per tier per scene, and the template's on the template's scene.
+        total = len(TIERS) * len(scenes) + (TEMPLATE_SCENE in scenes)
         with _bar(progress, "scenes × tiers", total) as tick:
             result.tiers, renderer = measure_scenes(
                 scenes, size=options.size, repeats=options.repeats, progress=tick

@@ -52,6 +52,8 @@ from glint.compiler.images import flip_error
 from glint.compiler.render import render_full
 from glint.compiler.scene import load_scene
 
+from .variants import is_cpu_renderer
+
 TEMPLATE = "template.glsl"
 TIERS = ("fast", "balanced", "reference")
 REFERENCE_TIER = "reference"
@@ -82,7 +84,6 @@ TRUTH_STRATA = 32
 # Ten times the ground truth's own discretisation error above, and five times the FLIP that the
 # default scene's test takes for "the same picture" (0.001).
 MEASURABLE_FLIP = 0.005
-_SOFTWARE_RENDERERS = ("llvmpipe", "softpipe", "swrast", "lavapipe")
 
 
 @dataclass
@@ -248,7 +249,7 @@ def _scene_path(name: str) -> Path:
 
 def renderer_label(renderer: str) -> str:
     """The renderer, and what its frame times are."""
-    if any(name in renderer.lower() for name in _SOFTWARE_RENDERERS):
+    if is_cpu_renderer(renderer):
         return f"{renderer}; frame times are CPU time (software rasteriser)"
     return f"{renderer}; frame times are GPU wall time"
 
