@@ -16,7 +16,7 @@ from .finding import Finding
 from .fixes import apply_fixes
 from .options import Options
 from .rules import all_rules
-from .rules.housekeeping import UNUSED_SUPPRESSION, unused_suppressions
+from .rules.style.s001_unused_suppression import UNUSED_SUPPRESSION, unused_suppressions
 from .suppressions import apply_suppressions, parse_suppressions
 
 # Files larger than this are reported (C006) rather than analysed: glslang still sees them, but

@@ -1,5 +1,7 @@
 """The rule registry. A rule is a class with a stable `code`, registered by `@register`; one
-module per category. Importing this package imports every rule module.
+package per category and one module per rule, named after its code and name
+(`numerical/n001_pow_negative_base.py`), with the category's shared helpers in a module whose
+name starts with `_`. `all_rules()` imports every rule module.
 
 Codes never change meaning. Categories and their prefixes:
 
@@ -74,8 +76,8 @@ def register(cls: type[Rule]) -> type[Rule]:
 
 def all_rules() -> dict[str, type[Rule]]:
     """Every registered rule by code, sorted; imports the rule modules on first use."""
-    for module in pkgutil.iter_modules(__path__):
-        importlib.import_module(f"{__name__}.{module.name}")
+    for module in pkgutil.walk_packages(__path__, prefix=f"{__name__}."):
+        importlib.import_module(module.name)
     return dict(sorted(REGISTRY.items()))
 
 

@@ -11,7 +11,8 @@ import pytest
 
 from glint.lint.options import Options
 from glint.lint.rules import all_rules, rule_doc
-from glint.lint.rules.flow import ColourNotWritten, UsedBeforeInitialised
+from glint.lint.rules.correctness.c101_colour_not_written import ColourNotWritten
+from glint.lint.rules.correctness.c103_used_before_initialised import UsedBeforeInitialised
 from glint.lint.runner import build_context, lint_source
 
 FAST = Options(select=["P", "C1"], glslang=False)

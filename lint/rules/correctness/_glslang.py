@@ -1,5 +1,5 @@
-"""Correctness: glslangValidator's errors and warnings, the file compiled as its target wraps
-it (ShaderToy's prelude and `main`), at the user's line and column, with a hint for the
+"""Shared by C001 and C002: glslangValidator's diagnostics of the file compiled as its target
+wraps it (ShaderToy's prelude and `main`), at the user's line and column, with a hint for the
 mistakes people make most."""
 
 from __future__ import annotations
@@ -7,9 +7,9 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
-from ..context import LintContext
-from ..finding import Finding
-from . import Rule, register
+from ...context import LintContext
+from ...finding import Finding
+from .. import Rule
 
 # (what glslang says, what to do). Matched against "'token': message".
 HINTS: list[tuple[re.Pattern[str], str]] = [
@@ -35,7 +35,7 @@ def hint_for(message: str) -> str:
     return ""
 
 
-class _Glslang(Rule):
+class GlslangRule(Rule):
     needs_tree = False
     wanted = ""
 
@@ -49,48 +49,3 @@ class _Glslang(Rule):
             message = f"glslang: {d.message}" + (f" (hint: {hint})" if hint else "")
             line = min(max(d.line, 1), len(ctx.lines))
             yield self.report(ctx, (line, d.column, line, d.column + 1), message)
-
-
-@register
-class GlslangError(_Glslang):
-    """Finds what the Khronos reference compiler, glslangValidator, rejects, compiled exactly
-    as the target wraps the file (ShaderToy: its uniforms before, a `main` after).
-
-    Why it matters: a shader that glslang rejects will not compile in the browser either; the
-    message is placed at the line and column of your file, not of the wrapped source. Where a
-    glint rule reports an error on the same line (an int where a float belongs, a reserved
-    word), glint's finding, with its fix, replaces glslang's.
-
-    Example:
-        vec4 c = texture2D(iChannel0, uv);
-
-    Fix:
-        vec4 c = texture(iChannel0, uv);
-    """
-
-    code = "C001"
-    name = "glslang-error"
-    category = "correctness"
-    severity = "error"
-    wanted = "error"
-
-
-@register
-class GlslangWarning(_Glslang):
-    """Finds what glslangValidator warns about in the wrapped file.
-
-    Why it matters: glslang's warnings mark code that some drivers treat differently or not at
-    all (deprecated features, extension behaviour).
-
-    Example:
-        #extension GL_OES_standard_derivatives : enable
-
-    Fix:
-        remove the directive: derivatives are core in GLSL ES 3.00.
-    """
-
-    code = "C002"
-    name = "glslang-warning"
-    category = "correctness"
-    severity = "warning"
-    wanted = "warning"

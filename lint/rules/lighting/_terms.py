@@ -23,8 +23,8 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
-from ..analysis.model import call_args, callee_name, is_tree, semantic_model
-from ..context import LintContext, Node, walk
+from ...analysis.model import call_args, callee_name, is_tree, semantic_model
+from ...context import LintContext, Node, walk
 
 # --- tree shapes -----------------------------------------------------------------------------
 

@@ -1,14 +1,13 @@
-"""Style: the linter's own housekeeping. S001 depends on what every other rule found, so the
-runner calls `unused_suppressions` after them; the class registers the code and its docs."""
+"""S001 unused-suppression."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ..context import LintContext
-from ..finding import Finding
-from ..suppressions import Suppression
-from . import Rule, all_rules, register
+from ...context import LintContext
+from ...finding import Finding
+from ...suppressions import Suppression
+from .. import Rule, all_rules, register
 
 UNUSED_SUPPRESSION = "S001"
 

@@ -1,0 +1,30 @@
+"""C001 glslang-error."""
+
+from __future__ import annotations
+
+from .. import register
+from ._glslang import GlslangRule
+
+
+@register
+class GlslangError(GlslangRule):
+    """Finds what the Khronos reference compiler, glslangValidator, rejects, compiled exactly
+    as the target wraps the file (ShaderToy: its uniforms before, a `main` after).
+
+    Why it matters: a shader that glslang rejects will not compile in the browser either; the
+    message is placed at the line and column of your file, not of the wrapped source. Where a
+    glint rule reports an error on the same line (an int where a float belongs, a reserved
+    word), glint's finding, with its fix, replaces glslang's.
+
+    Example:
+        vec4 c = texture2D(iChannel0, uv);
+
+    Fix:
+        vec4 c = texture(iChannel0, uv);
+    """
+
+    code = "C001"
+    name = "glslang-error"
+    category = "correctness"
+    severity = "error"
+    wanted = "error"

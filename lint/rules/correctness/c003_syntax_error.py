@@ -1,0 +1,53 @@
+"""C003 syntax-error."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from glint.compiler.glsl import GLSLSyntaxError
+from glint.compiler.glsl.keywords import RESERVED_WORDS
+
+from ...context import LintContext
+from ...finding import Finding
+from .. import Rule, register
+
+
+@register
+class SyntaxError_(Rule):
+    """Finds GLSL that glint's parser cannot read (GLSL ES 3.00 grammar).
+
+    Why it matters: nothing else can be checked in a file that does not parse, and the driver
+    will reject it too. glslang's message for the same line (C001) is reported instead when
+    glslang runs and finds an error there, and a reserved word is left to P007.
+
+    Example:
+        float x = 1.0
+        vec3 y;
+
+    Fix:
+        float x = 1.0;
+        vec3 y;
+    """
+
+    code = "C003"
+    name = "syntax-error"
+    category = "correctness"
+    severity = "error"
+    needs_tree = False
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        error = ctx.front_end_error
+        if not isinstance(error, GLSLSyntaxError) or ctx.read_problem:
+            return
+        if _reserved_word(error.what):
+            return  # P007 reports every reserved word, parsed or not: one finding per token
+        line = min(max(error.line, 1), len(ctx.lines))  # the parser's line is the physical one
+        if ctx.use_glslang and any(d.severity == "error" and d.line == line for d in ctx.glslang()):
+            return
+        yield self.report(ctx, (line, error.column, line, error.column + 1), error.what)
+
+
+def _reserved_word(what: str) -> bool:
+    """Whether the parser stopped at a word of RESERVED_WORDS (its message for them)."""
+    words = what.split("'")
+    return what.endswith("is a reserved word") and len(words) > 1 and words[1] in RESERVED_WORDS

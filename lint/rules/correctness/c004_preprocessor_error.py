@@ -1,0 +1,43 @@
+"""C004 preprocessor-error."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from glint.compiler.glsl import PreprocessorError
+
+from ...context import LintContext
+from ...finding import Finding
+from .. import Rule, register
+
+
+@register
+class PreprocessorProblem(Rule):
+    """Finds preprocessor errors: unknown or malformed directives, unterminated `#if`,
+    `#error`, bad macro calls.
+
+    Why it matters: the shader is not what it looks like until the preprocessor has run, and
+    a driver stops at the first such error.
+
+    Example:
+        #ifdef HIGH_QUALITY
+        const int STEPS = 128;
+
+    Fix:
+        #ifdef HIGH_QUALITY
+        const int STEPS = 128;
+        #endif
+    """
+
+    code = "C004"
+    name = "preprocessor-error"
+    category = "correctness"
+    severity = "error"
+    needs_tree = False
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        error = ctx.front_end_error
+        if isinstance(error, PreprocessorError) and not ctx.read_problem:
+            line = min(max(error.physical_line, 1), len(ctx.lines))  # not moved by #line
+            span = (line, error.column, line, error.column + 1)
+            yield self.report(ctx, span, error.what)

@@ -1,0 +1,35 @@
+"""C005 unreadable-file."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ...context import LintContext
+from ...finding import Finding
+from .. import Rule, register
+
+
+@register
+class Unreadable(Rule):
+    """Finds files that are not GLSL text: binary data, bytes that are not UTF-8, or a file
+    too large to analyse (over 1 MB).
+
+    Why it matters: a shader is text; anything else is a wrong path or a corrupted file, and
+    should be said plainly rather than reported as a thousand syntax errors.
+
+    Example:
+        a PNG saved as shader.frag
+
+    Fix:
+        lint the shader's source, saved as UTF-8 text.
+    """
+
+    code = "C005"
+    name = "unreadable-file"
+    category = "correctness"
+    severity = "error"
+    needs_tree = False
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        if ctx.read_problem:
+            yield self.report(ctx, (1, 1, 1, 1), f"cannot lint this file: {ctx.read_problem}")

@@ -1,0 +1,88 @@
+"""C101 colour-not-written."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...analysis.flow import function_flows, mask_names
+from ...analysis.model import call_args, root_variable
+from ...context import LintContext, walk
+from ...finding import Finding
+from .. import Rule, register
+from ._data_flow import main_colour
+
+
+def _assigns(definition: Tree, name: str) -> bool:
+    """Whether any statement assigns to `name` (or a component of it), on any path."""
+    for node in walk(definition):
+        if node.data in ("assignment", "postfix"):
+            target = node.children[0]
+        elif node.data == "prefix":
+            target = node.children[1]
+        elif node.data == "call":  # an out/inout argument may write it
+            if any(root_variable(arg) == name for arg in call_args(node)):
+                return True
+            continue
+        else:
+            continue
+        if root_variable(target) == name:
+            return True
+    return False
+
+
+def _writes_gl_fragcolor(definition: Tree) -> bool:
+    return any(n.data == "variable" and n.children[0] in ("gl_FragColor", "gl_FragData")
+               for n in walk(definition))  # fmt: skip
+
+
+@register
+class ColourNotWritten(Rule):
+    """Finds a mainImage that can finish without writing its `out` colour: a path through an
+    `if`, a loop that may not run, or an early `return` leaves it (or some of its components)
+    unwritten. `discard` counts as written.
+
+    Why it matters: an `out` parameter starts undefined, so on that path the pixel is whatever
+    the driver leaves there: black on one GPU, garbage or the previous frame on another.
+
+    Example:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            if (fragCoord.x < 10.0) return;
+            fragColor = vec4(1.0);
+        }
+
+    Fix:
+        write the colour before the early return, or give it a default first:
+        `fragColor = vec4(0.0, 0.0, 0.0, 1.0);`
+    """
+
+    code = "C101"
+    name = "colour-not-written"
+    category = "correctness"
+    severity = "warning"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        for flow in function_flows(ctx):
+            colour = main_colour(flow)
+            if colour is None or _writes_gl_fragcolor(flow.definition):
+                continue  # P002 reports the colour written to the wrong place
+            ever = _assigns(flow.definition, colour.name)
+            for exit_ in flow.exits:
+                missing = colour.full & ~exit_.state.get(id(colour), 0)
+                if not missing:
+                    continue
+                what = f"`{colour.name}{mask_names(colour, missing)}`"
+                if missing == colour.full and not ever:
+                    message = f"mainImage never writes {what}; the pixel is undefined"
+                    yield self.report(ctx, colour.token, message)
+                    break
+                if exit_.node is not None:
+                    message = f"mainImage returns here before writing {what}"
+                    yield self.report(ctx, exit_.node, message)
+                else:
+                    message = (
+                        f"{what} is not written on every path through mainImage; "
+                        "give it a value first (out parameters start undefined)"
+                    )
+                    yield self.report(ctx, colour.token, message)

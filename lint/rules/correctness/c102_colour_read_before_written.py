@@ -1,0 +1,46 @@
+"""C102 colour-read-before-written."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ...analysis.flow import function_flows, mask_names
+from ...context import LintContext
+from ...finding import Finding
+from .. import Rule, register
+from ._data_flow import main_colour
+
+
+@register
+class ColourReadBeforeWritten(Rule):
+    """Finds mainImage's `out` colour read before it is written, such as
+    `fragColor.rgb *= 0.5;` or `fragColor += ...` as the first use.
+
+    Why it matters: an `out` parameter starts undefined, not as ShaderToy's black; reading
+    it gives whatever the driver leaves there, so the result differs between GPUs.
+
+    Example:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            fragColor.rgb += vec3(0.5);
+            fragColor.a = 1.0;
+        }
+
+    Fix:
+        assign it first: `fragColor = vec4(0.0); fragColor.rgb += vec3(0.5);`
+    """
+
+    code = "C102"
+    name = "colour-read-before-written"
+    category = "correctness"
+    severity = "warning"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        for flow in function_flows(ctx):
+            colour = main_colour(flow)
+            for read in flow.reads:
+                if read.var is colour:
+                    what = f"`{read.var.name}{mask_names(read.var, read.missing)}`"
+                    message = (
+                        f"{what} is read before mainImage writes it; out parameters start undefined"
+                    )
+                    yield self.report(ctx, read.node, message)

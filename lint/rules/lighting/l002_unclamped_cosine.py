@@ -1,0 +1,162 @@
+"""L002 unclamped-cosine."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...context import LintContext, Node, walk
+from ...finding import Finding, Fix
+from .. import Rule, register
+from ._common import COSINE_TEXT, short_text
+from ._terms import (
+    Function,
+    binary_op,
+    call_name,
+    const_value,
+    cosine_of,
+    functions,
+    may_be_negative,
+    names_in,
+    operands,
+    parents,
+    resolve,
+    root_var,
+    var_name,
+)
+
+_DIFFUSE_FUNCTION = re.compile(r"diffuse|lambert|brdf|shade|light|illum|^fd|^dif", re.I)
+
+
+_CLAMPS = {"max", "clamp", "saturate", "abs", "smoothstep", "step", "sqrt", "pow"}
+
+
+_COLOUR_TYPES = ("vec3", "vec4")
+
+
+@register
+class UnclampedCosine(Rule):
+    """Finds N·L or N·V that can be negative multiplied into a colour (or returned as a
+    diffuse term) without max, clamp or saturate.
+
+    Why it matters: on the side facing away from the light the cosine is negative, and the
+    product subtracts light: other lights and ambient terms go dark or negative, and a later
+    pow or sqrt of the sum is undefined.
+
+    The range comes from the semantic model (a value whose interval may be negative) when it
+    is available; candidates are dot(N, L) / dot(N, V) calls and locals holding one, in a
+    product with a colour (a vec3/vec4 factor or target) or returned bare by a function named
+    like diffuse, Lambert, BRDF, shade or light. A cosine that the function compares
+    (`if (ndl > 0.0)`) is taken as guarded, and a product with a scalar constant only
+    (half-Lambert's `dot(N, L) * 0.5 + 0.5`) is not a lighting term.
+
+    Example:
+        vec3 col = albedo * dot(N, L);
+
+    Fix:
+        vec3 col = albedo * max(dot(N, L), 0.0);
+    """
+
+    code = "L002"
+    name = "unclamped-cosine"
+    category = "lighting"
+    fixable = "unsafe"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
+        for fn in functions(ctx):
+            compared = self._compared(fn)
+            for node in walk(fn.body):
+                if node.data == "jump_statement" and len(node.children) == 2:
+                    candidates = [node.children[1]]
+                    # a bare cosine returned by a diffuse-named function is its diffuse term;
+                    # elsewhere (`facing(n, v)`) a signed cosine may be the point
+                    colour = bool(_DIFFUSE_FUNCTION.search(fn.name))
+                elif binary_op(node) == "*" and binary_op(up.get(id(node))) != "*":
+                    candidates = operands(node, "*")
+                    # a scalar constant scales the cosine (half-Lambert); a colour does not
+                    others = [c for c in candidates if const_value(c) is None
+                              or (isinstance(c, Tree) and c.data == "constructor")]  # fmt: skip
+                    colour = len(others) >= 2 and self._colour(node, candidates, fn, up)
+                else:
+                    continue
+                if not colour:
+                    continue
+                for operand in candidates:
+                    if (
+                        self._raw(operand, fn, compared)
+                        and not self._clamped(node, up, fn)
+                        and may_be_negative(ctx, operand)
+                    ):
+                        yield self._finding(ctx, operand, fn)
+
+    def _raw(self, node: Node, fn: Function, compared: set[str]) -> bool:
+        value = resolve(node, fn)
+        if call_name(value) != "dot" or cosine_of(value, fn) not in ("NL", "NV"):
+            return False
+        return not (names_in(node) & compared)
+
+    def _compared(self, fn: Function) -> set[str]:
+        found: set[str] = set()
+        for node in walk(fn.body):
+            if binary_op(node) in ("<", ">", "<=", ">="):
+                found |= names_in(node)
+        return found
+
+    def _clamped(self, node: Tree, up: dict[int, Tree], fn: Function) -> bool:
+        current: Node = node
+        while (parent := up.get(id(current))) is not None and parent is not fn.body:
+            if call_name(parent) in _CLAMPS or binary_op(parent) in ("<", ">", "<=", ">="):
+                return True
+            if parent.data in ("declaration_statement", "expression_statement"):
+                break
+            current = parent
+        return False
+
+    def _colour(self, node: Tree, factors: list[Node], fn: Function, up: dict[int, Tree]) -> bool:
+        """Whether the product is a colour: a vec3/vec4 factor, or it goes into one."""
+        for factor in factors:
+            name = var_name(factor)
+            typ = fn.type_of(name) if name else None
+            if typ in _COLOUR_TYPES:
+                return True
+            if (
+                isinstance(factor, Tree)
+                and factor.data == "constructor"
+                and ctx_type(factor) in _COLOUR_TYPES
+            ):
+                return True
+        parent = up.get(id(node))
+        while parent is not None and parent.data in ("binary", "unary"):
+            parent = up.get(id(parent))
+        if parent is None:
+            return False
+        if parent.data == "declarator":
+            return fn.locals.get(str(parent.children[0])) in _COLOUR_TYPES
+        if parent.data == "assignment":
+            target = root_var(parent.children[0])
+            return bool(target) and fn.type_of(target) in _COLOUR_TYPES  # type: ignore[arg-type]
+        return False
+
+    def _finding(self, ctx: LintContext, operand: Node, fn: Function) -> Finding:
+        kind = COSINE_TEXT[cosine_of(resolve(operand, fn), fn) or "NL"]
+        fix = None
+        if call_name(operand) == "dot":
+            edit = ctx.replace(operand, f"max({ctx.node_text(operand)}, 0.0)")
+            if edit is not None:
+                fix = Fix("clamp the cosine at 0", (edit,), "unsafe")
+        return self.report(
+            ctx,
+            operand,
+            f"{kind} (`{short_text(ctx, operand)}`) is negative facing away and is used unclamped "
+            "in a lighting term; take max(..., 0.0)",
+            fix,
+        )
+
+
+def ctx_type(node: Tree) -> str:
+    spec = node.children[0]
+    return " ".join(str(t) for t in spec.children) if isinstance(spec, Tree) else ""

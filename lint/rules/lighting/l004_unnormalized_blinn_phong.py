@@ -1,0 +1,103 @@
+"""L004 unnormalized-blinn-phong."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from ...context import LintContext, Node, walk
+from ...finding import Finding
+from .. import Rule, register
+from ._common import short_text
+from ._terms import (
+    Function,
+    binary_op,
+    call_args,
+    call_name,
+    calls_in,
+    const_value,
+    cosine_of,
+    functions,
+    is_fresnel_name,
+    names_in,
+    operands,
+    schlick_base,
+)
+
+_PBR_NAME = re.compile(r"ggx|smith|cook|torrance|beckmann|trowbridge", re.I)
+
+
+_NORM_NAME = re.compile(r"norm(?!al)", re.I)
+
+
+def _has_pbr(ctx: LintContext) -> bool:
+    for fn in functions(ctx):
+        if _PBR_NAME.search(fn.name) or is_fresnel_name(fn.name):
+            return True
+        for node in calls_in(fn.body):
+            if schlick_base(node) is not None or is_fresnel_name(call_name(node)):
+                return True
+    return False
+
+
+@register
+class UnnormalizedBlinnPhong(Rule):
+    """Finds an unnormalized Blinn-Phong lobe, pow(N·H, n) without its (n + 8)/(8π) or
+    (n + 2)/(2π) factor, in a shader that also has physically based terms (Fresnel, GGX,
+    Smith, Cook-Torrance).
+
+    Why it matters: the peak of pow(N·H, n) is 1 whatever n is, so the energy it reflects
+    falls as the lobe narrows: next to energy-conserving GGX or Fresnel-weighted terms,
+    glossy surfaces come out too dark and rough ones too bright. On its own, tuned by eye,
+    Blinn-Phong is fine and is not reported.
+
+    The lobe is pow(x, n) with x a known N·H (names and dot(N, H)) and n not 5 (that is a
+    Fresnel shape); it counts as normalized when `n + 8`, `n + 2` (or + 1, 4, 6) appears
+    anywhere in the shader, or a name like normFactor multiplies it in the same function.
+
+    Example:
+        float spec = pow(NoH, shininess);
+        vec3 col = F * spec;
+
+    Fix:
+        float spec = (shininess + 8.0) / (8.0 * PI) * pow(NoH, shininess);
+        vec3 col = F * spec;
+    """
+
+    code = "L004"
+    name = "unnormalized-blinn-phong"
+    category = "lighting"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        lobes = []
+        for fn in functions(ctx):
+            for node in calls_in(fn.body):
+                if call_name(node) != "pow" or len(call_args(node)) != 2:
+                    continue
+                base, exponent = call_args(node)
+                if const_value(exponent) == 5.0 or cosine_of(base, fn) != "NH":
+                    continue
+                if not self._normalized(ctx, fn, exponent):
+                    lobes.append((node, exponent))
+        if not lobes or not _has_pbr(ctx):
+            return
+        for node, exponent in lobes:
+            n = short_text(ctx, exponent, 20)
+            yield self.report(
+                ctx,
+                node,
+                f"Blinn-Phong lobe without its normalization next to physically based terms: "
+                f"multiply by ({n} + 8.0) / (8.0 * PI)",
+            )
+
+    def _normalized(self, ctx: LintContext, fn: Function, exponent: Node) -> bool:
+        wanted = " ".join(ctx.node_text(exponent).split())
+        assert ctx.tree is not None
+        for node in walk(ctx.tree):
+            if binary_op(node) == "+":
+                parts = operands(node, "+")
+                texts = {" ".join(ctx.node_text(p).split()) for p in parts}
+                if wanted in texts and any(const_value(p) in (1.0, 2.0, 4.0, 6.0, 8.0)
+                                           for p in parts):  # fmt: skip
+                    return True
+        return any(_NORM_NAME.search(n) for n in names_in(fn.body))

@@ -1,0 +1,84 @@
+"""L006 double-gamma."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ...context import LintContext, Node, walk
+from ...finding import Finding
+from .. import Rule, register
+from ._common import ColourOutput, main_image, short_text
+from ._terms import (
+    calls_in,
+    functions,
+    names_in,
+    root_var,
+)
+
+
+@register
+class DoubleGamma(Rule):
+    """Finds a display encoding (gamma or sRGB) applied to colour that is already encoded.
+
+    Why it matters: encoding twice is gamma 4.84 instead of 2.2: the image looks washed out
+    and flat, with lifted blacks. It typically happens when a helper encodes and mainImage
+    encodes again.
+
+    Traced in source order through mainImage: a variable assigned an encoded value stays
+    encoded while it is reassigned from itself; encoding it again (directly, or through a
+    function whose result is an encoded value) is reported, as is an encoding nested in
+    another anywhere. Branches are not told apart.
+
+    Example:
+        col = pow(col, vec3(0.4545));
+        fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
+
+    Fix:
+        fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
+    """
+
+    code = "L006"
+    name = "double-gamma"
+    category = "lighting"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        output = ColourOutput(ctx)
+        reported: set[int] = set()
+        for fn in functions(ctx):
+            for node in calls_in(fn.body):
+                inner = output.gamma_of(node, fn)
+                if inner is not None and any(
+                    output.gamma_of(n, fn) is not None for n in calls_in(inner)
+                ) and id(node) not in reported:  # fmt: skip
+                    reported.add(id(node))
+                    yield self._finding(ctx, node)
+        found = main_image(ctx)
+        if found is None:
+            return
+        fn, _ = found
+        encoded: set[str] = set()
+        for node in walk(fn.body):
+            if node.data == "declarator" and len(node.children) > 1:
+                target, value = str(node.children[0]), node.children[-1]
+            elif node.data == "assignment" and str(node.children[1]) == "=":
+                target, value = root_var(node.children[0]) or "", node.children[2]
+            else:
+                continue
+            for call in calls_in(value):
+                inner = output.gamma_of(call, fn)
+                if inner is not None and names_in(inner) & encoded and id(call) not in reported:
+                    reported.add(id(call))
+                    yield self._finding(ctx, call)
+            top = output._peel(value)
+            if output.gamma_of(top, fn) is not None or names_in(value) & encoded:
+                encoded.add(target)
+            else:
+                encoded.discard(target)
+
+    def _finding(self, ctx: LintContext, node: Node) -> Finding:
+        return self.report(
+            ctx,
+            node,
+            f"`{short_text(ctx, node)}` encodes for the display a colour that is already encoded "
+            "(gamma applied twice)",
+        )

@@ -1,0 +1,210 @@
+"""L007 hdr-without-tonemap."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...analysis.model import semantic_model
+from ...context import LintContext, Node, walk
+from ...finding import Finding
+from .. import Rule, register
+from ._common import (
+    ColourOutput,
+    is_lobe,
+    is_vector,
+    main_image,
+    output_writes,
+    product_factors,
+    short_text,
+)
+from ._terms import (
+    Function,
+    binary_op,
+    call_args,
+    call_name,
+    calls_in,
+    const_value,
+    cosine_of,
+    functions,
+    global_constants,
+    mentions_normal,
+    operands,
+    parents,
+    resolve,
+    root_var,
+)
+
+
+def _light_terms(fn: Function, up: dict[int, Tree]) -> list[Node]:
+    """Whole products (chains of * and /) that carry a lighting cosine or a specular lobe."""
+    terms = []
+    for node in walk(fn.body):
+        if binary_op(node) not in ("*", "/") or binary_op(up.get(id(node))) in ("*", "/"):
+            continue
+        top, _ = product_factors(node)
+        if any(cosine_of(f, fn) in ("NL", "NH", "NV") or is_lobe(f, fn) for f in top):
+            terms.append(node)
+    return terms
+
+
+def _bound(node: Node, fn: Function, names: dict[str, float], depth: int = 6) -> float | None:
+    """A rough upper bound of a light term from its constants: cosines, lobes and values the
+    code does not say are taken as at most 1, so only explicit intensities raise it; None
+    when a divisor is not a constant."""
+    if depth <= 0 or not isinstance(node, Tree):
+        return 1.0
+    value = const_value(node, names)
+    if value is not None:
+        return abs(value)
+    if node.data == "constructor":
+        values = [const_value(a) for a in call_args(node)]
+        known = [abs(v) for v in values if v is not None]
+        return max(known) if known and len(known) == len(values) else 1.0
+    if node.data == "variable":
+        resolved = resolve(node, fn, 1)
+        return 1.0 if resolved is node else _bound(resolved, fn, names, depth - 1)
+    op = binary_op(node)
+    if op in ("*", "/"):
+        top, bottom = product_factors(node)
+        result = 1.0
+        for factor in top:
+            b = _bound(factor, fn, names, depth - 1)
+            if b is None:
+                return None
+            result *= b
+        for factor in bottom:
+            divisor = const_value(factor, names)
+            if divisor is None:
+                divisor = _bound(factor, fn, names, depth - 1) if binary_op(factor) == "+" else None
+            if not divisor:
+                return None
+            result /= divisor
+        return result
+    if op == "+":
+        parts = [_bound(p, fn, names, depth - 1) for p in operands(node, "+")]
+        return None if any(p is None for p in parts) else sum(parts)  # type: ignore[arg-type]
+    if op == "-":
+        return _bound(node.children[0], fn, names, depth - 1)
+    if call_name(node) == "clamp" and len(call_args(node)) == 3:
+        hi = const_value(call_args(node)[2])
+        return abs(hi) if hi is not None else 1.0
+    return 1.0
+
+
+@register
+class HdrWithoutTonemap(Rule):
+    """Finds lighting that can exceed 1 written to the output without a tone map.
+
+    Why it matters: the display clips each channel at 1, so bright highlights and sums of
+    lights lose their hue (a saturated orange light clips to yellow, then white) and detail
+    flattens. A tone map (x / (1 + x), an ACES fit, 1 − exp(−x)) rolls highlights off.
+
+    Evidence that values exceed 1, in a lit shader: a light term (a product with N·L, N·H or
+    N·V, or a pow lobe) whose bound is above 1, or two or more light terms summed in one
+    function whose bounds add up to more than 1. The bound is the semantic model's when it is
+    finite; otherwise the product of the term's constants (an intensity such as `2.0 *
+    sunColor`, `vec3(1.3, 1.0, 0.7)`, divided by the constant divisors such as π), with
+    cosines, lobes and values the code does not spell out taken as at most 1.
+    Decision on clamp: clamp(col, 0.0, 1.0) or min(col, 1.0) is not a tone map, but it shows
+    that the author chose to clip, so it is not reported either; this rule is for code that
+    never considered the range.
+
+    Example:
+        col = 2.0 * albedo * max(dot(n, l), 0.0) + spec;
+        fragColor = vec4(pow(col, vec3(0.4545)), 1.0);
+
+    Fix:
+        col = 2.0 * albedo * max(dot(n, l), 0.0) + spec;
+        col = col / (1.0 + col);
+        fragColor = vec4(pow(col, vec3(0.4545)), 1.0);
+    """
+
+    code = "L007"
+    name = "hdr-without-tonemap"
+    category = "lighting"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        found = main_image(ctx)
+        if found is None or not mentions_normal(ctx):
+            return
+        output = ColourOutput(ctx)
+        if output.any_tonemap():
+            return
+        fn, out = found
+        writes = output_writes(fn, out)
+        if not writes or self._clipped(ctx):
+            return
+        evidence = self._evidence(ctx)
+        if evidence:
+            yield self.report(
+                ctx,
+                writes[-1],
+                f"lighting can exceed 1 ({evidence}) and is written to `{out}` without a tone "
+                "map; the display clips it (try col / (1.0 + col) before the gamma)",
+            )
+
+    def _clipped(self, ctx: LintContext) -> bool:
+        found = main_image(ctx)
+        assert found is not None
+        fn, _ = found
+        for node in calls_in(fn.body):
+            name = call_name(node)
+            args = call_args(node)
+            if name in ("clamp", "saturate") and args and is_vector(ctx, args[0]):
+                return True
+            if name == "min" and any(const_value(a) == 1.0 for a in args):
+                return True
+        return False
+
+    def _evidence(self, ctx: LintContext) -> str:
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
+        for fn in functions(ctx):
+            terms = _light_terms(fn, up)
+            for term in terms:
+                hi = self._hi(ctx, term, fn)
+                if hi is not None and hi > 1.0:
+                    return f"`{short_text(ctx, term, 40)}` reaches about {hi:.3g}"
+            sums = self._summed(ctx, fn, terms)
+            if sums:
+                return sums
+        return ""
+
+    def _hi(self, ctx: LintContext, node: Node, fn: Function) -> float | None:
+        """The model's finite upper bound, else the bound from the code's constants."""
+        hi = _bounded_hi(ctx, node)
+        return hi if hi is not None else _bound(node, fn, global_constants(ctx))
+
+    def _summed(self, ctx: LintContext, fn: Function, terms: list[Node]) -> str:
+        ids = {id(t) for t in terms}
+
+        def carries(node: Node) -> bool:
+            return any(id(n) in ids for n in walk(node)) if isinstance(node, Tree) else False
+
+        def may_exceed(parts: list[Node]) -> bool:
+            his = [self._hi(ctx, p, fn) for p in parts]
+            return sum(1.0 if h is None else h for h in his) > 1.0
+
+        per_target: dict[str, list[Node]] = {}
+        for node in walk(fn.body):
+            if binary_op(node) == "+":
+                parts = operands(node, "+")
+                if sum(1 for p in parts if carries(p)) >= 2 and may_exceed(parts):
+                    return f"light terms summed in {fn.name}"
+            if node.data == "assignment" and str(node.children[1]) == "+=":
+                target = root_var(node.children[0]) or ""
+                if carries(node.children[2]):
+                    added = per_target.setdefault(target, [])
+                    added.append(node.children[2])
+                    if len(added) >= 2 and may_exceed(added):
+                        return f"light terms accumulated into `{target}` in {fn.name}"
+        return ""
+
+
+def _bounded_hi(ctx: LintContext, node: Node) -> float | None:
+    """The model's upper bound of the value when it has a finite one, else None."""
+    hi = semantic_model(ctx).range_of(node).hi
+    return float(hi) if math.isfinite(hi) else None

@@ -1,0 +1,78 @@
+"""Helpers shared by the numerical rules: when a value range is evidence of a bad value
+(reaches_below, reaches_zero, is_raw_dot), the builtin calls of a file, an expression shortened
+for a message, the unsafe wrapping fix, and NumericalRule, the rules' base class."""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator
+
+from lark import Token, Tree
+
+from ...analysis.model import Model, Value, callee_name
+from ...analysis.ranges import Interval
+from ...context import LintContext
+from ...finding import Finding, Fix, Severity
+from .. import Rule
+
+Node = Tree | Token
+
+
+# How far past a limit a bound must be to count: 1 - exp(-x) may come out as -2e-16 from the
+# bounds' own rounding, which is not a negative value anyone wrote.
+SLACK = 1e-9
+
+
+def reaches_below(r: Interval, c: float) -> bool:
+    """Values below c are reached on evidence: a finite lower bound under c, or a range that
+    lies under c entirely. (-inf, 1] from `1.0 - x * x` with x unknown is no such evidence."""
+    return r.lo < c - SLACK and (r.lo > -math.inf or r.hi <= c)
+
+
+def reaches_zero(v: Value) -> bool:
+    """Zero is in the range on evidence: a value the model knows reaches 0 (a length, a dot
+    product, sin, max(x, 0.0), x - c across c, a product with such a factor). A range that
+    merely contains 0 after interval arithmetic is no evidence: GGX's 1 + NoH²(a² - 1) is in
+    [0, 1.25] by intervals and never below a²."""
+    r = v.range
+    if not r.may_be_zero:
+        return False
+    return v.zero or v.origin in ("dot", "length", "distance")
+
+
+def is_raw_dot(v: Value) -> bool:
+    return v.origin == "dot"
+
+
+def builtin_calls(ctx: LintContext, model: Model, *names: str) -> Iterator[tuple[Tree, str]]:
+    """Calls of these builtins (a user function of the same name is not the builtin)."""
+    for node in ctx.nodes("call"):
+        name = callee_name(node)
+        if name in names and name not in model.functions:
+            yield node, name
+
+
+def text(ctx: LintContext, node: Node, limit: int = 48) -> str:
+    """The expression as written, on one line, shortened for a message."""
+    s = re.sub(r"\s+", " ", ctx.node_text(node)).strip()
+    return s if len(s) <= limit else s[: limit - 3] + "..."
+
+
+def range_note(v: Value, fallback: str) -> str:
+    return f"range {v.range.describe()}" if not v.range.is_unknown else fallback
+
+
+def wrap_fix(ctx: LintContext, node: Node, template: str, message: str) -> Fix | None:
+    """An unsafe fix that rewrites `node` as `template` with {} the node's text; None where
+    a macro makes the position untrustworthy."""
+    edit = ctx.replace(node, template.format(ctx.node_text(node).strip()))
+    return Fix(message, (edit,), "unsafe") if edit is not None else None
+
+
+class NumericalRule(Rule):
+    category = "numerical"
+
+    def emit(self, ctx: LintContext, where: Node, message: str, fix: Fix | None = None,
+             severity: Severity | None = None) -> Finding:  # fmt: skip
+        return ctx.finding(self.code, severity or self.severity, where, message, fix)

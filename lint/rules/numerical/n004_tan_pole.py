@@ -1,0 +1,45 @@
+"""N004 tan-pole."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ...analysis.model import call_args, semantic_model
+from ...analysis.ranges import reaches_tan_pole
+from ...context import LintContext
+from ...finding import Finding
+from .. import register
+from ._common import NumericalRule, builtin_calls, text
+
+
+@register
+class TanPole(NumericalRule):
+    """Finds `tan(x)` where the range of x reaches a pole, π/2 + kπ.
+
+    Why it matters: tan grows without bound near its poles and flips sign across them; a
+    field of view or an animated angle that reaches π/2 gives infinities and a picture that
+    tears or goes black.
+
+    Example:
+        float k = tan(iTime);
+
+    Fix:
+        float k = tan(clamp(angle, -1.5, 1.5));   // keep away from ±π/2
+    """
+
+    code = "N004"
+    name = "tan-pole"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        model = semantic_model(ctx)
+        for call, _ in builtin_calls(ctx, model, "tan"):
+            args = call_args(call)
+            if len(args) != 1:
+                continue
+            r = model.range_of(args[0])
+            if reaches_tan_pole(r):
+                message = (
+                    f"tan of {text(ctx, args[0])} reaches a pole at π/2 + kπ "
+                    f"(range {r.describe()}); keep the angle inside (-π/2, π/2)"
+                )
+                yield self.emit(ctx, args[0], message)

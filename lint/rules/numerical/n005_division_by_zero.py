@@ -1,0 +1,65 @@
+"""N005 division-by-zero."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...analysis.model import semantic_model
+from ...analysis.types import components
+from ...context import LintContext, walk
+from ...finding import Finding
+from .. import register
+from ._common import Node, NumericalRule, reaches_zero, text, wrap_fix
+
+EPSILON = "1e-4"  # the divisor floor N005's fix inserts
+
+
+@register
+class DivisionByZero(NumericalRule):
+    """Finds a division by a value that can be zero: a dot product, a length or distance, a
+    square, a clamped value that reaches 0, a constant 0, without an epsilon.
+
+    Why it matters: x / 0 is infinity (0 / 0 is NaN), which survives tone mapping as a white
+    or black pixel and poisons everything it is mixed with. A length is 0 at the origin, N·L
+    is 0 at the terminator and negative beyond it.
+
+    Example:
+        float atten = 1.0 / dot(d, d);
+        vec3 dir = p / length(p);
+
+    Fix:
+        float atten = 1.0 / max(dot(d, d), 1e-4);
+    """
+
+    code = "N005"
+    name = "division-by-zero"
+    fixable = "unsafe"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        model = semantic_model(ctx)
+        for node in walk(ctx.tree):  # type: ignore[arg-type]
+            divisor = _divisor(node)
+            if divisor is None:
+                continue
+            v = model.value_of(divisor)
+            if not reaches_zero(v):
+                continue
+            shown = text(ctx, divisor)
+            fix = None
+            advice = "guard it"
+            # a floor keeps the meaning only for divisors that are never negative
+            if v.range.is_nonnegative and (components(v.type) or ("", 0))[0] == "float":
+                advice = f"add an epsilon: max({shown}, {EPSILON})"
+                fix = wrap_fix(ctx, divisor, "max({}, " + EPSILON + ")", "floor the divisor")
+            message = f"division by {shown}, which may be 0 (range {v.range.describe()}); {advice}"
+            yield self.emit(ctx, divisor, message, fix)
+
+
+def _divisor(node: Tree) -> Node | None:
+    if node.data == "binary" and str(node.children[1]) == "/":
+        return node.children[2]
+    if node.data == "assignment" and str(node.children[1]) == "/=":
+        return node.children[2]
+    return None

@@ -1,0 +1,38 @@
+"""Helpers shared by the performance rules: when a replacement needs parentheses (PF001, PF003)
+and the names of GLSL's builtin functions."""
+
+from __future__ import annotations
+
+from lark import Tree
+
+from ...context import Node
+
+# Parents in which `a * b` needs no parentheses: it is a whole argument, initializer, right
+# side or statement, or an operand of + / - (which bind more loosely than *).
+_OPEN_PARENTS = {"arguments", "declarator", "jump_statement", "expression_statement", "ternary"}
+
+
+def needs_parens(node: Node, parent: Tree | None) -> bool:
+    if parent is None or parent.data in _OPEN_PARENTS:
+        return False
+    if parent.data == "assignment":
+        return parent.children[0] is node
+    if parent.data == "index":
+        return parent.children[0] is node
+    if parent.data == "binary":
+        op = str(parent.children[1])
+        # a*a + b, b - a*a, a*a * b and a*a / b group as written (left associative)
+        return not (op in ("+", "-") or (op in ("*", "/") and parent.children[0] is node))
+    return True
+
+
+BUILTINS: set[str] = set()
+
+
+def load_builtins() -> None:
+    from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+    BUILTINS.update(BUILTIN_FUNCTIONS)
+
+
+load_builtins()

@@ -1,0 +1,79 @@
+"""PF001 pow-small-integer."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ...context import LintContext
+from ...finding import Finding, Fix
+from .. import Rule, register
+from ..lighting._terms import (
+    call_args,
+    call_name,
+    const_value,
+    is_simple,
+    parents,
+)
+from ._common import needs_parens
+
+
+@register
+class PowSmallInteger(Rule):
+    """Finds `pow(x, 2.0)` to `pow(x, 5.0)` of a plain variable or swizzle, where a few
+    multiplies say the same thing.
+
+    Why it matters: pow is exp2(y·log2(x)) on most GPUs, two transcendental operations and a
+    multiply, and less accurate than x·x. Many drivers rewrite small constant exponents
+    themselves, but not all (and not at every precision), so spelling out the product is never
+    slower. Only plain variables and swizzles are reported, where the product repeats no work
+    and no side effect: `pow(clamp(1.0 - c, 0.0, 1.0), 5.0)` would need a temporary of a type
+    the fix cannot always name, so it is left alone.
+
+    The fix is safe: for x ≥ 0 the product is the same value (more exact); for x < 0, pow is
+    undefined in GLSL while the product is defined, so only code that was already wrong can
+    change.
+
+    Example:
+        float spec = pow(NoH, 2.0) * k;
+
+    Fix:
+        float spec = NoH * NoH * k;
+    """
+
+    code = "PF001"
+    name = "pow-small-integer"
+    category = "performance"
+    severity = "info"
+    fixable = "safe"
+
+    _FORMS = {
+        2: "{x} * {x}",
+        3: "{x} * {x} * {x}",
+        4: "({x} * {x}) * ({x} * {x})",
+        5: "{x} * {x} * {x} * {x} * {x}",
+    }
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
+        for node in ctx.nodes("call"):
+            if call_name(node) != "pow":
+                continue
+            args = call_args(node)
+            if len(args) != 2 or not is_simple(args[0]):
+                continue
+            exponent = const_value(args[1])
+            if exponent not in (2.0, 3.0, 4.0, 5.0):
+                continue
+            n = int(exponent)  # type: ignore[arg-type]
+            base = ctx.node_text(args[0])
+            product = self._FORMS[n].format(x=base)
+            text = f"({product})" if needs_parens(node, up.get(id(node))) else product
+            edit = ctx.replace(node, text)
+            fix = Fix(f"write {product}", (edit,)) if edit else None
+            yield self.report(
+                ctx,
+                node,
+                f"pow({base}, {n}.0) costs two transcendentals; {product} is exact and cheaper",
+                fix,
+            )

@@ -1,0 +1,129 @@
+"""PF003 redundant-normalize."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...context import LintContext, Node, walk
+from ...finding import Finding, Fix
+from .. import Rule, register
+from ..lighting._terms import (
+    Function,
+    call_args,
+    call_name,
+    functions,
+    is_unit,
+    names_in,
+    parents,
+    resolve,
+    var_name,
+)
+from ._common import needs_parens
+
+
+def _unit_by_form(node: Node, fn: Function | None, consts: dict[str, Node], depth: int = 4) -> bool:
+    """Unit length by construction: normalize(...), reflect of unit vectors, a negated unit
+    vector, or a local or global constant whose one value is one of those."""
+    if depth <= 0 or not isinstance(node, Tree):
+        return False
+    name = call_name(node)
+    if name == "normalize":
+        return True
+    if name == "reflect":
+        return all(_unit_by_form(a, fn, consts, depth - 1) for a in call_args(node))
+    if node.data == "unary" and str(node.children[0]) in "+-":
+        return _unit_by_form(node.children[1], fn, consts, depth - 1)
+    variable = var_name(node)
+    if variable is not None:
+        value = resolve(node, fn, 1)
+        if value is not node:
+            return _unit_by_form(value, fn, consts, depth - 1)
+        local = fn is not None and (variable in fn.locals or variable in fn.params)
+        if not local and variable in consts:
+            return _unit_by_form(consts[variable], None, consts, depth - 1)
+    return False
+
+
+def _const_values(ctx: LintContext) -> dict[str, Node]:
+    values: dict[str, Node] = {}
+    assert ctx.tree is not None
+    for node in ctx.tree.children:
+        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+            continue
+        spec = node.children[0]
+        qual = spec.children[0] if isinstance(spec, Tree) else None
+        if not (isinstance(qual, Tree) and qual.data == "type_qualifier"
+                and "const" in [str(t) for t in qual.children]):  # fmt: skip
+            continue
+        for child in node.children[1:]:
+            if isinstance(child, Tree) and child.data == "declarator":
+                init = child.children[-1]
+                if isinstance(init, Tree) and init.data != "array_specifier":
+                    values[str(child.children[0])] = init
+    return values
+
+
+@register
+class RedundantNormalize(Rule):
+    """Finds normalize() of a vector that is already unit length: normalize(normalize(x)), a
+    variable whose only value came from normalize, a reflect of unit vectors.
+
+    Why it matters: normalize is a dot product, an inverse square root and a multiply; doing
+    it twice is waste, and usually a sign that the code is unsure where its vectors are
+    normalized. Only vectors that are unit by construction are reported, never parameters
+    (whose callers may pass anything).
+
+    The fix is safe: renormalizing a unit vector changes it by rounding only.
+
+    Example:
+        vec3 rd = normalize(dir);
+        vec3 r = normalize(rd);
+
+    Fix:
+        vec3 rd = normalize(dir);
+        vec3 r = rd;
+    """
+
+    code = "PF003"
+    name = "redundant-normalize"
+    category = "performance"
+    severity = "info"
+    fixable = "safe"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
+        consts = _const_values(ctx)
+        for fn in functions(ctx):
+            for node in walk(fn.body):
+                if call_name(node) != "normalize":
+                    continue
+                args = call_args(node)
+                if len(args) != 1:
+                    continue
+                inner = args[0]
+                # The model's unit facts about parameters come from today's callers; a
+                # normalize that guards a parameter is kept for tomorrow's.
+                modelled = not (names_in(inner) & set(fn.params)) and is_unit(ctx, inner)
+                if not (_unit_by_form(inner, fn, consts) or modelled):
+                    continue
+                text = ctx.node_text(inner)
+                simple = isinstance(inner, Tree) and inner.data in (
+                    "call",
+                    "variable",
+                    "field",
+                    "index",
+                    "constructor",
+                )
+                if not simple and needs_parens(node, up.get(id(node))):
+                    text = f"({text})"
+                edit = ctx.replace(node, text)
+                fix = Fix("drop the outer normalize", (edit,)) if edit else None
+                shown = " ".join(ctx.node_text(inner).split())
+                if len(shown) > 50:
+                    shown = shown[:47] + "..."
+                yield self.report(
+                    ctx, node, f"`{shown}` is already unit length; normalize does nothing", fix
+                )

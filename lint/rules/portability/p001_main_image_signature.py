@@ -1,0 +1,83 @@
+"""P001 main-image-signature."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from glint.compiler.shadertoy import is_complete
+
+from ...analysis.flow import parameter_parts, prototype_parts
+from ...context import LintContext
+from ...finding import Finding
+from .. import Rule, register
+from ._common import function_prototypes, signature_problem
+
+
+@register
+class MainImageSignature(Rule):
+    """Finds an Image-tab shader whose entry point is not
+    `void mainImage(out vec4 fragColor, in vec2 fragCoord)` (names are free, `in` optional):
+    a wrong parameter list or return type, or no mainImage in code that writes the pixel
+    through `gl_FragColor`/`gl_FragCoord`.
+
+    A file without mainImage that uses neither is taken for library code (a Common tab, a
+    file of helpers) and not reported, and one that defines `main` or opens with `#version`
+    is a complete shader, which needs no mainImage.
+
+    Why it matters: ShaderToy appends a `main` that calls mainImage with exactly these
+    arguments; any other signature fails to compile there with an error in code you did not
+    write.
+
+    Example:
+        void mainImage(out vec3 color, vec2 uv) { color = vec3(uv, 0.0); }
+
+    Fix:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) { ... }
+    """
+
+    code = "P001"
+    name = "main-image-signature"
+    category = "portability"
+    severity = "error"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        protos = function_prototypes(ctx.tree)
+        names = {str(p.children[1]) for p in protos}
+        if "main" in names or is_complete(ctx.text):
+            return
+        mains = [p for p in protos if p.children[1] == "mainImage"]
+        problems = []
+        for proto in mains:
+            ret, name, params = prototype_parts(proto)
+            problem = signature_problem(ret, params)
+            if problem is None:
+                if parameter_parts(params[0])[0] == "inout":
+                    yield ctx.finding(
+                        self.code, "warning", name,
+                        "mainImage's colour should be `out vec4`, not `inout`: ShaderToy "
+                        "passes no colour in",
+                    )  # fmt: skip
+                return
+            problems.append((name, problem))
+        for name, problem in problems[:1]:
+            yield self.report(
+                ctx, name, f"mainImage has the wrong signature: {problem}; ShaderToy calls "
+                "`void mainImage(out vec4 fragColor, in vec2 fragCoord)`",
+            )  # fmt: skip
+        if mains:
+            return
+        near = [p.children[1] for p in protos if str(p.children[1]).lower().replace("_", "")
+                == "mainimage"]  # fmt: skip
+        if near:
+            yield self.report(ctx, near[0], f"`{near[0]}` is not `mainImage`: ShaderToy "
+                              "calls `mainImage`, with this capitalisation")  # fmt: skip
+            return
+        uses = next((n for n in ctx.nodes("variable")
+                     if n.children[0] in ("gl_FragColor", "gl_FragData", "gl_FragCoord")),
+                    None)  # fmt: skip
+        if uses is not None:
+            yield self.report(
+                ctx, uses, "no mainImage: ShaderToy calls `void mainImage(out vec4 fragColor, "
+                "in vec2 fragCoord)`; move the pixel code into it",
+            )  # fmt: skip

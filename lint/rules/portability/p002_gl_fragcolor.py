@@ -1,0 +1,89 @@
+"""P002 gl-fragcolor."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...analysis.flow import parameter_parts, prototype_parts
+from ...context import LintContext, Node, walk
+from ...finding import Finding, Fix
+from .. import Rule, register
+from ._common import declares_name, is_es1, parent_map, signature_problem
+
+
+def _functions(ctx: LintContext) -> list[Tree]:
+    assert ctx.tree is not None
+    return [n for n in ctx.tree.children if isinstance(n, Tree) and n.data == "function_definition"]
+
+
+def _main_image_out(ctx: LintContext) -> tuple[Tree, str] | None:
+    """mainImage's definition and the name of its `out vec4` colour, when its signature is
+    the one ShaderToy calls."""
+    for fdef in _functions(ctx):
+        ret, name, params = prototype_parts(fdef.children[0])  # type: ignore[arg-type]
+        if name == "mainImage" and signature_problem(ret, params) is None:
+            pname = parameter_parts(params[0])[3]
+            if pname is not None:
+                return fdef, str(pname)
+    return None
+
+
+@register
+class FragColor(Rule):
+    """Finds `gl_FragColor` and `gl_FragData`, which GLSL ES 3.00 removed.
+
+    Why it matters: ShaderToy compiles GLSL ES 3.00, where these names are undeclared; the
+    colour goes out through mainImage's `out vec4` parameter instead.
+
+    Example:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            gl_FragColor = vec4(1.0);
+        }
+
+    Fix:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            fragColor = vec4(1.0);
+        }
+        (`--fix` does this inside mainImage, where the parameter's name is known.)
+    """
+
+    code = "P002"
+    name = "gl-fragcolor"
+    category = "portability"
+    severity = "error"
+    fixable = "safe"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        if is_es1(ctx):
+            return
+        main = _main_image_out(ctx)
+        inside: set[int] = set()
+        if main is not None and not declares_name(main[0].children[1], main[1]):  # type: ignore[arg-type]
+            inside = {id(n) for n in walk(main[0])}
+        parents = parent_map(ctx.tree)
+        for node in ctx.nodes("variable"):
+            if node.children[0] not in ("gl_FragColor", "gl_FragData"):
+                continue
+            target: Node = node
+            if node.children[0] == "gl_FragData":
+                parent = parents.get(id(node))
+                at_zero = (parent is not None and parent.data == "index"
+                           and _literal(parent.children[1]) == "0")  # fmt: skip
+                target = parent if at_zero else node  # type: ignore[assignment]
+            fix = None
+            if id(node) in inside and (target is not node or node.children[0] == "gl_FragColor"):
+                edit = ctx.replace(target, main[1])  # type: ignore[index]
+                fix = Fix(f"write `{main[1]}`", (edit,)) if edit else None  # type: ignore[index]
+            old = ctx.node_text(target).strip() or str(node.children[0])
+            where = f"`{main[1]}`" if main else "mainImage's `out vec4` parameter"
+            message = f"`{old}` does not exist in GLSL ES 3.00; write {where}"
+            yield self.report(ctx, target, message, fix)
+
+
+def _literal(node: Node) -> str | None:
+    if isinstance(node, Tree) and node.data in ("int_literal", "float_literal"):
+        return str(node.children[0])
+    return None

@@ -1,0 +1,60 @@
+"""P004 old-shadertoy-uniform."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...context import LintContext, walk
+from ...finding import Finding, Fix
+from .. import Rule, register
+from ._common import declares_name, defined_names
+
+
+@register
+class OldShadertoyUniform(Rule):
+    """Finds ShaderToy uniforms under their old names (`iGlobalTime`, renamed `iTime` in
+    2017) and `iChannelResolution` used without an index.
+
+    Why it matters: ShaderToy no longer declares `iGlobalTime`, so old shaders pasted in fail
+    with "undeclared identifier". `iChannelResolution` is an array of four vec3, one per
+    channel; `iChannelResolution.xy` does not compile.
+
+    Example:
+        float t = iGlobalTime;
+        vec2 size = iChannelResolution.xy;
+
+    Fix:
+        float t = iTime;   (`--fix` renames it)
+        vec2 size = iChannelResolution[0].xy;
+    """
+
+    code = "P004"
+    name = "old-shadertoy-uniform"
+    category = "portability"
+    severity = "error"
+    fixable = "safe"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        own = defined_names(ctx)
+        if "iGlobalTime" in own:
+            return  # the file declares it itself
+        shadowed = declares_name(ctx.tree, "iTime") or "iTime" in own
+        for node in walk(ctx.tree):
+            if node.data == "variable" and node.children[0] == "iGlobalTime":
+                edit = None if shadowed else ctx.replace(node, "iTime")
+                fix = Fix("use `iTime`", (edit,)) if edit else None
+                message = "`iGlobalTime` is ShaderToy's old name for `iTime`"
+                yield self.report(ctx, node, message, fix)
+            elif node.data == "field" and "iChannelResolution" not in own:
+                base = node.children[0]
+                if (
+                    isinstance(base, Tree)
+                    and base.data == "variable"
+                    and (base.children[0] == "iChannelResolution")
+                ):
+                    message = ("`iChannelResolution` is an array, one vec3 per channel: "
+                               "index it, e.g. `iChannelResolution[0].xy`")  # fmt: skip
+                    yield self.report(ctx, node, message)

@@ -1,0 +1,181 @@
+"""P005 int-where-float."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from lark import Tree
+
+from glint.compiler.glsl.keywords import words
+
+from ...analysis.flow import prototype_parts, type_of_declaration
+from ...analysis.model import Model, semantic_model
+from ...analysis.types import is_float_like
+from ...context import LintContext, walk
+from ...finding import Finding, Fix
+from .. import Rule, register
+from ._common import function_prototypes, parent_map
+
+# Builtins with only float overloads: an int argument never matches (GLSL ES 3.00, section 8).
+FLOAT_ONLY = words(
+    """radians degrees sin cos tan asin acos atan sinh cosh tanh asinh acosh atanh pow exp log
+    exp2 log2 sqrt inversesqrt floor trunc round roundEven ceil fract mod mix step smoothstep
+    length distance dot cross normalize faceforward reflect refract dFdx dFdy fwidth"""
+)
+
+
+# Builtins with int overloads too: an int literal is wrong only beside a float argument.
+INT_OVERLOADS = frozenset({"abs", "sign", "min", "max", "clamp"})
+
+
+# Texture functions whose argument at this position is a float (bias or level of detail).
+FLOAT_ARG_AT = {"texture": 2, "textureProj": 2, "textureLod": 2, "textureProjLod": 2}
+
+
+_ARITHMETIC = frozenset({"+", "-", "*", "/", "<", ">", "<=", ">=", "==", "!="})
+
+
+_DECIMAL = re.compile(r"^(0|[1-9][0-9]*)$")
+
+
+@register
+class IntWhereFloat(Rule):
+    """Finds an int where a float is needed: `float x = 1;`, `x * 2` or `x > 0` with a float
+    `x`, `pow(x, 2)`, `textureLod(s, uv, 0)`, `return 0;` in a float function. Constructors
+    convert, so `vec3(1, 0, 0)` is fine.
+
+    Why it matters: GLSL ES has no implicit int-to-float conversion (desktop GL does), so code
+    that compiles on a desktop driver fails on ShaderToy, WebGL and phones.
+
+    Example:
+        float d = 1;
+        col *= pow(d, 2);
+
+    Fix:
+        float d = 1.0;
+        col *= pow(d, 2.0);
+        (`--fix` rewrites int literals; an int variable needs `float(i)`, by hand.)
+    """
+
+    code = "P005"
+    name = "int-where-float"
+    category = "portability"
+    severity = "error"
+    fixable = "safe"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        model = semantic_model(ctx)
+        types = model.type_of
+        parents = parent_map(ctx.tree)
+        for node in walk(ctx.tree):
+            if node.data == "int_literal":
+                if str(node.children[0])[-1] in "uU":
+                    continue
+                expr: Tree = node
+                while (parent := parents.get(id(expr))) is not None and parent.data == "unary" \
+                        and parent.children[0] in ("-", "+"):  # fmt: skip
+                    expr = parent
+            elif node.data == "variable" and types(node) == "int":
+                expr = node
+            else:
+                continue
+            why = self.float_context(expr, parents, model)
+            if why is None:
+                continue
+            text = str(node.children[0])
+            if node.data == "variable":
+                message = (f"int `{text}` {why}; GLSL ES has no implicit conversion: "
+                           f"write `float({text})`")  # fmt: skip
+                yield self.report(ctx, node, message)
+                continue
+            fix = None
+            if _DECIMAL.match(text):
+                edit = ctx.replace(node, text + ".0")
+                fix = Fix(f"write `{text}.0`", (edit,)) if edit else None
+            message = (f"int literal `{text}` {why}; GLSL ES has no implicit conversion: "
+                       f"write `{text}.0`")  # fmt: skip
+            yield self.report(ctx, node, message, fix)
+
+    def float_context(self, expr: Tree, parents: dict[int, Tree], model: Model) -> str | None:
+        """Why the expression must be a float there, or None if it need not (or we cannot
+        tell)."""
+        types = model.type_of
+        while True:
+            parent = parents.get(id(expr))
+            if parent is None:
+                return None
+            kids = parent.children
+            kind = parent.data
+            if kind == "declarator" and expr is kids[-1] and len(kids) > 1:
+                decl = parents.get(id(parent))
+                if decl is None or decl.data != "variable_declaration":
+                    return None
+                ty, arr = type_of_declaration(decl.children[0])  # type: ignore[arg-type]
+                is_arr = arr or any(isinstance(c, Tree) and c.data == "array_specifier"
+                                    for c in kids)  # fmt: skip
+                return "initialises a float" if ty == "float" and not is_arr else None
+            if kind == "assignment" and expr is kids[2]:
+                target = types(kids[0])
+                if kids[1] == "=":
+                    return "is assigned to a float" if target == "float" else None
+                return f"is used in `{kids[1]}` on a float" if is_float_like(target) else None
+            if kind == "binary" and str(kids[1]) in _ARITHMETIC:
+                other = kids[2] if expr is kids[0] else kids[0]
+                if is_float_like(types(other)):
+                    return f"is an operand of `{kids[1]}` beside a float"
+                return None
+            if kind == "arguments":
+                return self.argument(expr, parent, parents, model)
+            if kind == "jump_statement":
+                function = parents.get(id(parent))
+                while function is not None and function.data != "function_definition":
+                    function = parents.get(id(function))
+                if function is None:
+                    return None
+                ret, name, _ = prototype_parts(function.children[0])  # type: ignore[arg-type]
+                return f"is returned from `{name}`, which returns float" if ret == "float" else None
+            if kind == "ternary" and expr is not kids[0]:
+                other = kids[2] if expr is kids[1] else kids[1]
+                if is_float_like(types(other)):
+                    return "is a branch of `?:` beside a float"
+                expr = parent  # the ternary's own context decides
+                continue
+            return None
+
+    def argument(
+        self, expr: Tree, args: Tree, parents: dict[int, Tree], model: Model
+    ) -> str | None:
+        call = parents.get(id(args))
+        position = next(i for i, a in enumerate(args.children) if a is expr)
+        if call is None:
+            return None
+        if call.data == "constructor":
+            ty, arr = type_of_declaration(call.children[0])  # type: ignore[arg-type]
+            if arr:
+                return "is an element of a float array" if ty == "float" else None
+            # struct constructors convert nothing; vector and matrix constructors do
+            members = list(model.structs.get(ty, {}).items())
+            if len(members) == len(args.children) and members[position][1] == "float":
+                return f"initialises the float member `{members[position][0]}` of `{ty}`"
+            return None
+        callee = call.children[0]
+        if call.data != "call" or not (isinstance(callee, Tree) and callee.data == "variable"):
+            return None
+        name = str(callee.children[0])
+        count = len(args.children)
+        own = {str(p.children[1]) for p in function_prototypes(model.tree)}
+        if name in own:  # the file's own function, every overload taking a float
+            overloads = [f.params for f in model.functions.get(name, []) if len(f.params) == count]
+            if overloads and all(p[position][1] == "float" for p in overloads):
+                return f"is passed to a float parameter of `{name}`"
+            return None
+        if name in FLOAT_ONLY:
+            return f"is passed to `{name}`, which takes floats"
+        if FLOAT_ARG_AT.get(name) == position:
+            return f"is passed as `{name}`'s float bias or level"
+        others = [a for i, a in enumerate(args.children) if i != position]
+        if name in INT_OVERLOADS and any(is_float_like(model.type_of(a)) for a in others):
+            return f"is passed to `{name}` beside a float argument"
+        return None

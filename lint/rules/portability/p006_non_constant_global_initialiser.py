@@ -1,0 +1,101 @@
+"""P006 non-constant-global-initialiser."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Token, Tree
+
+from glint.compiler.shadertoy import UNIFORM_NAMES
+
+from ...context import LintContext, walk
+from ...finding import Finding
+from .. import Rule, register
+from ._common import function_prototypes
+
+
+def _qualifier_words(spec: Tree) -> set[str]:
+    """The qualifiers of a `fully_specified_type` (`const`, `uniform`, `highp`, ...)."""
+    first = spec.children[0]
+    if isinstance(first, Tree) and first.data == "type_qualifier":
+        return {str(t) for t in first.children if isinstance(t, Token)}
+    return set()
+
+
+_NOT_CONSTANT_CALLS = ("texture", "texel", "dFd", "fwidth")
+
+
+@register
+class NonConstantGlobal(Rule):
+    """Finds a global variable initialised with something that is not a constant
+    expression: a uniform (`iTime`, `iResolution`), another non-const global, a call to a
+    function of the file, a texture lookup.
+
+    Why it matters: GLSL ES 3.00 only allows constant expressions in global initialisers
+    (desktop GL and some drivers allow more); ShaderToy rejects the shader with
+    "non-constant global initializer".
+
+    Example:
+        vec2 res = iResolution.xy;
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) { ... fragCoord / res ... }
+
+    Fix:
+        vec2 res;
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            res = iResolution.xy;
+            ...
+        }
+    """
+
+    code = "P006"
+    name = "non-constant-global-initialiser"
+    category = "portability"
+    severity = "error"
+
+    def check(self, ctx: LintContext) -> Iterator[Finding]:
+        assert ctx.tree is not None
+        functions = {str(p.children[1]) for p in function_prototypes(ctx.tree)}
+        variables: set[str] = set()  # non-const globals declared so far
+        for node in ctx.tree.children:
+            if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+                continue
+            words = _qualifier_words(node.children[0])  # type: ignore[arg-type]
+            if words & {"uniform", "in", "out"}:
+                continue
+            for decl in node.children[1:]:
+                if not isinstance(decl, Tree):
+                    continue
+                init = [c for c in decl.children[1:] if isinstance(c, Tree)
+                        and c.data != "array_specifier"]  # fmt: skip
+                if init:
+                    reason = _not_constant(init[0], variables, functions)
+                    if reason is not None:
+                        name = decl.children[0]
+                        message = (f"global `{name}` is initialised with {reason}, which is "
+                                   "not a constant expression in GLSL ES 3.00; declare it "
+                                   "without a value and assign it in mainImage")  # fmt: skip
+                        yield self.report(ctx, init[0], message)
+                if "const" not in words:
+                    variables.add(str(decl.children[0]))
+
+
+def _not_constant(init: Tree, variables: set[str], functions: set[str]) -> str | None:
+    """What makes an initialiser non-constant, or None (also when unsure)."""
+    callees: set[int] = set()
+    for node in walk(init):
+        if node.data == "call" and isinstance(node.children[0], Tree):
+            callee = node.children[0]
+            callees.add(id(callee))
+            if callee.data == "variable":
+                name = str(callee.children[0])
+                if name in functions:
+                    return f"a call to `{name}` (functions cannot run at global scope)"
+                if name.startswith(_NOT_CONSTANT_CALLS):
+                    return f"`{name}(...)`"
+        elif node.data == "variable" and id(node) not in callees:
+            name = str(node.children[0])
+            if name in UNIFORM_NAMES or name in ("gl_FragCoord", "gl_FrontFacing"):
+                return f"the uniform `{name}`"
+            if name in variables:
+                return f"the non-const global `{name}`"
+    return None
