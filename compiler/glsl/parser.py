@@ -8,6 +8,7 @@ syntax errors at the original file:line.
 from __future__ import annotations
 
 import functools
+from collections import deque
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -64,42 +65,226 @@ class _ReservedWord(Exception):
 
 class _TypeNamePostLex(PostLex):
     """Retypes identifiers that are really keywords or type names, so LALR can tell
-    a declaration (`S x;`) from an expression (`a * b;`).
-
-    Struct names are learnt as `struct NAME` goes by. A snippet may also use a struct that
-    another snippet defines; no expression has two identifiers in a row, so an unknown name
-    followed by an identifier is taken as a type (`Material m`) and remembered as one.
-    Scopes are ignored, as shaders rarely reuse a type's name for anything else."""
+    a declaration (`S x;`) from an expression (`a * b;`). See `_Retyper`."""
 
     always_accept = ()
 
     def process(self, stream: Iterator[Token]) -> Iterator[Token]:
-        types: set[str] = set()
-        after_struct = False
-        tokens = iter(stream)
-        tok = next(tokens, None)
-        while tok is not None:
-            nxt = next(tokens, None)  # one token of lookahead
-            if tok.type == "IDENTIFIER":
-                self._retype(tok, nxt, types, after_struct)
-            after_struct = tok.type == "STRUCT"
-            yield tok
-            tok = nxt
+        return _Retyper(stream).run()
 
-    @staticmethod
-    def _retype(tok: Token, nxt: Token | None, types: set[str], after_struct: bool) -> None:
+
+# How far to look past an unknown name's `[...]` for the identifier that makes it a type.
+_MAX_LOOKAHEAD = 256
+
+
+class _Frame:
+    """One scope: a `{...}` block, a struct body (`members`), or a `(...)` (`params` when it
+    is a function's parameter list). `names` maps a name to True for a type, False for
+    anything else declared there."""
+
+    __slots__ = ("kind", "names")
+
+    def __init__(self, kind: str, names: dict[str, bool] | None = None) -> None:
+        self.kind = kind
+        self.names = names if names is not None else {}
+
+
+class _Retyper:
+    """The lexer side of the typedef-name problem, as glslang's scanner does it.
+
+    An identifier is a TYPE_NAME when a struct of that name is in scope and no variable,
+    parameter or local struct of an inner scope hides it. Scopes follow `{}` and `()`:
+    parameters (and `for (T i ...)` variables) live in the parenthesis frame and carry over
+    into the `{` that follows it. A declared name is in scope after its declarator ends (at
+    the `,` or `;`), so `ray ray = ray(o, d);` still constructs with the type.
+
+    Where a name must be a declarator, it stays an IDENTIFIER whatever it names: right after
+    a type (`ray ray;`, also as a struct member), after `struct`, after `.` (a field), and
+    after the `,` of a declarator list. Struct members are not declared anywhere.
+
+    A name declared nowhere in this source (a struct from another snippet or from ShaderToy's
+    Common tab) is a type where only a type can be: before another identifier (`Material m`),
+    before `[...]` and an identifier (`Material[2] ms`), at the start of a parameter (also
+    an unnamed one) or of a struct member. It is then remembered as a global type."""
+
+    def __init__(self, stream: Iterator[Token]) -> None:
+        self.stream = iter(stream)
+        self.buffer: deque[Token] = deque()
+        self.error: BaseException | None = None  # a lexer error met while looking ahead
+        self.frames: list[_Frame] = [_Frame("block")]
+        self.prev: Token | None = None
+        self.after_type = False  # the next identifier, outside brackets, is a declarator
+        self.after_struct = False
+        self.field = False  # after `.`
+        self.brackets = 0  # `[` depth: inside an array size no declarator starts
+        self.pending: tuple[Token, int] | None = None  # declarator name, its paren depth
+        self.decl_list: int | None = None  # paren depth of a declarator list's commas
+        self.next_declarator = False  # after such a comma
+        self.starts_item = False  # at the start of a parameter or a struct member
+        self.carried: dict[str, bool] | None = None  # names of a `(...)` just closed
+        self.parens = 0
+
+    # -- the token stream with lookahead ----------------------------------------------------
+
+    def _fill(self, count: int) -> bool:
+        """Have at least `count` tokens buffered; False at the end (or at a lexer error,
+        which is raised once the tokens before it are consumed)."""
+        while len(self.buffer) < count:
+            if self.error is not None:
+                return False
+            try:
+                tok = next(self.stream)
+            except StopIteration:
+                return False
+            except UnexpectedInput as exc:
+                self.error = exc
+                return False
+            self.buffer.append(tok)
+        return True
+
+    def _peek(self, index: int) -> Token | None:
+        return self.buffer[index] if self._fill(index + 1) else None
+
+    def run(self) -> Iterator[Token]:
+        while self._fill(1):
+            tok = self.buffer.popleft()
+            if tok.type == "IDENTIFIER":
+                self._identifier(tok)
+            else:
+                self._other(tok)
+            self.prev = tok
+            yield tok
+        if self.error is not None:
+            raise self.error
+
+    # -- scopes -----------------------------------------------------------------------------
+
+    def _lookup(self, name: str) -> bool | None:
+        """True for a type in scope, False for something else, None when never declared."""
+        for frame in reversed(self.frames):
+            kind = frame.names.get(name)
+            if kind is not None:
+                return kind
+        return None
+
+    def _declare(self, name: str, is_type: bool) -> None:
+        frame = self.frames[-1]
+        if frame.kind != "members":
+            frame.names[name] = is_type
+
+    def _end_declarator(self) -> None:
+        """A `,`, `;` or `)` at the declarator's depth ends it: its name is now in scope."""
+        if self.pending is not None and self.pending[1] == self.parens:
+            self._declare(self.pending[0].value, False)
+            self.pending = None
+
+    # -- identifiers ------------------------------------------------------------------------
+
+    def _identifier(self, tok: Token) -> None:
         text = tok.value
+        starts_item, self.starts_item = self.starts_item, False
+        next_declarator, self.next_declarator = self.next_declarator, False
         if text in BUILTIN_TYPES:
             tok.type = "BUILTIN_TYPE"
-        elif text in QUALIFIER_GROUPS:
+            self.after_type = True
+            return
+        if text in QUALIFIER_GROUPS:
             tok.type = QUALIFIER_GROUPS[text]
-        elif text in RESERVED_WORDS or "__" in text:
+            self.starts_item = starts_item  # qualifiers come before the type
+            return
+        if text in RESERVED_WORDS or "__" in text:
             raise _ReservedWord(tok)
-        elif after_struct:
-            types.add(text)
-        elif text in types or _is_plain_identifier(nxt):
+        if self.field:
+            self.field = False
+            return
+        if self.after_struct:
+            self.after_struct = False
+            self._declare(text, True)
+            return
+        if (self.after_type or next_declarator) and self.brackets == 0:
+            self.after_type = False
+            self.pending = (tok, self.parens)
+            if self.frames[-1].kind != "params":
+                self.decl_list = self.parens
+            return
+        known = self._lookup(text)
+        if known or (known is None and (starts_item or self._looks_like_type())):
             tok.type = "TYPE_NAME"
-            types.add(text)
+            self.after_type = True
+            if known is None:
+                self.frames[0].names[text] = True
+
+    def _looks_like_type(self) -> bool:
+        """`T x`, `T[2] x`, `T[] x`: no expression has a name (or `[...]`) before a name."""
+        index = 0
+        tok = self._peek(0)
+        while tok is not None and tok.type == "LSQB" and index < _MAX_LOOKAHEAD:
+            depth = 0
+            while tok is not None and index < _MAX_LOOKAHEAD:
+                depth += {"LSQB": 1, "RSQB": -1}.get(tok.type, 0)
+                index += 1
+                if depth == 0:
+                    break
+                tok = self._peek(index)
+            tok = self._peek(index)
+        return _is_plain_identifier(tok)
+
+    # -- everything else --------------------------------------------------------------------
+
+    def _other(self, tok: Token) -> None:
+        kind = tok.type
+        self.field = kind == "DOT"
+        self.after_struct = kind == "STRUCT"
+        self.next_declarator = False
+        self.starts_item = False
+        if kind in ("SEMICOLON", "COMMA", "ASSIGN", "LPAR", "RPAR"):
+            self.after_type = False
+        if kind == "SEMICOLON":
+            self._end_declarator()
+            if self.decl_list == self.parens:
+                self.decl_list = None
+            self.starts_item = self.frames[-1].kind == "members"
+        elif kind == "COMMA":
+            self._end_declarator()
+            if self.frames[-1].kind == "params":
+                self.starts_item = True
+            elif self.decl_list == self.parens and self.brackets == 0:
+                self.next_declarator = True
+        elif kind == "LPAR":
+            function = self.pending is not None and self.prev is self.pending[0]
+            if function:  # `T name(`: a function's parameter list; the name is not a variable
+                self.pending = None
+                self.decl_list = None
+            self.parens += 1
+            self.frames.append(_Frame("params" if function else "parens"))
+            self.starts_item = function
+        elif kind == "RPAR":
+            self._end_declarator()
+            if self.parens > 0 and len(self.frames) > 1:
+                self.parens -= 1
+                frame = self.frames.pop()
+                self.carried = frame.names or None
+        elif kind == "LBRACE":
+            prev = self.prev.type if self.prev is not None else ""
+            if prev in ("IDENTIFIER", "STRUCT"):  # a struct body or an interface block
+                self.frames.append(_Frame("members"))
+                self.starts_item = True
+            else:
+                names = dict(self.carried) if prev == "RPAR" and self.carried else None
+                self.frames.append(_Frame("block", names))
+            self.after_type = False
+            self.pending = None
+            self.decl_list = None
+        elif kind == "RBRACE":
+            if len(self.frames) > 1:
+                frame = self.frames.pop()
+                self.after_type = frame.kind == "members"  # `struct S { ... } s;`
+            self.pending = None
+            self.decl_list = None
+        elif kind == "LSQB":
+            self.brackets += 1
+        elif kind == "RSQB":
+            self.brackets = max(self.brackets - 1, 0)
 
 
 def _is_plain_identifier(tok: Token | None) -> bool:

@@ -199,3 +199,104 @@ def test_parse_source_returns_tree_and_preprocessed() -> None:
     tree, pre = parse_source("#version 300 es\nfloat x = 1.0;")
     assert pre.version == "300 es"
     assert tree.data == "start"
+
+
+def token_types(tree: Tree, name: str) -> list[str]:
+    """The token type of every occurrence of `name`, in source order."""
+    return [t.type for t in tree.scan_values(lambda v: isinstance(v, Token) and v == name)]
+
+
+def test_struct_member_may_share_its_types_name() -> None:
+    tree = parse(
+        "struct ray { vec3 o; };\n"
+        "struct camera { ray ray; ray other; };\n"
+        "float f(camera c) { return c.ray.o.x; }"
+    )
+    kinds = ["IDENTIFIER", "TYPE_NAME", "IDENTIFIER", "TYPE_NAME", "IDENTIFIER"]
+    assert token_types(tree, "ray") == kinds
+
+
+def test_local_variable_hides_a_type_after_its_initializer() -> None:
+    tree = parse(
+        "struct ray { vec3 o; };\n"
+        "float f() { ray ray = ray(vec3(1)); ray.o.x += 1.0; return ray.o.x; }\n"
+        "ray g() { ray r; return r; }"
+    )
+    assert token_types(tree, "ray") == [
+        "IDENTIFIER",  # struct ray
+        "TYPE_NAME", "IDENTIFIER", "TYPE_NAME",  # ray ray = ray(...): the type until the `;`
+        "IDENTIFIER", "IDENTIFIER",  # the variable
+        "TYPE_NAME", "TYPE_NAME",  # the type again in the next function
+    ]  # fmt: skip
+    assert len(list(tree.find_data("constructor"))) == 2  # ray(...) and vec3(...)
+
+
+def test_parameter_and_for_variable_hide_a_type_in_their_body() -> None:
+    tree = parse(
+        "struct ray { vec3 o; };\n"
+        "float f(ray ray) { return ray.o.x; }\n"
+        "float g(vec3 ray);\n"
+        "float h() {\n"
+        "  for (ray ray = ray(vec3(0)); ray.o.x < 1.0; ray.o.x += 0.1) { ray.o.y = 1.0; }\n"
+        "  ray r; return r.o.x;\n"
+        "}"
+    )
+    assert token_types(tree, "ray") == [
+        "IDENTIFIER",  # struct ray
+        "TYPE_NAME", "IDENTIFIER", "IDENTIFIER",  # f(ray ray) { ray.o.x }
+        "IDENTIFIER",  # g(vec3 ray): the prototype's name does not outlive it
+        "TYPE_NAME", "IDENTIFIER", "TYPE_NAME", "IDENTIFIER", "IDENTIFIER", "IDENTIFIER",
+        "TYPE_NAME",  # after the loop, the type again
+    ]  # fmt: skip
+
+
+def test_struct_names_are_block_scoped() -> None:
+    tree = parse(
+        "float f() { { struct Hit { float t; }; Hit h; h.t = 1.0; }\n"
+        "  float Hit = 2.0; return Hit; }\n"
+        "float g() { float Hit = 3.0; return Hit * 2.0; }"
+    )
+    kinds = ["IDENTIFIER", "TYPE_NAME"] + ["IDENTIFIER"] * 4
+    assert token_types(tree, "Hit") == kinds
+
+
+def test_declarators_after_a_struct_and_in_lists_are_identifiers() -> None:
+    tree = parse("struct ray { vec3 o; } a, b[2];\nfloat f() { return a.o.x + b[1].o.x; }")
+    assert [str(d.children[0]) for d in tree.find_data("declarator")] == ["a", "b"]
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        "T[2] a;",
+        "T a[2];",
+        "T[2][3] a;",
+        "float f() { T[2] a; T b[3]; T[N + 1] c; return a[0].x + b[1].x; }",
+        "float f(T[2] a, in T b[2]) { return 1.0; }",
+        "struct S { T[2] m; U n; };",
+        "T[2] make();",
+    ],
+)
+def test_a_type_declared_elsewhere_in_an_array_declaration(source: str) -> None:
+    tree = parse(source)
+    assert "T" in set(tree.scan_values(lambda v: isinstance(v, Token) and v.type == "TYPE_NAME"))
+
+
+def test_indexing_an_undeclared_name_stays_an_expression() -> None:
+    tree = parse("void f() { x[2] = 1.0; y[i][j] += g[k](1.0); }")
+    assert not list(tree.scan_values(lambda v: isinstance(v, Token) and v.type == "TYPE_NAME"))
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        "float f(vec3, float b);",
+        "float f(vec3, float b) { return b; }",
+        "float f(in vec3, out float[2], const int) { return 1.0; }",
+        "struct S { float x; }; float f(S, S s) { return s.x; }",
+        "float f(T, inout U) { return 1.0; }",  # types declared in another snippet
+        "void f(void) {}",
+    ],
+)
+def test_unnamed_parameters(source: str) -> None:
+    parse(source)
