@@ -1,8 +1,14 @@
 """Evaluation of `#if` / `#elif` integer constant expressions.
 
 The operators and precedences are those of GLSL ES 3.00 section 3.4 (C's, without `?:` and
-the comma). By the time we get here `defined` has been resolved and macros expanded; an
-identifier left over is an error in ES (glslang says so too), not a silent 0 as in C.
+the comma; glslang and ANGLE reject `?:` too). By the time we get here `defined` has been
+resolved and macros expanded; an identifier left over is an error in ES (glslang says so
+too), not a silent 0 as in C.
+
+`&&` and `||` short-circuit: section 3.4 says that undefined identifiers in an operand that
+is not evaluated cause no error, so `#if defined(X) && X > 1` is fine without X. Nothing in
+an unevaluated operand is an error but bad syntax: a division by zero there is not one either
+(as in C and ANGLE; glslang and Mesa report it).
 """
 
 from __future__ import annotations
@@ -63,6 +69,7 @@ class _Parser:
     def __init__(self, tokens: list[Tok]) -> None:
         self.tokens = tokens
         self.pos = 0
+        self.unevaluated = 0  # > 0 inside an operand that `&&` or `||` short-circuits
 
     def _peek(self) -> Tok | None:
         return self.tokens[self.pos] if self.pos < len(self.tokens) else None
@@ -71,8 +78,14 @@ class _Parser:
         left = self.unary()
         while (tok := self._peek()) is not None and _BINARY.get(tok.text, 0) >= min_power:
             self.pos += 1
+            skipped = int((tok.text == "&&" and not left) or (tok.text == "||" and bool(left)))
+            self.unevaluated += skipped
             right = self.binary(_BINARY[tok.text] + 1)  # all binary operators are left-assoc
-            left = _apply(tok, left, right)
+            self.unevaluated -= skipped
+            if self.unevaluated and tok.text in ("/", "%") and right == 0:
+                left = 0  # not evaluated: no division by zero
+            else:
+                left = _apply(tok, left, right)
         return left
 
     def unary(self) -> int:
@@ -93,6 +106,8 @@ class _Parser:
         if tok.kind == "num":
             return _int_literal(tok)
         if tok.kind == "ident":
+            if self.unevaluated:
+                return 0
             raise ExprError(f"undefined macro '{tok.text}' in expression", tok.col)
         raise ExprError(f"unexpected '{tok.text}' in expression", tok.col)
 

@@ -100,6 +100,16 @@ def test_skipped_branches_ignore_bad_directives() -> None:
         ("3 > 2 > 1", False),  # (3 > 2) > 1 is 1 > 1
         ("!defined(X) && defined GL_ES", True),
         ("__VERSION__ == 300 && GL_ES", True),
+        # `&&` and `||` short-circuit: an operand that is not evaluated may name anything
+        ("defined(X) && X > 1", False),
+        ("!defined(X) || X > 1", True),
+        ("0 && (X + Y * 2)", False),
+        ("1 || X", True),
+        ("1 || X && Y", True),
+        ("0 && X || 1", True),
+        ("0 && 1 / 0", False),
+        ("1 || 1 % 0", True),
+        ("defined X && X", False),
     ],
 )
 def test_if_expressions(expr: str, value: bool) -> None:
@@ -151,6 +161,11 @@ def test_expansions_are_recorded_per_line() -> None:
         ("#define F(a) a\nint x = F(1;", 2, 10, "unterminated macro call"),
         ("\n#if UNDEFINED_THING\n#endif", 2, 5, "undefined macro 'UNDEFINED_THING'"),
         ("#if 1 / 0\n#endif", 1, 7, "division by zero"),
+        ("#if 1 && X\n#endif", 1, 10, "undefined macro 'X'"),
+        ("#if 0 || X\n#endif", 1, 10, "undefined macro 'X'"),
+        ("#if (0 && X) || Y\n#endif", 1, 17, "undefined macro 'Y'"),
+        ("#if 0\n#elif defined(A) || B\n#endif", 2, 21, "undefined macro 'B'"),
+        ("#if 1 ? 1 : 0\n#endif", 1, 7, "unexpected '?'"),
         ("#define A 1\n#define A 2", 2, 2, "redefined"),
         ("#define GL_X 1", 1, 2, "reserved"),
         ("int a; /* open\n", 1, 8, "unterminated comment"),
