@@ -208,9 +208,12 @@ def explain(entry: dict[str, str]) -> str:
         + (f", {fix[entry['fixable']]}" if entry["fixable"] in fix else "")
         + ")"
     )
-    parts = [head, "", entry["summary"]]
-    for title, key in (("Why it matters", "why"), ("Example", "example"), ("Fix", "fix")):
+    parts = [head, "", entry["summary"]] + (["", entry["details"]] if entry["details"] else [])
+    sections = (("Why is this bad?", "why"), ("Example:", "example"),
+                (f"{entry['fix_title']}:", "fix"), ("Fix safety:", "fix_safety"),
+                ("References:", "references"))  # fmt: skip
+    for title, key in sections:
         if entry[key]:
-            body = "\n".join("    " + line for line in entry[key].split("\n"))
-            parts += ["", f"{title}:", body]
+            body = "\n".join("    " + line if line else "" for line in entry[key].split("\n"))
+            parts += ["", title, body]
     return "\n".join(parts)

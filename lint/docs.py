@@ -3,9 +3,12 @@
 
 from __future__ import annotations
 
+import re
+
 from .rules import CATEGORY_PREFIX, all_rules, rule_doc
 
 _FIXES = {"safe": "safe fix", "unsafe": "unsafe fix", "none": "no fix"}
+_URL = re.compile(r"(?<![<(])(https?://[^\s)>]+)")
 
 
 def rules_markdown() -> str:
@@ -31,7 +34,25 @@ def rules_markdown() -> str:
             doc = rule_doc(rule)
             out.append(f"\n### {code}\n\n`{rule.name}` · {rule.severity} · "
                        f"{_FIXES[rule.fixable]}\n\n{doc['summary']}\n")  # fmt: skip
-            out.append(f"\n**Why it matters.** {' '.join(doc['why'].split())}\n")
-            for title, key in (("Example", "example"), ("Fix", "fix")):
-                out.append(f"\n**{title}:**\n\n```glsl\n{doc[key]}\n```\n")
+            if doc["details"]:
+                out.append(f"\n{_prose(doc['details'])}\n")
+            out.append(f"\n**Why is this bad?** {_prose(doc['why'])}\n")
+            out.append(f"\n**Example:**\n\n```glsl\n{doc['example']}\n```\n")
+            if doc["fix_title"] == "Use instead":
+                out.append(f"\n**Use instead:**\n\n```glsl\n{doc['fix']}\n```\n")
+            else:
+                out.append(f"\n**Fix:** {_prose(doc['fix'])}\n")
+            out.append(f"\n**Fix safety:** {_prose(doc['fix_safety'])}\n")
+            out.append(f"\n**References:**\n\n{_references(doc['references'])}\n")
     return "".join(out)
+
+
+def _prose(text: str) -> str:
+    """Paragraphs of a docstring section, each on one line."""
+    return "\n\n".join(" ".join(p.split()) for p in text.split("\n\n"))
+
+
+def _references(text: str) -> str:
+    """The "- " items of a References section as a Markdown list, URLs as links."""
+    items = [" ".join(item.split()) for item in re.split(r"(?m)^- ", text) if item.strip()]
+    return "\n".join("- " + _URL.sub(r"<\1>", item) for item in items)

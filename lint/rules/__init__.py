@@ -38,8 +38,9 @@ _CODE = re.compile(r"^(C|P|N|L|PF|S)\d{3}$")
 
 class Rule:
     """Base of every rule. Subclasses set the class attributes and write `check`; the class
-    docstring is the rule's documentation, with the sections "Why it matters:", "Example:" and
-    "Fix:" after a one-sentence summary of what it finds."""
+    docstring is the rule's documentation, in ruff's sections: a first paragraph that says what
+    it finds, then "Why is this bad?", "Example:", "Use instead:" (code) or "Fix:" (prose),
+    "Fix safety:" and "References:" (see SECTIONS and rule_doc)."""
 
     code: ClassVar[str]
     name: ClassVar[str]  # kebab-case, e.g. "pow-negative-base"
@@ -81,27 +82,57 @@ def all_rules() -> dict[str, type[Rule]]:
     return dict(sorted(REGISTRY.items()))
 
 
+# The sections of a rule's docstring, after its first paragraph (what it finds) and any further
+# paragraphs on how it decides: (head as written, key in rule_doc()). A head stands alone on its
+# line, unindented, and its text is indented below it; "Use instead:" is followed by code,
+# "Fix:" by prose. Every rule has all five (a test checks).
+SECTIONS: tuple[tuple[str, str], ...] = (
+    ("Why is this bad?", "why"),
+    ("Example:", "example"),
+    ("Use instead:", "fix"),
+    ("Fix:", "fix"),
+    ("Fix safety:", "fix_safety"),
+    ("References:", "references"),
+)
+REQUIRED_SECTIONS = ("summary", "why", "example", "fix", "fix_safety", "references")
+
+
 def rule_doc(rule: type[Rule]) -> dict[str, str]:
-    """The docstring split into `summary`, `why`, `example` and `fix`."""
+    """The docstring split into `summary` (its first paragraph, on one line), `details` (any
+    further paragraphs before the first section), `why`, `example`, `fix`, `fix_title` ("Use
+    instead" when the fix is code, "Fix" when it is prose), `fix_safety` and `references`. A
+    missing section is ""."""
     text = _dedent(rule.__doc__ or "")
-    sections = {"summary": "", "why": "", "example": "", "fix": ""}
-    heads = {"why it matters:": "why", "example:": "example", "fix:": "fix"}
-    current = "summary"
+    sections = dict.fromkeys(("lead", "why", "example", "fix", "fix_safety", "references"), "")
+    heads = {head.lower(): (head, key) for head, key in SECTIONS}
+    heads["why it matters:"] = ("Why is this bad?", "why")  # the older spelling
+    current, fix_title = "lead", ""
     for line in text.split("\n"):
-        head = line.strip().lower()
-        if head in heads:
-            current = heads[head]
+        low = line.strip().lower()
+        if line[:1].isspace():  # a section's text
+            sections[current] += line + "\n"
             continue
-        for prefix, key in heads.items():
-            if head.startswith(prefix):  # "Why it matters: text on the same line"
+        for prefix, (head, key) in heads.items():
+            if low.startswith(prefix):  # a head, maybe with text on the same line
                 current = key
+                fix_title = head.rstrip(":") if key == "fix" else fix_title
                 line = line.strip()[len(prefix) :]
                 break
         sections[current] += line + "\n"
     doc = {k: _dedent(v).strip() for k, v in sections.items()}
-    doc["summary"] = " ".join(doc["summary"].split())  # one line, for listings
+    lead = doc.pop("lead").split("\n\n", 1)
+    doc["summary"] = " ".join(lead[0].split())  # one line, for listings
+    doc["details"] = lead[1].strip() if len(lead) > 1 else ""
     doc["why"] = doc["why"][:1].upper() + doc["why"][1:]
-    return doc
+    doc["fix_title"] = fix_title
+    order = ("summary", "details", "why", "example", "fix_title", "fix", "fix_safety", "references")
+    return {key: doc[key] for key in order}
+
+
+def missing_sections(rule: type[Rule]) -> list[str]:
+    """The keys of REQUIRED_SECTIONS that the rule's docstring leaves empty."""
+    doc = rule_doc(rule)
+    return [key for key in REQUIRED_SECTIONS if not doc[key]]
 
 
 def _dedent(text: str) -> str:

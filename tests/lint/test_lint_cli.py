@@ -99,7 +99,8 @@ def test_rule_explains_itself() -> None:
     result = glint("rule", "C003")
     assert result.returncode == 0
     assert result.stdout.startswith("C003 syntax-error (correctness, error)")
-    assert "Why it matters:" in result.stdout and "Example:" in result.stdout
+    for head in ("Why is this bad?", "Example:", "Use instead:", "Fix safety:", "References:"):
+        assert f"\n{head}\n" in result.stdout, head
 
 
 def test_rule_all_json_lists_every_rule_with_its_docs() -> None:
@@ -107,5 +108,6 @@ def test_rule_all_json_lists_every_rule_with_its_docs() -> None:
 
     data = json.loads(glint("rule", "--all", "--json").stdout)
     assert [r["code"] for r in data] == list(all_rules())
-    assert set(data[0]) == {"code", "name", "category", "severity", "fixable", "summary", "why",
-                            "example", "fix"}  # fmt: skip
+    assert set(data[0]) == {"code", "name", "category", "severity", "fixable", "summary", "details",
+                            "why", "example", "fix_title", "fix", "fix_safety",
+                            "references"}  # fmt: skip

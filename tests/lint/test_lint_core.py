@@ -14,7 +14,7 @@ from glint.lint.finding import Edit, Finding, Fix
 from glint.lint.fixes import apply_edits
 from glint.lint.options import Options
 from glint.lint.reporters import REPORTERS, statistics
-from glint.lint.rules import REGISTRY, all_rules, rule_doc
+from glint.lint.rules import REGISTRY, all_rules, missing_sections, rule_doc
 from glint.lint.runner import lint_bytes, lint_source
 
 BROKEN = "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0)\n}\n"  # a syntax error
@@ -27,12 +27,45 @@ def codes(findings: list[Finding]) -> list[str]:
 # --- registry ---------------------------------------------------------------------------------
 
 
-def test_every_rule_has_a_stable_code_a_name_and_the_four_doc_sections() -> None:
+def test_every_rule_has_a_stable_code_a_name_and_every_doc_section() -> None:
+    for code, rule in all_rules().items():
+        assert rule.code == code and rule.name and rule.name == rule.name.lower()
+        assert not missing_sections(rule), f"{code} lacks {missing_sections(rule)}"
+        assert rule.fixable in ("safe", "unsafe", "none")
+
+
+def test_a_rule_without_a_section_is_caught() -> None:
+    from glint.lint.rules import Rule
+
+    class NoReferences(Rule):
+        """Finds nothing.
+
+        Why is this bad?
+            It is not.
+
+        Example:
+            vec4(1.0);
+
+        Use instead:
+            vec4(1.0);
+
+        Fix safety:
+            No fix.
+        """
+
+    doc = rule_doc(NoReferences)
+    assert doc["summary"] == "Finds nothing." and doc["fix_title"] == "Use instead"
+    assert doc["example"] == doc["fix"] == "vec4(1.0);" and doc["fix_safety"] == "No fix."
+    assert missing_sections(NoReferences) == ["references"]
+
+
+def test_fix_safety_says_what_the_rule_offers() -> None:
+    opening = {"safe": "Safe", "unsafe": "Unsafe", "none": "No fix"}
     for code, rule in all_rules().items():
         doc = rule_doc(rule)
-        assert rule.code == code and rule.name and rule.name == rule.name.lower()
-        assert doc["summary"] and doc["why"] and doc["example"] and doc["fix"], code
-        assert rule.fixable in ("safe", "unsafe", "none")
+        assert doc["fix_safety"].startswith(opening[rule.fixable]), code
+        # a fix shown as code is a code block; a fix described in words is prose
+        assert doc["fix_title"] in ("Use instead", "Fix"), code
 
 
 def test_the_registry_rejects_a_code_outside_its_category() -> None:

@@ -16,17 +16,24 @@ from .. import Rule, register
 class SyntaxError_(Rule):
     """Finds GLSL that glint's parser cannot read (GLSL ES 3.00 grammar).
 
-    Why it matters: nothing else can be checked in a file that does not parse, and the driver
-    will reject it too. glslang's message for the same line (C001) is reported instead when
-    glslang runs and finds an error there, and a reserved word is left to P007.
+    Why is this bad?
+        Nothing else can be checked in a file that does not parse, and the driver will reject it
+        too. glslang's message for the same line (C001) is reported instead when glslang runs and
+        finds an error there, and a reserved word is left to P007.
 
     Example:
         float x = 1.0
         vec3 y;
 
-    Fix:
+    Use instead:
         float x = 1.0;
         vec3 y;
+
+    Fix safety:
+        No fix: what the author meant cannot be read from code that does not parse.
+
+    References:
+        - GLSL ES 3.00 spec §9 (Shading Language Grammar)
     """
 
     code = "C003"

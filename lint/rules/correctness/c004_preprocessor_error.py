@@ -13,20 +13,27 @@ from .. import Rule, register
 
 @register
 class PreprocessorProblem(Rule):
-    """Finds preprocessor errors: unknown or malformed directives, unterminated `#if`,
-    `#error`, bad macro calls.
+    """Finds preprocessor errors: unknown or malformed directives, unterminated `#if`, `#error`, bad
+    macro calls.
 
-    Why it matters: the shader is not what it looks like until the preprocessor has run, and
-    a driver stops at the first such error.
+    Why is this bad?
+        The shader is not what it looks like until the preprocessor has run, and a driver stops at
+        the first such error.
 
     Example:
         #ifdef HIGH_QUALITY
         const int STEPS = 128;
 
-    Fix:
+    Use instead:
         #ifdef HIGH_QUALITY
         const int STEPS = 128;
         #endif
+
+    Fix safety:
+        No fix: where a missing `#endif` belongs is the author's choice.
+
+    References:
+        - GLSL ES 3.00 spec §3.4 (Preprocessor)
     """
 
     code = "C004"

@@ -11,17 +11,24 @@ from .. import Rule, register
 
 @register
 class Unreadable(Rule):
-    """Finds files that are not GLSL text: binary data, bytes that are not UTF-8, or a file
-    too large to analyse (over 1 MB).
+    """Finds files that are not GLSL text: binary data, bytes that are not UTF-8, or a file too
+    large to analyse (over 1 MB).
 
-    Why it matters: a shader is text; anything else is a wrong path or a corrupted file, and
-    should be said plainly rather than reported as a thousand syntax errors.
+    Why is this bad?
+        A shader is text; anything else is a wrong path or a corrupted file, and should be said
+        plainly rather than reported as a thousand syntax errors.
 
     Example:
-        a PNG saved as shader.frag
+        // shader.frag that holds the bytes of a PNG image
 
     Fix:
-        lint the shader's source, saved as UTF-8 text.
+        Lint the shader's source, saved as UTF-8 text.
+
+    Fix safety:
+        No fix.
+
+    References:
+        - GLSL ES 3.00 spec §3.1 (Character Set)
     """
 
     code = "C005"

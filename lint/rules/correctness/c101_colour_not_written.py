@@ -39,12 +39,13 @@ def _writes_gl_fragcolor(definition: Tree) -> bool:
 
 @register
 class ColourNotWritten(Rule):
-    """Finds a mainImage that can finish without writing its `out` colour: a path through an
-    `if`, a loop that may not run, or an early `return` leaves it (or some of its components)
-    unwritten. `discard` counts as written.
+    """Finds a mainImage that can finish without writing its `out` colour: a path through an `if`, a
+    loop that may not run, or an early `return` leaves it (or some of its components) unwritten.
+    `discard` counts as written.
 
-    Why it matters: an `out` parameter starts undefined, so on that path the pixel is whatever
-    the driver leaves there: black on one GPU, garbage or the previous frame on another.
+    Why is this bad?
+        An `out` parameter starts undefined, so on that path the pixel is whatever the driver leaves
+        there: black on one GPU, garbage or the previous frame on another.
 
     Example:
         void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -52,9 +53,20 @@ class ColourNotWritten(Rule):
             fragColor = vec4(1.0);
         }
 
-    Fix:
-        write the colour before the early return, or give it a default first:
-        `fragColor = vec4(0.0, 0.0, 0.0, 1.0);`
+    Use instead:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            fragColor = vec4(0.0, 0.0, 0.0, 1.0);
+            if (fragCoord.x < 10.0) return;
+            fragColor = vec4(1.0);
+        }
+
+    Fix safety:
+        No fix: which colour the early path should write is the author's choice.
+
+    References:
+        - GLSL ES 3.00 spec §6.1.1 (Function Calling Conventions: `out` parameters are not copied
+          in) and §4.3.6 (Output Variables)
+        - ShaderToy's How To (https://www.shadertoy.com/howto): mainImage's signature
     """
 
     code = "C101"

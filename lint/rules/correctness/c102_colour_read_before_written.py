@@ -13,11 +13,12 @@ from ._data_flow import main_colour
 
 @register
 class ColourReadBeforeWritten(Rule):
-    """Finds mainImage's `out` colour read before it is written, such as
-    `fragColor.rgb *= 0.5;` or `fragColor += ...` as the first use.
+    """Finds mainImage's `out` colour read before it is written, such as `fragColor.rgb *= 0.5;` or
+    `fragColor += ...` as the first use.
 
-    Why it matters: an `out` parameter starts undefined, not as ShaderToy's black; reading
-    it gives whatever the driver leaves there, so the result differs between GPUs.
+    Why is this bad?
+        An `out` parameter starts undefined, not as ShaderToy's black; reading it gives whatever the
+        driver leaves there, so the result differs between GPUs.
 
     Example:
         void mainImage(out vec4 fragColor, in vec2 fragCoord) {
@@ -25,8 +26,19 @@ class ColourReadBeforeWritten(Rule):
             fragColor.a = 1.0;
         }
 
-    Fix:
-        assign it first: `fragColor = vec4(0.0); fragColor.rgb += vec3(0.5);`
+    Use instead:
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            fragColor = vec4(0.0);
+            fragColor.rgb += vec3(0.5);
+            fragColor.a = 1.0;
+        }
+
+    Fix safety:
+        No fix: the starting value (black, transparent, something else) is the author's choice.
+
+    References:
+        - GLSL ES 3.00 spec §6.1.1 (Function Calling Conventions: `out` parameters are not copied
+          in)
     """
 
     code = "C102"

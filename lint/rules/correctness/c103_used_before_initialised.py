@@ -13,22 +13,31 @@ from ._data_flow import main_colour
 
 @register
 class UsedBeforeInitialised(Rule):
-    """Finds a local variable read before it is given a value on some path (declared without
-    an initialiser, assigned only in one branch or in a loop that may not run), and an `out`
-    parameter read before the function writes it.
+    """Finds a local variable read before it is given a value on some path (declared without an
+    initialiser, assigned only in one branch or in a loop that may not run), and an `out` parameter
+    read before the function writes it.
 
-    Why it matters: GLSL does not zero local variables. An uninitialised value is whatever
-    the register held, so the shader looks right on one GPU and flickers on another.
+    Why is this bad?
+        GLSL does not zero local variables. An uninitialised value is whatever the register held, so
+        the shader looks right on one GPU and flickers on another.
 
     Example:
         float d;
         if (hit) d = t;
         col *= exp(-d);
 
-    Fix:
+    Use instead:
         float d = 1e10;
         if (hit) d = t;
         col *= exp(-d);
+
+    Fix safety:
+        No fix: the right initial value depends on what the variable means.
+
+    References:
+        - GLSL ES 3.00 spec §6.1.1 (Function Calling Conventions: `out` parameters are not copied
+          in)
+        - CWE-457, Use of Uninitialized Variable
     """
 
     code = "C103"

@@ -45,27 +45,36 @@ _DIFFUSE_CONTEXT = re.compile(r"diffuse|burley|disney|lambert|shirley|ashikhmin|
 
 @register
 class FresnelCosine(Rule):
-    """Finds a Fresnel term fed with N·L or N·H, where V·H belongs (for a light; L·H is the
-    same angle) or N·V (for environment light).
+    """Finds a Fresnel term fed with N·L or N·H, where V·H belongs (for a light; L·H is the same
+    angle) or N·V (for environment light).
 
-    Why it matters: Fresnel depends on the angle between the viewer and the microfacet that
-    reflects toward it, the half vector. N·L makes surfaces brighten where the light grazes
-    them instead of where the eye does, so rim reflections appear on the wrong side.
+    Fresnel terms are calls of functions named like Fresnel or Schlick (not Schlick's phase function
+    or G1), and the inline form `f0 + (1 - f0) * pow(1 - x, 5)`. Cosines are read from names: dot(N,
+    L) with the usual vector names, or precomputed NdotL, NoL, ndl, and locals holding them. Diffuse
+    models that multiply Schlick factors of N·L and N·V on purpose (Burley, Shirley) are not
+    reported: the function has a matching N·V factor or a diffuse name.
 
-    Fresnel terms are calls of functions named like Fresnel or Schlick (not Schlick's phase
-    function or G1), and the inline form `f0 + (1 - f0) * pow(1 - x, 5)`. Cosines are read
-    from names: dot(N, L) with the usual vector names, or precomputed NdotL, NoL, ndl, and
-    locals holding them. Diffuse models that multiply Schlick factors of N·L and N·V on
-    purpose (Burley, Shirley) are not reported: the function has a matching N·V factor or a
-    diffuse name.
+    Why is this bad?
+        Fresnel depends on the angle between the viewer and the microfacet that reflects toward it,
+        the half vector. N·L makes surfaces brighten where the light grazes them instead of where
+        the eye does, so rim reflections appear on the wrong side.
 
     Example:
         float NdotL = max(dot(N, L), 0.0);
         vec3 F = f0 + (1.0 - f0) * pow(1.0 - NdotL, 5.0);
 
-    Fix:
+    Use instead:
         float VdotH = max(dot(V, H), 0.0);
         vec3 F = f0 + (1.0 - f0) * pow(1.0 - VdotH, 5.0);
+
+    Fix safety:
+        No fix: the half vector may not exist yet where the term is computed.
+
+    References:
+        - Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", Computer Graphics
+          Forum 13(3), 1994
+        - Walter et al., "Microfacet Models for Refraction through Rough Surfaces", EGSR 2007
+        - Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013 course notes
     """
 
     code = "L001"

@@ -38,25 +38,36 @@ _COLOUR_TYPES = ("vec3", "vec4")
 
 @register
 class UnclampedCosine(Rule):
-    """Finds N·L or N·V that can be negative multiplied into a colour (or returned as a
-    diffuse term) without max, clamp or saturate.
+    """Finds N·L or N·V that can be negative multiplied into a colour (or returned as a diffuse
+    term) without max, clamp or saturate.
 
-    Why it matters: on the side facing away from the light the cosine is negative, and the
-    product subtracts light: other lights and ambient terms go dark or negative, and a later
-    pow or sqrt of the sum is undefined.
+    The range comes from the semantic model (a value whose interval may be negative) when it is
+    available; candidates are dot(N, L) / dot(N, V) calls and locals holding one, in a product with
+    a colour (a vec3/vec4 factor or target) or returned bare by a function named like diffuse,
+    Lambert, BRDF, shade or light. A cosine that the function compares (`if (ndl > 0.0)`) is taken
+    as guarded, and a product with a scalar constant only (half-Lambert's `dot(N, L) * 0.5 + 0.5`)
+    is not a lighting term.
 
-    The range comes from the semantic model (a value whose interval may be negative) when it
-    is available; candidates are dot(N, L) / dot(N, V) calls and locals holding one, in a
-    product with a colour (a vec3/vec4 factor or target) or returned bare by a function named
-    like diffuse, Lambert, BRDF, shade or light. A cosine that the function compares
-    (`if (ndl > 0.0)`) is taken as guarded, and a product with a scalar constant only
-    (half-Lambert's `dot(N, L) * 0.5 + 0.5`) is not a lighting term.
+    Why is this bad?
+        On the side facing away from the light the cosine is negative, and the product subtracts
+        light: other lights and ambient terms go dark or negative, and a later pow or sqrt of the
+        sum is undefined.
 
     Example:
         vec3 col = albedo * dot(N, L);
 
-    Fix:
+    Use instead:
         vec3 col = albedo * max(dot(N, L), 0.0);
+
+    Fix safety:
+        Unsafe: the inserted max(..., 0.0) changes every pixel where the cosine was negative, which
+        is the point, but also code that relied on the negative part on purpose (a signed term that
+        a later step folds back).
+
+    References:
+        - Akenine-Möller et al., Real-Time Rendering, 4th ed., 2018, ch. 9 (the clamped cosine
+          (n·l)⁺)
+        - Lambert's cosine law
     """
 
     code = "L002"

@@ -84,24 +84,33 @@ class RoughnessSquaring(Rule):
     """Finds roughness squared twice, or not at all, on the way into a GGX or Smith term: the
     argument holds a different power of roughness than the parameter's name says.
 
-    Why it matters: GGX and Smith take α = roughness² (Burley's remapping). Passing α where
-    the function squares again gives α² (surfaces look much glossier than the roughness
-    slider says); passing perceptual roughness where α is expected makes everything rougher.
+    What is decided statically: the callee is a function of the file named like a distribution or
+    visibility term (GGX, Smith, Beckmann, D_, V_, G_, G1, distribution, visibility); its parameter
+    says what it expects by name (roughness/perceptualRoughness: roughness; alpha/a/linearRoughness:
+    α; a2/alpha2/alphaSq: α²); the argument's power of roughness is known from names and products
+    (`r * r` with r = roughness is α, `a * a` with a = α is α²). Anything else (`k`, `m`, arbitrary
+    expressions) is not judged.
 
-    What is decided statically: the callee is a function of the file named like a
-    distribution or visibility term (GGX, Smith, Beckmann, D_, V_, G_, G1, distribution,
-    visibility); its parameter says what it expects by name (roughness/perceptualRoughness:
-    roughness; alpha/a/linearRoughness: α; a2/alpha2/alphaSq: α²); the argument's power of
-    roughness is known from names and products (`r * r` with r = roughness is α, `a * a` with
-    a = α is α²). Anything else (`k`, `m`, arbitrary expressions) is not judged.
+    Why is this bad?
+        GGX and Smith take α = roughness² (Burley's remapping). Passing α where the function squares
+        again gives α² (surfaces look much glossier than the roughness slider says); passing
+        perceptual roughness where α is expected makes everything rougher.
 
     Example:
         float a = roughness * roughness;
         float D = D_GGX(NoH, a * a);  // D_GGX(float NoH, float a) squares a itself
 
-    Fix:
+    Use instead:
         float a = roughness * roughness;
         float D = D_GGX(NoH, a);
+
+    Fix safety:
+        No fix: whether the call or the callee's name is wrong is the author's choice.
+
+    References:
+        - Burley, "Physically-Based Shading at Disney", SIGGRAPH 2012 course notes (α = roughness²)
+        - Walter et al., "Microfacet Models for Refraction through Rough Surfaces", EGSR 2007
+        - Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013 course notes
     """
 
     code = "L003"

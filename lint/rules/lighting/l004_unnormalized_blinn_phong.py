@@ -42,26 +42,34 @@ def _has_pbr(ctx: LintContext) -> bool:
 
 @register
 class UnnormalizedBlinnPhong(Rule):
-    """Finds an unnormalized Blinn-Phong lobe, pow(N·H, n) without its (n + 8)/(8π) or
-    (n + 2)/(2π) factor, in a shader that also has physically based terms (Fresnel, GGX,
-    Smith, Cook-Torrance).
+    """Finds an unnormalized Blinn-Phong lobe, pow(N·H, n) without its (n + 8)/(8π) or (n + 2)/(2π)
+    factor, in a shader that also has physically based terms (Fresnel, GGX, Smith, Cook-Torrance).
 
-    Why it matters: the peak of pow(N·H, n) is 1 whatever n is, so the energy it reflects
-    falls as the lobe narrows: next to energy-conserving GGX or Fresnel-weighted terms,
-    glossy surfaces come out too dark and rough ones too bright. On its own, tuned by eye,
-    Blinn-Phong is fine and is not reported.
+    The lobe is pow(x, n) with x a known N·H (names and dot(N, H)) and n not 5 (that is a Fresnel
+    shape); it counts as normalized when `n + 8`, `n + 2` (or + 1, 4, 6) appears anywhere in the
+    shader, or a name like normFactor multiplies it in the same function.
 
-    The lobe is pow(x, n) with x a known N·H (names and dot(N, H)) and n not 5 (that is a
-    Fresnel shape); it counts as normalized when `n + 8`, `n + 2` (or + 1, 4, 6) appears
-    anywhere in the shader, or a name like normFactor multiplies it in the same function.
+    Why is this bad?
+        The peak of pow(N·H, n) is 1 whatever n is, so the energy it reflects falls as the lobe
+        narrows: next to energy-conserving GGX or Fresnel-weighted terms, glossy surfaces come out
+        too dark and rough ones too bright. On its own, tuned by eye, Blinn-Phong is fine and is not
+        reported.
 
     Example:
         float spec = pow(NoH, shininess);
         vec3 col = F * spec;
 
-    Fix:
+    Use instead:
         float spec = (shininess + 8.0) / (8.0 * PI) * pow(NoH, shininess);
         vec3 col = F * spec;
+
+    Fix safety:
+        No fix: normalizing changes the brightness the author tuned by eye.
+
+    References:
+        - Akenine-Möller, Haines, Hoffman, Real-Time Rendering, 3rd ed., 2008, §7.6 (the (m +
+          8)/(8π) factor)
+        - Giesen, "Derivation of Phong and Blinn-Phong BRDF normalization factors", 2009
     """
 
     code = "L004"

@@ -20,21 +20,28 @@ from ._terms import (
 class DoubleGamma(Rule):
     """Finds a display encoding (gamma or sRGB) applied to colour that is already encoded.
 
-    Why it matters: encoding twice is gamma 4.84 instead of 2.2: the image looks washed out
-    and flat, with lifted blacks. It typically happens when a helper encodes and mainImage
-    encodes again.
+    Traced in source order through mainImage: a variable assigned an encoded value stays encoded
+    while it is reassigned from itself; encoding it again (directly, or through a function whose
+    result is an encoded value) is reported, as is an encoding nested in another anywhere. Branches
+    are not told apart.
 
-    Traced in source order through mainImage: a variable assigned an encoded value stays
-    encoded while it is reassigned from itself; encoding it again (directly, or through a
-    function whose result is an encoded value) is reported, as is an encoding nested in
-    another anywhere. Branches are not told apart.
+    Why is this bad?
+        Encoding twice is gamma 4.84 instead of 2.2: the image looks washed out and flat, with
+        lifted blacks. It typically happens when a helper encodes and mainImage encodes again.
 
     Example:
         col = pow(col, vec3(0.4545));
         fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
 
-    Fix:
+    Use instead:
         fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
+
+    Fix safety:
+        No fix: which of the two encodings to keep is the author's choice.
+
+    References:
+        - IEC 61966-2-1:1999, the sRGB colour space
+        - Gritz and d'Eon, "The Importance of Being Linear", GPU Gems 3, ch. 24, 2007
     """
 
     code = "L006"

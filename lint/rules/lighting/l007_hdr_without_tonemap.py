@@ -98,28 +98,35 @@ def _bound(node: Node, fn: Function, names: dict[str, float], depth: int = 6) ->
 class HdrWithoutTonemap(Rule):
     """Finds lighting that can exceed 1 written to the output without a tone map.
 
-    Why it matters: the display clips each channel at 1, so bright highlights and sums of
-    lights lose their hue (a saturated orange light clips to yellow, then white) and detail
-    flattens. A tone map (x / (1 + x), an ACES fit, 1 − exp(−x)) rolls highlights off.
+    Evidence that values exceed 1, in a lit shader: a light term (a product with N·L, N·H or N·V, or
+    a pow lobe) whose bound is above 1, or two or more light terms summed in one function whose
+    bounds add up to more than 1. The bound is the semantic model's when it is finite; otherwise the
+    product of the term's constants (an intensity such as `2.0 * sunColor`, `vec3(1.3, 1.0, 0.7)`,
+    divided by the constant divisors such as π), with cosines, lobes and values the code does not
+    spell out taken as at most 1. A clamp (clamp(col, 0.0, 1.0) or min(col, 1.0)) is not a tone map,
+    but it shows that the author chose to clip, so it is not reported either; this rule is for code
+    that never considered the range.
 
-    Evidence that values exceed 1, in a lit shader: a light term (a product with N·L, N·H or
-    N·V, or a pow lobe) whose bound is above 1, or two or more light terms summed in one
-    function whose bounds add up to more than 1. The bound is the semantic model's when it is
-    finite; otherwise the product of the term's constants (an intensity such as `2.0 *
-    sunColor`, `vec3(1.3, 1.0, 0.7)`, divided by the constant divisors such as π), with
-    cosines, lobes and values the code does not spell out taken as at most 1.
-    Decision on clamp: clamp(col, 0.0, 1.0) or min(col, 1.0) is not a tone map, but it shows
-    that the author chose to clip, so it is not reported either; this rule is for code that
-    never considered the range.
+    Why is this bad?
+        The display clips each channel at 1, so bright highlights and sums of lights lose their hue
+        (a saturated orange light clips to yellow, then white) and detail flattens. A tone map (x /
+        (1 + x), an ACES fit, 1 − exp(−x)) rolls highlights off.
 
     Example:
         col = 2.0 * albedo * max(dot(n, l), 0.0) + spec;
         fragColor = vec4(pow(col, vec3(0.4545)), 1.0);
 
-    Fix:
+    Use instead:
         col = 2.0 * albedo * max(dot(n, l), 0.0) + spec;
         col = col / (1.0 + col);
         fragColor = vec4(pow(col, vec3(0.4545)), 1.0);
+
+    Fix safety:
+        No fix: the choice of tone map, and of exposure, is the author's.
+
+    References:
+        - Reinhard et al., "Photographic Tone Reproduction for Digital Images", SIGGRAPH 2002
+        - Narkowicz, "ACES Filmic Tone Mapping Curve", 2016
     """
 
     code = "L007"

@@ -47,28 +47,37 @@ _METAL_NAME = re.compile(r"metal(lic|ness)?", re.I)
 
 @register
 class EnergyNotSplit(Rule):
-    """Finds a diffuse term added to a Fresnel-weighted specular term without being scaled by
-    what the Fresnel term does not reflect, (1 − F), or by (1 − metallic).
+    """Finds a diffuse term added to a Fresnel-weighted specular term without being scaled by what
+    the Fresnel term does not reflect, (1 − F), or by (1 − metallic).
 
-    Why it matters: light reflected at the surface (F) is not available to scatter inside it.
-    Adding full diffuse to Fresnel specular reflects more than arrives at grazing angles, and
-    a metal (which has no diffuse) keeps a coloured diffuse glow.
+    Decided per sum, `diffuse + specular` in one expression (including locals it reads): the
+    specular side contains a Fresnel call or the inline Schlick form, the diffuse side is named like
+    diffuse, Lambert, albedo or base colour, or is a product with N·L and no specular lobe; the
+    split is any factor `1 - x` with x Fresnel or metallic, a kD factor, or an already split colour
+    (diffuseColor, cdiff), also inside the diffuse function it calls. Sums built by separate `+=`
+    statements are not followed.
 
-    Decided per sum, `diffuse + specular` in one expression (including locals it reads):
-    the specular side contains a Fresnel call or the inline Schlick form, the diffuse side is
-    named like diffuse, Lambert, albedo or base colour, or is a product with N·L and no
-    specular lobe; the split is any factor `1 - x` with x
-    Fresnel or metallic, a kD factor, or an already split colour (diffuseColor, cdiff), also
-    inside the diffuse function it calls. Sums built by separate `+=` statements are not
-    followed.
+    Why is this bad?
+        Light reflected at the surface (F) is not available to scatter inside it. Adding full
+        diffuse to Fresnel specular reflects more than arrives at grazing angles, and a metal (which
+        has no diffuse) keeps a coloured diffuse glow.
 
     Example:
         vec3 F = fresnelSchlick(f0, VoH);
         vec3 col = albedo / PI * NoL + F * D * Vis * NoL;
 
-    Fix:
+    Use instead:
         vec3 F = fresnelSchlick(f0, VoH);
         vec3 col = (1.0 - F) * (1.0 - metallic) * albedo / PI * NoL + F * D * Vis * NoL;
+
+    Fix safety:
+        No fix: whether to scale by (1 − F), (1 − metallic) or both depends on the material model.
+
+    References:
+        - Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013 course notes (diffuse colour =
+          base colour × (1 − metallic))
+        - Kelemen and Szirmay-Kalos, "A Microfacet Based Coupled Specular-Matte BRDF Model with
+          Importance Sampling", Eurographics 2001
     """
 
     code = "L008"

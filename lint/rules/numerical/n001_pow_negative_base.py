@@ -23,15 +23,25 @@ from ._common import (
 class PowNegativeBase(NumericalRule):
     """Finds `pow(x, y)` whose base may be negative, such as an unclamped dot product.
 
-    Why it matters: GLSL leaves pow undefined for x < 0; GPUs return NaN or garbage there, and
-    one NaN in a specular term turns the pixel black or spreads through a blur. N·H is negative
-    on every surface facing away from the half vector.
+    Why is this bad?
+        GLSL leaves pow undefined for x < 0; GPUs return NaN or garbage there, and one NaN in a
+        specular term turns the pixel black or spreads through a blur. N·H is negative on every
+        surface facing away from the half vector.
 
     Example:
         float spec = pow(dot(N, H), shininess);
 
-    Fix:
+    Use instead:
         float spec = pow(max(dot(N, H), 0.0), shininess);
+
+    Fix safety:
+        Unsafe: clamping the base at 0 changes the result wherever it was negative; that was
+        undefined before, but the author may have meant abs(x) or a sign-preserving power.
+
+    References:
+        - GLSL ES 3.00 spec §8.2 (Exponential Functions): pow is undefined for x < 0, and for x = 0
+          with y <= 0
+        - Khronos reference page: https://registry.khronos.org/OpenGL-Refpages/es3/html/pow.xhtml
     """
 
     code = "N001"

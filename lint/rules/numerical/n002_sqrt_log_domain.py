@@ -25,19 +25,28 @@ LOG_FLOOR = "1e-6"  # log(0) is -inf, so the floor for log must be above zero
 
 @register
 class SqrtLogDomain(NumericalRule):
-    """Finds `sqrt` or `inversesqrt` of a value that may be negative, and `log`/`log2` of a
-    value that may be zero or negative.
+    """Finds `sqrt` or `inversesqrt` of a value that may be negative, and `log`/`log2` of a value
+    that may be zero or negative.
 
-    Why it matters: outside their domain these are undefined in GLSL and give NaN (or -inf
-    for log(0)) on real GPUs; `1.0 - x * x` goes slightly negative by rounding even when x is
-    a cosine, and a dot product is negative half the time.
+    Why is this bad?
+        Outside their domain these are undefined in GLSL and give NaN (or -inf for log(0)) on real
+        GPUs; `1.0 - x * x` goes slightly negative by rounding even when x is a cosine, and a dot
+        product is negative half the time.
 
     Example:
-        float s = sqrt(1.0 - dot(N, L));   // fine only while dot(N, L) <= 1
         float d = sqrt(dot(N, L));
 
-    Fix:
+    Use instead:
         float d = sqrt(max(dot(N, L), 0.0));
+
+    Fix safety:
+        Unsafe: the inserted floor (0.0 for sqrt, 1e-6 for log) changes the result wherever the
+        argument was below it, and a value far below zero usually means a bug elsewhere.
+
+    References:
+        - GLSL ES 3.00 spec §8.2 (Exponential Functions): sqrt undefined for x < 0, inversesqrt for
+          x <= 0, log and log2 for x <= 0
+        - Khronos reference pages: sqrt, inversesqrt, log, log2
     """
 
     code = "N002"

@@ -19,19 +19,28 @@ def reaches_above(r: Interval, c: float) -> bool:
 
 @register
 class AcosAsinDomain(NumericalRule):
-    """Finds `acos`/`asin` of a value that may leave [-1, 1], including an unclamped dot product
-    of unit vectors.
+    """Finds `acos`/`asin` of a value that may leave [-1, 1], including an unclamped dot product of
+    unit vectors.
 
-    Why it matters: acos and asin are undefined outside [-1, 1] and give NaN there. The dot
-    product of two normalized vectors is mathematically within [-1, 1] but rounds to
-    1.0000001 for nearly parallel vectors, and the angle becomes NaN exactly where the
-    vectors align.
+    Why is this bad?
+        acos and asin are undefined outside [-1, 1] and give NaN there. The dot product of two
+        normalized vectors is mathematically within [-1, 1] but rounds to 1.0000001 for nearly
+        parallel vectors, and the angle becomes NaN exactly where the vectors align.
 
     Example:
         float angle = acos(dot(a, b));
 
-    Fix:
+    Use instead:
         float angle = acos(clamp(dot(a, b), -1.0, 1.0));
+
+    Fix safety:
+        Unsafe: the clamp changes the result wherever the argument was outside [-1, 1]; for a
+        rounding error that is the intent, for a value far outside it hides a bug.
+
+    References:
+        - GLSL ES 3.00 spec §8.1 (Angle and Trigonometry Functions): asin and acos are undefined for
+          |x| > 1
+        - Khronos reference pages: acos, asin
     """
 
     code = "N003"

@@ -16,15 +16,22 @@ from ._common import NumericalRule, builtin_calls, text
 class TanPole(NumericalRule):
     """Finds `tan(x)` where the range of x reaches a pole, π/2 + kπ.
 
-    Why it matters: tan grows without bound near its poles and flips sign across them; a
-    field of view or an animated angle that reaches π/2 gives infinities and a picture that
-    tears or goes black.
+    Why is this bad?
+        tan grows without bound near its poles and flips sign across them; a field of view or an
+        animated angle that reaches π/2 gives infinities and a picture that tears or goes black.
 
     Example:
         float k = tan(iTime);
 
-    Fix:
+    Use instead:
         float k = tan(clamp(angle, -1.5, 1.5));   // keep away from ±π/2
+
+    Fix safety:
+        No fix: the range the angle should stay in is the author's choice.
+
+    References:
+        - GLSL ES 3.00 spec §8.1 (Angle and Trigonometry Functions)
+        - Khronos reference page: https://registry.khronos.org/OpenGL-Refpages/es3/html/tan.xhtml
     """
 
     code = "N004"

@@ -18,19 +18,28 @@ EPSILON = "1e-4"  # the divisor floor N005's fix inserts
 
 @register
 class DivisionByZero(NumericalRule):
-    """Finds a division by a value that can be zero: a dot product, a length or distance, a
-    square, a clamped value that reaches 0, a constant 0, without an epsilon.
+    """Finds a division by a value that can be zero: a dot product, a length or distance, a square,
+    a clamped value that reaches 0, a constant 0, without an epsilon.
 
-    Why it matters: x / 0 is infinity (0 / 0 is NaN), which survives tone mapping as a white
-    or black pixel and poisons everything it is mixed with. A length is 0 at the origin, N·L
-    is 0 at the terminator and negative beyond it.
+    Why is this bad?
+        x / 0 is infinity (0 / 0 is NaN), which survives tone mapping as a white or black pixel and
+        poisons everything it is mixed with. A length is 0 at the origin, N·L is 0 at the terminator
+        and negative beyond it.
 
     Example:
         float atten = 1.0 / dot(d, d);
-        vec3 dir = p / length(p);
 
-    Fix:
+    Use instead:
         float atten = 1.0 / max(dot(d, d), 1e-4);
+
+    Fix safety:
+        Unsafe: the floor (1e-4) changes the result wherever the divisor was below it, not only at
+        zero. It is offered only for float divisors that are never negative, where a floor keeps the
+        sign.
+
+    References:
+        - GLSL ES 3.00 spec §4.5.1 (Range and Precision)
+        - IEEE 754: x / 0 is ±infinity, 0 / 0 is NaN
     """
 
     code = "N005"

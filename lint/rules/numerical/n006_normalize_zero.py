@@ -15,20 +15,30 @@ from ._common import NumericalRule, builtin_calls, text
 
 @register
 class NormalizeZero(NumericalRule):
-    """Finds `normalize(v)` of a vector that may be zero: the sum or difference of two unit
-    vectors (V + L), a cross product of two computed vectors, a constant zero vector.
+    """Finds `normalize(v)` of a vector that may be zero: the sum or difference of two unit vectors
+    (V + L), a cross product of two computed vectors, a constant zero vector.
 
-    Why it matters: normalize(0) divides by zero and gives NaN. V + L is zero when the light
-    is straight behind the surface seen from the viewer; a cross product is zero when its two
-    vectors are parallel. (A cross product with a constant axis, the world-up of a look-at
-    camera, is not reported: it degenerates only along that one chosen direction.)
+    A cross product with a constant axis, the world-up of a look-at camera, is not reported: it
+    degenerates only along that one chosen direction.
+
+    Why is this bad?
+        normalize(0) divides by zero and gives NaN. V + L is zero when the light is straight behind
+        the surface seen from the viewer; a cross product is zero when its two vectors are parallel.
 
     Example:
         vec3 H = normalize(V + L);
 
-    Fix:
+    Use instead:
         vec3 h = V + L;
         vec3 H = h * inversesqrt(max(dot(h, h), 1e-8));
+
+    Fix safety:
+        No fix: the guard needs a temporary, and what a zero vector should become (any unit vector,
+        the normal) is the author's choice.
+
+    References:
+        - GLSL ES 3.00 spec §8.5 (Geometric Functions): normalize(x) is x / length(x)
+        - Khronos reference page: normalize
     """
 
     code = "N006"

@@ -16,16 +16,24 @@ from ._common import NumericalRule, builtin_calls, reaches_zero, text
 class ModAtanZero(NumericalRule):
     """Finds `mod(x, 0)` and `atan(y, x)` whose two arguments may both be zero.
 
-    Why it matters: mod(x, 0) divides by zero and atan(0, 0) is undefined in GLSL; both give
-    NaN or an arbitrary value that differs between GPUs. Polar coordinates of the origin are
-    the usual way to reach atan(0, 0).
+    Why is this bad?
+        mod(x, 0) divides by zero and atan(0, 0) is undefined in GLSL; both give NaN or an arbitrary
+        value that differs between GPUs. Polar coordinates of the origin are the usual way to reach
+        atan(0, 0).
 
     Example:
-        float a = atan(0.0, 0.0);
         float m = mod(x, 0.0);
 
-    Fix:
+    Use instead:
         float m = mod(x, period);   // with period > 0
+
+    Fix safety:
+        No fix.
+
+    References:
+        - GLSL ES 3.00 spec §8.1 (atan(y, x) is undefined when x and y are both 0) and §8.3 (Common
+          Functions: mod(x, y) is x - y * floor(x / y))
+        - Khronos reference pages: atan, mod
     """
 
     code = "N007"

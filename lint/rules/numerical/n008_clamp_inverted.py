@@ -15,15 +15,23 @@ from ._common import NumericalRule, builtin_calls, text
 class ClampInverted(NumericalRule):
     """Finds `clamp(x, lo, hi)` whose bounds are constants with lo > hi.
 
-    Why it matters: GLSL leaves clamp undefined when minVal > maxVal; GPUs compute
-    min(max(x, lo), hi), which is the constant hi whatever x is. The bounds were almost
-    certainly written the wrong way round.
+    Why is this bad?
+        GLSL leaves clamp undefined when minVal > maxVal; GPUs compute min(max(x, lo), hi), which is
+        the constant hi whatever x is. The bounds were almost certainly written the wrong way round.
 
     Example:
         float v = clamp(x, 1.0, 0.0);
 
-    Fix:
+    Use instead:
         float v = clamp(x, 0.0, 1.0);
+
+    Fix safety:
+        No fix: swapping the bounds changes the result from a constant to x, which is almost
+        certainly meant but is a change of value.
+
+    References:
+        - GLSL ES 3.00 spec §8.3 (Common Functions): clamp is undefined if minVal > maxVal
+        - Khronos reference page: https://registry.khronos.org/OpenGL-Refpages/es3/html/clamp.xhtml
     """
 
     code = "N008"

@@ -15,15 +15,26 @@ from ._common import NumericalRule, builtin_calls, text
 class SmoothstepInverted(NumericalRule):
     """Finds `smoothstep(e0, e1, x)` whose edges are constants with e0 >= e1.
 
-    Why it matters: GLSL leaves smoothstep undefined when edge0 >= edge1. Most GPUs evaluate
-    the usual formula and give a reversed ramp, but not all, and e0 == e1 divides by zero.
-    A reversed ramp is written 1.0 - smoothstep(e1, e0, x).
+    Why is this bad?
+        GLSL leaves smoothstep undefined when edge0 >= edge1. Most GPUs evaluate the usual formula
+        and give a reversed ramp, but not all, and e0 == e1 divides by zero. A reversed ramp is
+        written 1.0 - smoothstep(e1, e0, x).
 
     Example:
         float fade = smoothstep(1.0, 0.0, d);
 
-    Fix:
+    Use instead:
         float fade = 1.0 - smoothstep(0.0, 1.0, d);
+
+    Fix safety:
+        Safe: for edges strictly reversed, 1.0 - smoothstep(e1, e0, x) is the same curve the usual
+        formula gives (the Hermite ramp is symmetric: s(1 - t) = 1 - s(t)), now defined. Equal edges
+        have no such rewrite and are not fixed.
+
+    References:
+        - GLSL ES 3.00 spec §8.3 (Common Functions): smoothstep is undefined if edge0 >= edge1
+        - Khronos reference page:
+          https://registry.khronos.org/OpenGL-Refpages/es3/html/smoothstep.xhtml
     """
 
     code = "N009"

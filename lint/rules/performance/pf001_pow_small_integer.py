@@ -19,25 +19,31 @@ from ._common import needs_parens
 
 @register
 class PowSmallInteger(Rule):
-    """Finds `pow(x, 2.0)` to `pow(x, 5.0)` of a plain variable or swizzle, where a few
-    multiplies say the same thing.
+    """Finds `pow(x, 2.0)` to `pow(x, 5.0)` of a plain variable or swizzle, where a few multiplies
+    say the same thing.
 
-    Why it matters: pow is exp2(y·log2(x)) on most GPUs, two transcendental operations and a
-    multiply, and less accurate than x·x. Many drivers rewrite small constant exponents
-    themselves, but not all (and not at every precision), so spelling out the product is never
-    slower. Only plain variables and swizzles are reported, where the product repeats no work
-    and no side effect: `pow(clamp(1.0 - c, 0.0, 1.0), 5.0)` would need a temporary of a type
-    the fix cannot always name, so it is left alone.
+    Only plain variables and swizzles are reported, where the product repeats no work and no side
+    effect: `pow(clamp(1.0 - c, 0.0, 1.0), 5.0)` would need a temporary of a type the fix cannot
+    always name, so it is left alone.
 
-    The fix is safe: for x ≥ 0 the product is the same value (more exact); for x < 0, pow is
-    undefined in GLSL while the product is defined, so only code that was already wrong can
-    change.
+    Why is this bad?
+        pow is exp2(y·log2(x)) on most GPUs, two transcendental operations and a multiply, and less
+        accurate than x·x. Many drivers rewrite small constant exponents themselves, but not all
+        (and not at every precision), so spelling out the product is never slower.
 
     Example:
         float spec = pow(NoH, 2.0) * k;
 
-    Fix:
+    Use instead:
         float spec = NoH * NoH * k;
+
+    Fix safety:
+        Safe: for x ≥ 0 the product is the same value (more exact); for x < 0, pow is undefined in
+        GLSL while the product is defined, so only code that was already wrong can change.
+
+    References:
+        - GLSL ES 3.00 spec §8.2 (Exponential Functions)
+        - Khronos reference page: https://registry.khronos.org/OpenGL-Refpages/es3/html/pow.xhtml
     """
 
     code = "PF001"

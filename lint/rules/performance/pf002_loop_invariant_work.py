@@ -100,19 +100,20 @@ def _local_consts(fn: Function) -> set[str]:
 
 @register
 class LoopInvariant(Rule):
-    """Finds expensive work inside a loop that gives the same value on every iteration: a call
-    to normalize, length, a trigonometric or exponential function or a texture fetch whose
-    inputs are not changed by the loop.
+    """Finds expensive work inside a loop that gives the same value on every iteration: a call to
+    normalize, length, a trigonometric or exponential function or a texture fetch whose inputs are
+    not changed by the loop.
 
-    Why it matters: a raymarch or shadow loop runs up to hundreds of times per pixel; a
-    normalize or texture fetch of loop-invariant inputs is paid on every step. Compilers hoist
-    some of it, but not across a `break` or through a texture fetch.
+    What counts as invariant: every variable the expression reads is neither written in the loop
+    (assignment, ++/--, an out argument), nor declared inside it, nor a global that any function
+    writes. Calls of the shader's own functions are never counted (they may be expensive, but
+    proving them pure is out of scope), and expressions of constants only are left to the compiler,
+    which folds them.
 
-    What counts as invariant: every variable the expression reads is neither written in the
-    loop (assignment, ++/--, an out argument), nor declared inside it, nor a global that any
-    function writes. Calls of the shader's own functions are never counted (they may be
-    expensive, but proving them pure is out of scope), and expressions of constants only are
-    left to the compiler, which folds them.
+    Why is this bad?
+        A raymarch or shadow loop runs up to hundreds of times per pixel; a normalize or texture
+        fetch of loop-invariant inputs is paid on every step. Compilers hoist some of it, but not
+        across a `break` or through a texture fetch.
 
     Example:
         for (int i = 0; i < 64; i++) {
@@ -121,9 +122,17 @@ class LoopInvariant(Rule):
             t += h;
         }
 
-    Fix:
+    Use instead:
         float dist = length(lightPos - ro);
         for (int i = 0; i < 64; i++) { ... res = min(res, h / t * dist); ... }
+
+    Fix safety:
+        No fix: the hoisted value needs a name and a type, and the loop may be inside an expression
+        the fix cannot move code out of.
+
+    References:
+        - Muchnick, Advanced Compiler Design and Implementation, 1997, §13.2 (Loop-Invariant Code
+          Motion)
     """
 
     code = "PF002"

@@ -70,20 +70,27 @@ class RedundantNormalize(Rule):
     """Finds normalize() of a vector that is already unit length: normalize(normalize(x)), a
     variable whose only value came from normalize, a reflect of unit vectors.
 
-    Why it matters: normalize is a dot product, an inverse square root and a multiply; doing
-    it twice is waste, and usually a sign that the code is unsure where its vectors are
-    normalized. Only vectors that are unit by construction are reported, never parameters
-    (whose callers may pass anything).
+    Only vectors that are unit by construction are reported, never parameters (whose callers may
+    pass anything).
 
-    The fix is safe: renormalizing a unit vector changes it by rounding only.
+    Why is this bad?
+        normalize is a dot product, an inverse square root and a multiply; doing it twice is waste,
+        and usually a sign that the code is unsure where its vectors are normalized.
 
     Example:
         vec3 rd = normalize(dir);
         vec3 r = normalize(rd);
 
-    Fix:
+    Use instead:
         vec3 rd = normalize(dir);
         vec3 r = rd;
+
+    Fix safety:
+        Safe: renormalizing a unit vector changes it by rounding only.
+
+    References:
+        - GLSL ES 3.00 spec §8.5 (Geometric Functions: normalize, reflect)
+        - Khronos reference pages: normalize, reflect (unit I and N give a unit result)
     """
 
     code = "PF003"

@@ -15,24 +15,29 @@ from ._common import function_prototypes, signature_problem
 
 @register
 class MainImageSignature(Rule):
-    """Finds an Image-tab shader whose entry point is not
-    `void mainImage(out vec4 fragColor, in vec2 fragCoord)` (names are free, `in` optional):
-    a wrong parameter list or return type, or no mainImage in code that writes the pixel
-    through `gl_FragColor`/`gl_FragCoord`.
+    """Finds an Image-tab shader whose entry point is not `void mainImage(out vec4 fragColor, in
+    vec2 fragCoord)` (names are free, `in` optional): a wrong parameter list or return type, or no
+    mainImage in code that writes the pixel through `gl_FragColor`/`gl_FragCoord`.
 
-    A file without mainImage that uses neither is taken for library code (a Common tab, a
-    file of helpers) and not reported, and one that defines `main` or opens with `#version`
-    is a complete shader, which needs no mainImage.
+    A file without mainImage that uses neither is taken for library code (a Common tab, a file of
+    helpers) and not reported, and one that defines `main` or opens with `#version` is a complete
+    shader, which needs no mainImage.
 
-    Why it matters: ShaderToy appends a `main` that calls mainImage with exactly these
-    arguments; any other signature fails to compile there with an error in code you did not
-    write.
+    Why is this bad?
+        ShaderToy appends a `main` that calls mainImage with exactly these arguments; any other
+        signature fails to compile there with an error in code you did not write.
 
     Example:
         void mainImage(out vec3 color, vec2 uv) { color = vec3(uv, 0.0); }
 
-    Fix:
+    Use instead:
         void mainImage(out vec4 fragColor, in vec2 fragCoord) { ... }
+
+    Fix safety:
+        No fix: the body has to change with the signature.
+
+    References:
+        - ShaderToy's How To (https://www.shadertoy.com/howto): the mainImage signature
     """
 
     code = "P001"

@@ -34,19 +34,27 @@ def _main_image_out(ctx: LintContext) -> tuple[Tree, str] | None:
 class FragColor(Rule):
     """Finds `gl_FragColor` and `gl_FragData`, which GLSL ES 3.00 removed.
 
-    Why it matters: ShaderToy compiles GLSL ES 3.00, where these names are undeclared; the
-    colour goes out through mainImage's `out vec4` parameter instead.
+    Why is this bad?
+        ShaderToy compiles GLSL ES 3.00, where these names are undeclared; the colour goes out
+        through mainImage's `out vec4` parameter instead.
 
     Example:
         void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             gl_FragColor = vec4(1.0);
         }
 
-    Fix:
+    Use instead:
         void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             fragColor = vec4(1.0);
         }
-        (`--fix` does this inside mainImage, where the parameter's name is known.)
+
+    Fix safety:
+        Safe: inside mainImage, where the parameter's name is known, the write goes to the same
+        output. Uses outside mainImage are not fixed.
+
+    References:
+        - GLSL ES 3.00 spec §4.3.6 (Output Variables) and §7.2 (Fragment Shader Special Variables,
+          which no longer list gl_FragColor)
     """
 
     code = "P002"

@@ -34,15 +34,25 @@ class Es1Texture(Rule):
     """Finds the GLSL ES 1.00 texture functions (`texture2D`, `textureCube`, `texture2DLod`,
     `texture2DProj`, their EXT variants), which GLSL ES 3.00 removed.
 
-    Why it matters: ES 3.00 has one overloaded `texture()` (and `textureLod`, `textureProj`,
-    `textureGrad`) for every sampler type; the old names are undeclared and the shader fails
-    to compile on ShaderToy and in WebGL 2.
+    Why is this bad?
+        ES 3.00 has one overloaded `texture()` (and `textureLod`, `textureProj`, `textureGrad`) for
+        every sampler type; the old names are undeclared and the shader fails to compile on
+        ShaderToy and in WebGL 2.
 
     Example:
         vec4 c = texture2D(iChannel0, uv);
 
-    Fix:
-        vec4 c = texture(iChannel0, uv);   (`--fix` renames them)
+    Use instead:
+        vec4 c = texture(iChannel0, uv);
+
+    Fix safety:
+        Safe: each renamed function is the ES 3.00 overload with the same arguments and result. A
+        file that defines a function of the old name itself is not renamed.
+
+    References:
+        - GLSL ES 3.00 spec §8.8 (Texture Lookup Functions)
+        - Khronos reference page:
+          https://registry.khronos.org/OpenGL-Refpages/es3/html/texture.xhtml
     """
 
     code = "P003"

@@ -14,20 +14,29 @@ from ._common import declares_name, defined_names
 
 @register
 class OldShadertoyUniform(Rule):
-    """Finds ShaderToy uniforms under their old names (`iGlobalTime`, renamed `iTime` in
-    2017) and `iChannelResolution` used without an index.
+    """Finds ShaderToy uniforms under their old names (`iGlobalTime`, renamed `iTime` in 2017) and
+    `iChannelResolution` used without an index.
 
-    Why it matters: ShaderToy no longer declares `iGlobalTime`, so old shaders pasted in fail
-    with "undeclared identifier". `iChannelResolution` is an array of four vec3, one per
-    channel; `iChannelResolution.xy` does not compile.
+    Why is this bad?
+        ShaderToy no longer declares `iGlobalTime`, so old shaders pasted in fail with "undeclared
+        identifier". `iChannelResolution` is an array of four vec3, one per channel;
+        `iChannelResolution.xy` does not compile.
 
     Example:
         float t = iGlobalTime;
         vec2 size = iChannelResolution.xy;
 
-    Fix:
-        float t = iTime;   (`--fix` renames it)
+    Use instead:
+        float t = iTime;
         vec2 size = iChannelResolution[0].xy;
+
+    Fix safety:
+        Safe: `iGlobalTime` becomes `iTime`, the same value under its current name (not when the
+        file declares `iGlobalTime` itself). The missing index is not fixed: which channel is meant
+        is the author's choice.
+
+    References:
+        - ShaderToy's How To (https://www.shadertoy.com/howto): the uniforms it declares
     """
 
     code = "P004"

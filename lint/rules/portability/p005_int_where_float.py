@@ -41,21 +41,29 @@ _DECIMAL = re.compile(r"^(0|[1-9][0-9]*)$")
 
 @register
 class IntWhereFloat(Rule):
-    """Finds an int where a float is needed: `float x = 1;`, `x * 2` or `x > 0` with a float
-    `x`, `pow(x, 2)`, `textureLod(s, uv, 0)`, `return 0;` in a float function. Constructors
-    convert, so `vec3(1, 0, 0)` is fine.
+    """Finds an int where a float is needed: `float x = 1;`, `x * 2` or `x > 0` with a float `x`,
+    `pow(x, 2)`, `textureLod(s, uv, 0)`, `return 0;` in a float function. Constructors convert, so
+    `vec3(1, 0, 0)` is fine.
 
-    Why it matters: GLSL ES has no implicit int-to-float conversion (desktop GL does), so code
-    that compiles on a desktop driver fails on ShaderToy, WebGL and phones.
+    Why is this bad?
+        GLSL ES has no implicit int-to-float conversion (desktop GL does), so code that compiles on
+        a desktop driver fails on ShaderToy, WebGL and phones.
 
     Example:
         float d = 1;
         col *= pow(d, 2);
 
-    Fix:
+    Use instead:
         float d = 1.0;
         col *= pow(d, 2.0);
-        (`--fix` rewrites int literals; an int variable needs `float(i)`, by hand.)
+
+    Fix safety:
+        Safe: an int literal becomes the float literal of the same value, which is what desktop GL's
+        implicit conversion computes. An int variable needs `float(i)`, written by hand.
+
+    References:
+        - GLSL ES 3.00 spec §4.1 (Basic Types: no implicit conversions) and §5.4.1 (Conversion and
+          Scalar Constructors)
     """
 
     code = "P005"

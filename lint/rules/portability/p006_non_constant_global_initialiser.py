@@ -27,24 +27,32 @@ _NOT_CONSTANT_CALLS = ("texture", "texel", "dFd", "fwidth")
 
 @register
 class NonConstantGlobal(Rule):
-    """Finds a global variable initialised with something that is not a constant
-    expression: a uniform (`iTime`, `iResolution`), another non-const global, a call to a
-    function of the file, a texture lookup.
+    """Finds a global variable initialised with something that is not a constant expression: a
+    uniform (`iTime`, `iResolution`), another non-const global, a call to a function of the file, a
+    texture lookup.
 
-    Why it matters: GLSL ES 3.00 only allows constant expressions in global initialisers
-    (desktop GL and some drivers allow more); ShaderToy rejects the shader with
-    "non-constant global initializer".
+    Why is this bad?
+        GLSL ES 3.00 only allows constant expressions in global initialisers (desktop GL and some
+        drivers allow more); ShaderToy rejects the shader with "non-constant global initializer".
 
     Example:
         vec2 res = iResolution.xy;
         void mainImage(out vec4 fragColor, in vec2 fragCoord) { ... fragCoord / res ... }
 
-    Fix:
+    Use instead:
         vec2 res;
         void mainImage(out vec4 fragColor, in vec2 fragCoord) {
             res = iResolution.xy;
             ...
         }
+
+    Fix safety:
+        No fix: the assignment has to move to where the value is first needed, which may be before
+        mainImage calls anything that reads it.
+
+    References:
+        - GLSL ES 3.00 spec §4.3 (Storage Qualifiers: global initialisers must be constant
+          expressions) and §4.3.3 (Constant Expressions)
     """
 
     code = "P006"

@@ -15,19 +15,26 @@ from .. import Rule, register
 
 @register
 class ReservedWord(Rule):
-    """Finds GLSL ES 3.00 reserved words used as names: `input`, `output`, `sample`,
-    `filter`, `common`, `partition`, `active`, `half`, `fixed`, `superp`, `cast`, ...
+    """Finds GLSL ES 3.00 reserved words used as names: `input`, `output`, `sample`, `filter`,
+    `common`, `partition`, `active`, `half`, `fixed`, `superp`, `cast`, ...
 
-    Why it matters: these words are reserved for future versions, and using one anywhere
-    (a variable, a function, a struct member) is a compile error in GLSL ES, though some
-    desktop drivers accept them. Checked on the preprocessed tokens, so it is reported even
-    when the file does not parse.
+    Why is this bad?
+        These words are reserved for future versions, and using one anywhere (a variable, a
+        function, a struct member) is a compile error in GLSL ES, though some desktop drivers accept
+        them. Checked on the preprocessed tokens, so it is reported even when the file does not
+        parse.
 
     Example:
         float sample = texture(iChannel0, uv).r;
 
-    Fix:
+    Use instead:
         float sampled = texture(iChannel0, uv).r;
+
+    Fix safety:
+        No fix: a new name has to be chosen, and it must not clash with another.
+
+    References:
+        - GLSL ES 3.00 spec §3.7 (Keywords: the list of reserved words)
     """
 
     code = "P007"

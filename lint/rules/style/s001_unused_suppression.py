@@ -14,17 +14,25 @@ UNUSED_SUPPRESSION = "S001"
 
 @register
 class UnusedSuppression(Rule):
-    """Finds a `// glint: ignore[...]` or `file-ignore[...]` comment that silences nothing, or
-    that names a code no rule has.
+    """Finds a `// glint: ignore[...]` or `file-ignore[...]` comment that silences nothing, or that
+    names a code no rule has.
 
-    Why it matters: a suppression outlives the problem it hid; stale ones hide the next real
-    finding on that line, and a misspelt code silences nothing while looking as if it did.
+    Why is this bad?
+        A suppression outlives the problem it hid; stale ones hide the next real finding on that
+        line, and a misspelt code silences nothing while looking as if it did.
 
     Example:
         float d = max(dot(N, L), 0.0); // glint: ignore[N001]
 
     Fix:
-        remove the comment, or correct the code it names (`glint rule --all` lists them).
+        Remove the comment, or correct the code it names (`glint rule --all` lists them).
+
+    Fix safety:
+        No fix.
+
+    References:
+        - glint's README, Lint section (suppressions)
+        - ruff's RUF100 (unused-noqa), the model for this rule
     """
 
     code = UNUSED_SUPPRESSION
