@@ -4,12 +4,16 @@ from __future__ import annotations
 
 import fnmatch
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import PurePath
 
 
 @dataclass
 class Options:
-    select: list[str] = field(default_factory=lambda: ["ALL"])  # codes, prefixes or ALL
+    # codes, prefixes, ALL, or DEFAULT: the rules whose findings on real shaders are worth
+    # acting on (lint/precision.py measures them); the others run when selected by code,
+    # prefix or ALL, like ruff's non-default rules
+    select: list[str] = field(default_factory=lambda: ["DEFAULT"])
     ignore: list[str] = field(default_factory=list)
     per_file_ignores: dict[str, list[str]] = field(default_factory=dict)  # glob -> codes
     target: str = "shadertoy"  # shadertoy, webgl2 or desktop
@@ -26,15 +30,24 @@ class Options:
 
 
 def _best(code: str, patterns: list[str]) -> int:
-    """Length of the longest pattern that matches the code (ALL counts as 0.5); 0 if none."""
+    """Length of the longest pattern that matches the code (ALL and DEFAULT count as 0.5); 0 if
+    none."""
     best = 0.0
     for pattern in patterns:
         pattern = pattern.strip().upper()
-        if pattern == "ALL":
+        if pattern == "ALL" or (pattern == "DEFAULT" and code in default_codes()):
             best = max(best, 0.5)
         elif code.startswith(pattern) and _prefix_ok(code, pattern):
             best = max(best, float(len(pattern)))
     return int(best * 2)
+
+
+@cache
+def default_codes() -> frozenset[str]:
+    """The codes of the rules that run when nothing is selected."""
+    from .rules import all_rules  # the rules import the lint context, which needs no options
+
+    return frozenset(code for code, rule in all_rules().items() if rule.default)
 
 
 def _prefix_ok(code: str, pattern: str) -> bool:

@@ -49,6 +49,9 @@ class Rule:
     needs_tree: ClassVar[bool] = True  # skipped when the file did not parse
     fixable: ClassVar[Literal["safe", "unsafe", "none"]] = "none"
     runs_last: ClassVar[bool] = False  # reports on what the other rules ran into
+    # In the default rule set: its findings on real shaders are worth acting on (measured by
+    # lint/precision.py from labelled findings); otherwise opt-in, run by code, prefix or ALL.
+    default: ClassVar[bool] = True
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         raise NotImplementedError
