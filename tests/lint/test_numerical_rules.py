@@ -279,6 +279,23 @@ def test_mod_and_atan_with_safe_arguments_are_clean() -> None:
 # --- N008 clamp / N009 smoothstep -------------------------------------------------------------
 
 
+def test_clamp_with_the_value_passed_last_looks_swapped() -> None:
+    # clamp(0.0, 1.0, v) with v in [-1, 1]: min >= max over the whole range, so the result is
+    # always v, unclamped
+    f = only(shader("float v = sin(iTime);\nfloat c = clamp(0.0, 1.0, v);"), "N008")
+    assert "swapped" in f.message and "clamp takes the value first" in f.message
+    assert f.severity == "warning"
+    assert codes(shader("float v = sin(iTime);\nfloat c = clamp(v, 0.0, 1.0);"), "N008") == []
+    # bounds that overlap somewhere are no evidence
+    assert codes(shader("float v = sin(iTime);\nfloat c = clamp(0.5, v, 1.0);"), "N008") == []
+
+
+def test_clamp_with_bounds_inverted_over_their_ranges() -> None:
+    src = shader("float lo = 2.0 + abs(sin(iTime));\nfloat c = clamp(iTime, lo, cos(iTime));")
+    f = only(src, "N008")
+    assert "for every value" in f.message and f.severity == "warning"
+
+
 def test_clamp_with_inverted_constant_bounds() -> None:
     f = only(shader("float c = clamp(sin(iTime), 1.0, 0.0);"), "N008")
     assert f.severity == "error" and "1.0 > 0.0" in f.message
@@ -290,7 +307,8 @@ def test_clamp_with_inverted_constant_bounds() -> None:
 def test_smoothstep_with_inverted_edges_and_its_fix() -> None:
     src = shader("float s = smoothstep(1.0, 0.0, sin(iTime));\nfragColor = vec4(s);")
     f = only(src, "N009")
-    assert f.severity == "error" and f.fix is not None and f.fix.applicability == "safe"
+    # the same mirrored ramp on every GPU: a portability warning, not an error
+    assert f.severity == "warning" and f.fix is not None and f.fix.applicability == "safe"
     out = lint_text(src, "t.glsl", FAST, fix=True).text
     assert "(1.0 - smoothstep(0.0, 1.0, sin(iTime)))" in out and compiles(out)
     assert codes(out) == []
@@ -298,7 +316,21 @@ def test_smoothstep_with_inverted_edges_and_its_fix() -> None:
 
 def test_smoothstep_with_equal_edges_has_no_fix() -> None:
     f = only(shader("float s = smoothstep(0.5, 0.5, sin(iTime));"), "N009")
-    assert f.fix is None and "equal" in f.message
+    assert f.fix is None and "equal" in f.message and f.severity == "error"
+
+
+def test_smoothstep_with_a_positive_width_against_zero_is_reversed_not_equal() -> None:
+    # 2/iResolution.y and fwidth(d) touch 0 only as bounds: a reversed anti-aliasing ramp
+    for edge in ("2.0 / iResolution.y", "fwidth(sin(iTime))"):
+        f = only(shader(f"float s = smoothstep({edge}, 0.0, sin(iTime));"), "N009")
+        assert "reversed" in f.message and "equal" not in f.message
+        assert f.severity == "warning"
+
+
+def test_smoothstep_message_shows_the_value_of_a_macro_edge() -> None:
+    src = shader("float s = smoothstep(CUE - 1.0, CUE - 3.0, sin(iTime));")
+    f = only("#define CUE (14.0 + 10.0 + 5.0 + 19.0)\n" + src, "N009")
+    assert "= 47" in f.message and "= 45" in f.message
 
 
 def test_smoothstep_in_order_is_clean() -> None:

@@ -16,6 +16,10 @@ from ._common import NumericalRule, builtin_calls, reaches_zero, text
 class ModAtanZero(NumericalRule):
     """Finds `mod(x, 0)` and `atan(y, x)` whose two arguments may both be zero.
 
+    A constant 0 divisor (`mod(x, 0.0)`) or `atan(0.0, 0.0)` is an error: the result is undefined
+    on every run, whatever the inputs. Arguments that only may both be 0 are a warning: the
+    value is undefined at those inputs only (often one pixel or one instant).
+
     Why is this bad?
         mod(x, 0) divides by zero and atan(0, 0) is undefined in GLSL; both give NaN or an arbitrary
         value that differs between GPUs. Polar coordinates of the origin are the usual way to reach

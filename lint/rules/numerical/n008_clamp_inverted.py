@@ -13,17 +13,27 @@ from ._common import NumericalRule, builtin_calls, text
 
 @register
 class ClampInverted(NumericalRule):
-    """Finds `clamp(x, lo, hi)` whose bounds are constants with lo > hi.
+    """Finds `clamp(x, lo, hi)` whose lower bound is at or above the upper bound over their whole
+    ranges: constants written the wrong way round (`clamp(x, 1.0, 0.0)`), or the arguments in the
+    wrong order (`clamp(0.0, 1.0, v)`, the value passed where a bound belongs).
+
+    Constant bounds with lo > hi are an error: the result is the constant upper bound whatever x
+    is, on every run and every GPU. Anything else is a warning: with `clamp(0.0, 1.0, v)` and v in
+    [-1, 1] the result is always the third argument, v itself, unclamped: wrong wherever v leaves
+    [0, 1], right where it does not.
 
     Why is this bad?
         GLSL leaves clamp undefined when minVal > maxVal; GPUs compute min(max(x, lo), hi), which is
-        the constant hi whatever x is. The bounds were almost certainly written the wrong way round.
+        hi whatever x is. The bounds were almost certainly written the wrong way round, or the
+        value was passed last (clamp takes the value first).
 
     Example:
         float v = clamp(x, 1.0, 0.0);
+        float w = clamp(0.0, 1.0, s);
 
     Use instead:
         float v = clamp(x, 0.0, 1.0);
+        float w = clamp(s, 0.0, 1.0);
 
     Fix safety:
         No fix: swapping the bounds changes the result from a constant to x, which is almost
@@ -36,7 +46,7 @@ class ClampInverted(NumericalRule):
 
     code = "N008"
     name = "clamp-inverted"
-    severity = "error"
+    severity = "warning"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
@@ -44,11 +54,29 @@ class ClampInverted(NumericalRule):
             args = call_args(call)
             if len(args) != 3:
                 continue
+            x = model.range_of(args[0])
             lo, hi = model.range_of(args[1]), model.range_of(args[2])
-            if lo.lo > hi.hi:
+            if not lo.lo >= hi.hi:  # lo >= hi for every value of both
+                continue
+            shown = [text(ctx, a, 24) for a in args]
+            if lo.is_point and hi.is_point and lo.lo > hi.lo:
                 message = (
-                    f"clamp bounds are inverted: {text(ctx, args[1], 24)} > "
-                    f"{text(ctx, args[2], 24)}; the result is always the upper bound (undefined "
-                    "in GLSL); swap them"
+                    f"clamp bounds are inverted: {shown[1]} > {shown[2]}; the result is always "
+                    "the upper bound (undefined in GLSL); swap them"
+                )
+                yield self.emit(ctx, call, message, severity="error")
+            elif x.is_point:
+                message = (
+                    f"clamp({shown[0]}, {shown[1]}, {shown[2]}): the arguments look swapped "
+                    f"(clamp takes the value first): the lower bound {shown[1]} is never below "
+                    f"the upper bound {shown[2]}, so the result is always {shown[2]}, unclamped; "
+                    f"write clamp({shown[2]}, {shown[0]}, {shown[1]})"
+                )
+                yield self.emit(ctx, call, message)
+            else:
+                message = (
+                    f"clamp bounds are inverted: {shown[1]} >= {shown[2]} for every value "
+                    f"(ranges {lo.describe()} and {hi.describe()}); the result is always the upper "
+                    "bound (undefined in GLSL where lo > hi)"
                 )
                 yield self.emit(ctx, call, message)

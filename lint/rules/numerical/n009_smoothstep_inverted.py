@@ -4,21 +4,33 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.model import call_args, semantic_model
+from lark import Tree
+
+from ...analysis.model import Model, call_args, semantic_model
+from ...analysis.ranges import Interval
 from ...context import LintContext
 from ...finding import Finding, Fix
 from .. import register
-from ._common import NumericalRule, builtin_calls, text
+from ._common import Node, NumericalRule, builtin_calls, text
 
 
 @register
 class SmoothstepInverted(NumericalRule):
-    """Finds `smoothstep(e0, e1, x)` whose edges are constants with e0 >= e1.
+    """Finds `smoothstep(e0, e1, x)` whose edges are reversed (e0 > e1 for every value) or equal
+    (both the same constant).
+
+    Equal edges are an error: smoothstep(e, e, x) divides 0 by 0 at x == e and is a step
+    elsewhere, on every run. Reversed edges are a portability warning: GLSL leaves them
+    undefined, but every GPU and ShaderToy runner evaluates the usual formula and draws the
+    mirrored ramp, the same image on every run; authors write `smoothstep(aa, 0.0, d)` on purpose
+    as an anti-aliased mask. The rewrite below is defined everywhere and draws the same curve.
+    Edges are called equal only when both are the same constant: a positive width such as
+    `2.0 / iResolution.y` or `fwidth(d)` against 0.0 is a reversed ramp, not a step.
 
     Why is this bad?
-        GLSL leaves smoothstep undefined when edge0 >= edge1. Most GPUs evaluate the usual formula
-        and give a reversed ramp, but not all, and e0 == e1 divides by zero. A reversed ramp is
-        written 1.0 - smoothstep(e1, e0, x).
+        GLSL leaves smoothstep undefined when edge0 >= edge1. Today's GPUs give a reversed ramp
+        for e0 > e1, but a conforming implementation need not, and e0 == e1 divides by zero. A
+        reversed ramp is written 1.0 - smoothstep(e1, e0, x).
 
     Example:
         float fade = smoothstep(1.0, 0.0, d);
@@ -39,7 +51,7 @@ class SmoothstepInverted(NumericalRule):
 
     code = "N009"
     name = "smoothstep-inverted"
-    severity = "error"
+    severity = "warning"
     fixable = "safe"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
@@ -52,17 +64,26 @@ class SmoothstepInverted(NumericalRule):
             if e0.lo < e1.hi:
                 continue
             a, b, x = (ctx.node_text(n).strip() for n in args)
-            fix = None
-            if e0.lo > e1.hi:  # strictly reversed: the mirrored ramp is the same curve
-                edit = ctx.replace(call, f"(1.0 - smoothstep({b}, {a}, {x}))")
-                fix = Fix("write the reversed ramp as 1.0 - smoothstep", (edit,)) if edit else None
-                advice = f"write 1.0 - smoothstep({text(ctx, args[1], 24)}, " + (
-                    f"{text(ctx, args[0], 24)}, ...)"
+            shown0, shown1 = _edge(ctx, model, args[0], e0), _edge(ctx, model, args[1], e1)
+            if e0.is_point and e1.is_point and e0.lo == e1.lo:
+                message = (
+                    f"smoothstep edges {shown0} and {shown1} are equal: it divides by zero (NaN "
+                    "at x == edge) and is a step elsewhere; use step() or separate them"
                 )
-            else:
-                advice = "the edges are equal: use step() or separate them"
+                yield self.emit(ctx, call, message, severity="error")
+                continue
+            edit = ctx.replace(call, f"(1.0 - smoothstep({b}, {a}, {x}))")
+            fix = Fix("write the reversed ramp as 1.0 - smoothstep", (edit,)) if edit else None
             message = (
-                f"smoothstep edges {text(ctx, args[0], 24)} >= {text(ctx, args[1], 24)} are "
-                f"undefined in GLSL; {advice}"
+                f"smoothstep edges are reversed ({shown0} >= {shown1}): undefined in GLSL, though "
+                "today's GPUs draw the mirrored ramp; for portability write "
+                f"1.0 - smoothstep({text(ctx, args[1], 24)}, {text(ctx, args[0], 24)}, ...)"
             )
             yield self.emit(ctx, call, message, fix)
+
+
+def _edge(ctx: LintContext, model: Model, node: Node, r: Interval) -> str:
+    """An edge for the message: its value when constant (a macro's expansion says little)."""
+    if r.is_point and isinstance(node, Tree) and node.data not in ("float_literal", "int_literal"):
+        return f"{text(ctx, node, 24)} = {r.lo:g}"
+    return text(ctx, node, 24)
