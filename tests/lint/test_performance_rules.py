@@ -80,6 +80,23 @@ def test_pf001_leaves_other_exponents_and_complex_bases_alone() -> None:
     assert found(src, "PF001") == []
 
 
+def test_pf001_leaves_compile_time_constant_bases_to_the_compiler() -> None:
+    # a base built from literals, macros and const names, or a variable that still holds a
+    # constant where it is read, is folded: no pow runs at all
+    text = image(
+        "    vec3 L = vec3(7.4, 5.6, 4.4);\n"
+        "    L = pow(L, vec3(5.0)) * 2.0;\n"
+        "    float r = 1.0 - clamp(SURF / RADIUS, 0., 1.);\n"
+        "    float k = pow(r, 2.);\n"
+        "    float c = pow(HALF, 3.0);\n"
+        "    float t = fragCoord.x;\n"
+        "    float v = pow(t, 2.0);\n"
+        "    fragColor = vec4(L, k + c + v);",
+        "#define SURF 0.01\n#define RADIUS 0.5\nconst float HALF = 0.5;\n",
+    )
+    assert found(text, "PF001") == [("PF001", 11, 15)]
+
+
 def test_pf001_no_fix_on_a_line_with_a_macro() -> None:
     src = "#define E 2.0\n" + image("    float x = fragCoord.x;\n    fragColor = vec4(pow(x, E));")
     findings = lint_source(src, "x.glsl", FAST)

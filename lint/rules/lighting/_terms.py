@@ -486,3 +486,224 @@ def global_constants(ctx: LintContext) -> dict[str, float]:
                     values[str(child.children[0])] = value
     ctx.cache["lighting.constants"] = values
     return values
+
+
+# --- what reaches the output: liveness of values ---------------------------------------------
+
+_CONDITIONS = {"if_statement", "while_statement", "do_statement", "switch_statement"}
+
+
+def live_names(ctx: LintContext, fn: Function) -> set[str]:
+    """Variables of the function whose values can reach its results: what it returns, writes to
+    an out parameter or a global, passes to a call for its side effects, or tests in a branch or
+    loop condition, and (transitively) every variable those are computed from. A variable that
+    is assigned but never reaches one of those is dead: its value is never seen."""
+    key = f"lighting.live.{fn.name}.{id(fn.node)}"
+    cached = ctx.cache.get(key)
+    if cached is not None:
+        return cached  # type: ignore[no-any-return]
+    outs = out_param_map(ctx)
+    local = {n for n in fn.locals} | {p for p, (q, _) in fn.params.items() if "out" not in q}
+    deps: dict[str, set[str]] = {}
+    seeds: set[str] = set()
+
+    def depend(target: str | None, reads: set[str]) -> None:
+        if target is None:
+            return
+        if target in local:
+            deps.setdefault(target, set()).update(reads)
+        else:  # an out parameter or a global: the value leaves the function
+            seeds.update(reads)
+
+    for node in walk(fn.body):
+        if node.data == "jump_statement" and len(node.children) == 2:
+            seeds |= names_in(node.children[1])
+        elif node.data in _CONDITIONS:
+            cond = node.children[1] if node.data == "do_statement" else node.children[0]
+            seeds |= names_in(cond)
+        elif node.data == "for_statement" and len(node.children) > 2:
+            seeds |= names_in(node.children[1])
+        elif node.data == "ternary":
+            seeds |= names_in(node.children[0])
+        elif node.data == "declarator" and len(node.children) > 1:
+            depend(str(node.children[0]), names_in(node.children[-1]))
+        elif node.data == "assignment":
+            target = root_var(node.children[0])
+            reads = names_in(node.children[2]) | (names_in(node.children[0]) - {target})
+            depend(target, reads)
+        elif node.data == "call":
+            callee = call_name(node)
+            args = call_args(node)
+            if callee in outs and outs[callee]:
+                reads = set().union(*(names_in(a) for a in args)) if args else set()
+                for i in outs[callee]:
+                    if i < len(args):
+                        depend(root_var(args[i]), reads)
+    live = set(seeds)
+    todo = list(seeds)
+    while todo:
+        for name in deps.get(todo.pop(), ()):
+            if name not in live:
+                live.add(name)
+                todo.append(name)
+    ctx.cache[key] = live
+    return live
+
+
+def reaches_output(ctx: LintContext, node: Node, fn: Function, up: dict[int, Tree]) -> bool:
+    """Whether the value of an expression can be seen outside its function (see live_names):
+    it is returned, tested, or stored in a variable whose value is. Conservative: anything the
+    walk does not understand counts as reaching."""
+    live = live_names(ctx, fn)
+    current: Node = node
+    while (parent := up.get(id(current))) is not None:
+        if parent.data == "declarator":
+            return str(parent.children[0]) in live
+        if parent.data == "assignment":
+            if current is parent.children[0]:
+                return True
+            target = root_var(parent.children[0])
+            local = target in fn.locals or (
+                target in fn.params and "out" not in fn.params[target][0]
+            )
+            return not local or target in live
+        if parent.data == "expression_statement":
+            return any(s.data == "call" and call_name(s) not in _BUILTIN_PURE
+                       for s in walk(parent))  # fmt: skip
+        if parent.data in ("jump_statement", "compound_statement", "function_definition"):
+            return True
+        if parent.data in _CONDITIONS or parent.data == "for_statement":
+            return True
+        current = parent
+    return True
+
+
+_BUILTIN_PURE = {"dot", "max", "min", "clamp", "pow", "normalize", "length", "mix", "abs"}
+
+
+def callable_from_main(ctx: LintContext) -> set[str] | None:
+    """Names of the functions mainImage calls, directly or through others (None without one)."""
+    defined = function_map(ctx)
+    if "mainImage" not in defined:
+        return None
+    seen = {"mainImage"}
+    todo = ["mainImage"]
+    while todo:
+        fn = defined[todo.pop()]
+        for call in calls_in(fn.body):
+            name = call_name(call)
+            if name in defined and name not in seen:
+                seen.add(name)
+                todo.append(name)
+    return seen
+
+
+def _vec3_or_unknown(ctx: LintContext, node: Node) -> bool:
+    typ = semantic_model(ctx).type_of(node)
+    return typ is None or typ == "vec3"
+
+
+def lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
+    """The dot products that light a 3D surface: dot(N, L), dot(N, V) or dot(N, H) of two vec3
+    (not a 2D vector that happens to be called n, nor a hash's argument dotted with constants),
+    in a function that mainImage runs, whose value reaches that function's result (not a
+    lighting term computed and then never used)."""
+    cached = ctx.cache.get("lighting.cosines")
+    if cached is not None:
+        return cached  # type: ignore[no-any-return]
+    result: list[tuple[Tree, Function]] = []
+    used = callable_from_main(ctx)
+    up = parents(ctx.tree) if ctx.tree is not None else {}
+    for fn in functions(ctx):
+        if used is not None and fn.name not in used:
+            continue
+        for node in calls_in(fn.body):
+            if call_name(node) != "dot" or cosine_of(node, fn) not in ("NL", "NV", "NH"):
+                continue
+            if not all(_vec3_or_unknown(ctx, a) for a in call_args(node)):
+                continue
+            if reaches_output(ctx, node, fn, up):
+                result.append((node, fn))
+    ctx.cache["lighting.cosines"] = result
+    return result
+
+
+def lights_surface(ctx: LintContext) -> bool:
+    """Whether the shader lights a 3D surface (see lighting_cosines)."""
+    return bool(lighting_cosines(ctx))
+
+
+# --- compile-time constants ------------------------------------------------------------------
+
+_FOLDABLE_CALLS = {
+    "normalize", "length", "sqrt", "inversesqrt", "pow", "exp", "exp2", "log", "log2", "sin",
+    "cos", "tan", "radians", "degrees", "abs", "min", "max", "clamp", "mix", "dot", "cross",
+    "floor", "fract", "mod", "sign", "step", "smoothstep",
+}
+
+
+def global_const_inits(ctx: LintContext) -> dict[str, Node]:
+    """The initializers of `const` globals, by name."""
+    cached = ctx.cache.get("lighting.const_inits")
+    if cached is not None:
+        return cached  # type: ignore[no-any-return]
+    values: dict[str, Node] = {}
+    for node in ctx.tree.children if ctx.tree is not None else ():
+        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+            continue
+        spec = node.children[0]
+        qual = spec.children[0] if isinstance(spec, Tree) and spec.children else None
+        if not (isinstance(qual, Tree) and qual.data == "type_qualifier"
+                and "const" in [str(t) for t in qual.children]):  # fmt: skip
+            continue
+        for child in node.children[1:]:
+            if isinstance(child, Tree) and child.data == "declarator" and len(child.children) > 1:
+                init = child.children[-1]
+                if isinstance(init, Tree) and init.data != "array_specifier":
+                    values[str(child.children[0])] = init
+    ctx.cache["lighting.const_inits"] = values
+    return values
+
+
+def is_compile_time(ctx: LintContext, node: Node, fn: Function | None, depth: int = 6) -> bool:
+    """Whether every value the expression can take is known when the shader is compiled: it is
+    built only from literals (macros are expanded already), `const` names, locals whose one
+    value is such an expression, and builtin calls of those. The compiler folds it: no
+    instruction runs for it."""
+    if depth <= 0 or not isinstance(node, Tree):
+        return False
+    if node.data in ("float_literal", "int_literal", "bool_literal"):
+        return True
+    if node.data == "variable":
+        name = str(node.children[0])
+        if fn is not None and (name in fn.locals or name in fn.params):
+            value = fn.value_of(name) if name not in fn.params else None
+            return value is not None and is_compile_time(ctx, value, fn, depth - 1)
+        init = global_const_inits(ctx).get(name)
+        return init is not None and is_compile_time(ctx, init, None, depth - 1)
+    if node.data == "constructor":
+        return all(is_compile_time(ctx, a, fn, depth - 1) for a in call_args(node))
+    if node.data == "call":
+        return call_name(node) in _FOLDABLE_CALLS and all(
+            is_compile_time(ctx, a, fn, depth - 1) for a in call_args(node)
+        )
+    if node.data in ("binary", "unary", "field", "ternary"):
+        kids = [c for c in node.children if isinstance(c, Tree)]
+        if node.data == "field":
+            kids = kids[:1]
+        return bool(kids) and all(is_compile_time(ctx, k, fn, depth - 1) for k in kids)
+    return False
+
+
+def known_value(ctx: LintContext, node: Node) -> bool:
+    """Whether the model knows the value exactly where it is read (every component a single
+    number): a variable that still holds the constant it was given, as in `vec3 L =
+    vec3(7.4, 5.6, 4.4); L = pow(L, vec3(5.0));`. Constant propagation folds what reads it."""
+    value = semantic_model(ctx).value_of(node)
+    parts = value.comps if value.comps is not None else (value.range,)
+    return all(p.lo == p.hi for p in parts)
+
+
+def folded(ctx: LintContext, node: Node, fn: Function | None) -> bool:
+    """A compile-time constant (is_compile_time) or a value the model knows exactly."""
+    return is_compile_time(ctx, node, fn) or known_value(ctx, node)

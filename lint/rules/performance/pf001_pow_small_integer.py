@@ -4,17 +4,30 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...context import LintContext
+from ...context import LintContext, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
 from ..lighting._terms import (
+    Function,
     call_args,
     call_name,
     const_value,
+    folded,
+    function_map,
     is_simple,
     parents,
 )
 from ._common import needs_parens
+
+
+def _owners(ctx: LintContext) -> dict[int, Function]:
+    """The function each call sits in, by id."""
+    owner: dict[int, Function] = {}
+    for fn in function_map(ctx).values():
+        for node in walk(fn.body):
+            if node.data == "call":
+                owner[id(node)] = fn
+    return owner
 
 
 @register
@@ -24,7 +37,13 @@ class PowSmallInteger(Rule):
 
     Only plain variables and swizzles are reported, where the product repeats no work and no side
     effect: `pow(clamp(1.0 - c, 0.0, 1.0), 5.0)` would need a temporary of a type the fix cannot
-    always name, so it is left alone.
+    always name, so it is left alone. A base that is a compile-time constant (literals, macros,
+    `const` names, or a variable that still holds a constant where it is read) is not reported
+    either: the compiler computes the power and no instruction runs.
+
+    Opt-in: Mesa (nir_opt_algebraic), LLVM-based AMD compilers and NVIDIA's already turn pow by 2
+    to 5 into multiplies, so on real shaders this is a portability and accuracy hint (slow or
+    low-precision mobile pow), rarely a measurable saving.
 
     Why is this bad?
         pow is exp2(y·log2(x)) on most GPUs, two transcendental operations and a multiply, and less
@@ -51,6 +70,7 @@ class PowSmallInteger(Rule):
     category = "performance"
     severity = "info"
     fixable = "safe"
+    default = False
 
     _FORMS = {
         2: "{x} * {x}",
@@ -62,6 +82,7 @@ class PowSmallInteger(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
         up = parents(ctx.tree)
+        owner = _owners(ctx)
         for node in ctx.nodes("call"):
             if call_name(node) != "pow":
                 continue
@@ -71,6 +92,8 @@ class PowSmallInteger(Rule):
             exponent = const_value(args[1])
             if exponent not in (2.0, 3.0, 4.0, 5.0):
                 continue
+            if folded(ctx, args[0], owner.get(id(node))):
+                continue  # a constant base: the compiler computes the power, nothing runs
             n = int(exponent)  # type: ignore[arg-type]
             base = ctx.node_text(args[0])
             product = self._FORMS[n].format(x=base)
