@@ -192,7 +192,7 @@ class _Retyper:
             tok.type = QUALIFIER_GROUPS[text]
             self.starts_item = starts_item  # qualifiers come before the type
             return
-        if text in RESERVED_WORDS or "__" in text:
+        if text in RESERVED_WORDS:  # a name with `__` is only a warning in ES 3.00 (§3.7)
             raise _ReservedWord(tok)
         if self.field:
             self.field = False

@@ -300,3 +300,8 @@ def test_indexing_an_undeclared_name_stays_an_expression() -> None:
 )
 def test_unnamed_parameters(source: str) -> None:
     parse(source)
+
+
+def test_names_with_double_underscores_are_allowed() -> None:
+    # reserved for the implementation, but in ES 3.00 using one is not an error (spec §3.7)
+    parse("float a__b = 1.0;\nfloat f(float __x) { return __x * a__b; }")
