@@ -11,22 +11,23 @@ class GlslangWarning(GlslangRule):
     """Finds what glslangValidator warns about in the wrapped file.
 
     Why is this bad?
-        glslang's warnings mark code that some drivers treat differently or not at all (deprecated
-        features, extension behaviour).
+        glslang's warnings mark code that some drivers treat differently or not at all
+        (deprecated features, extension behaviour).
 
     Example:
-        #extension GL_OES_standard_derivatives : enable
+        #extension GL_EXT_draw_buffers : enable
 
     Fix:
-        Remove the directive: derivatives (dFdx, dFdy, fwidth) are core in GLSL ES 3.00.
+        Remove the directive: GL_EXT_draw_buffers is WebGL 1's extension, and several outputs
+        are core in GLSL ES 3.00 (ShaderToy's passes write one colour anyway).
 
     Fix safety:
         No fix.
 
     References:
         - glslang, the Khronos reference front end: https://github.com/KhronosGroup/glslang
-        - GLSL ES 3.00 spec §3.4 (Preprocessor: #extension) and §8.9 (Fragment Processing Functions:
-          derivatives)
+        - GLSL ES 3.00 spec §3.4 (Preprocessor: `#extension ... : enable` of an extension the
+          compiler does not support is a warning)
     """
 
     code = "C002"
