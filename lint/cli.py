@@ -65,7 +65,8 @@ def _check_codes(codes: list[str], flag: str) -> None:
     rules = all_rules()
     prefixes = set(CATEGORY_PREFIX.values())
     for code in codes:
-        known = code == "ALL" or any(c.startswith(code) for c in rules) or code in prefixes
+        known = code in ("ALL", "DEFAULT") or code in prefixes
+        known = known or any(c.startswith(code) for c in rules)
         if not known:
             raise UsageError(
                 f"{flag}: unknown rule code or prefix {code!r}; see `glint rule --all`"
