@@ -20,6 +20,7 @@ from .config import load_options
 from .docs import rules_markdown
 from .finding import Finding
 from .options import Options
+from .precision import precision_note
 from .reporters import FORMATS, REPORTERS, statistics, summary
 from .rules import CATEGORY_PREFIX, all_rules, rule_doc
 from .runner import lint_bytes
@@ -198,7 +199,9 @@ def rule_entry(code: str) -> dict[str, str]:
         "category": rule.category,
         "severity": rule.severity,
         "fixable": rule.fixable,
+        "runs": "default" if rule.default else "opt-in",
         **doc,
+        "on_real_shaders": precision_note(code),
     }
 
 
@@ -212,7 +215,7 @@ def explain(entry: dict[str, str]) -> str:
     parts = [head, "", entry["summary"]] + (["", entry["details"]] if entry["details"] else [])
     sections = (("Why is this bad?", "why"), ("Example:", "example"),
                 (f"{entry['fix_title']}:", "fix"), ("Fix safety:", "fix_safety"),
-                ("References:", "references"))  # fmt: skip
+                ("References:", "references"), ("On real shaders:", "on_real_shaders"))  # fmt: skip
     for title, key in sections:
         if entry[key]:
             body = "\n".join("    " + line if line else "" for line in entry[key].split("\n"))

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from .precision import load_measured, precision_note, table_markdown
 from .rules import CATEGORY_PREFIX, all_rules, rule_doc
 
 _FIXES = {"safe": "safe fix", "unsafe": "unsafe fix", "none": "no fix"}
@@ -16,15 +17,19 @@ def rules_markdown() -> str:
     out = [
         "# Lint rules\n\n",
         "Generated from the rules' docstrings by `glint rule --all --markdown`; "
-        "`glint rule CODE` prints one. Codes never change meaning.\n\n",
-        "| code | name | severity | fix | finds |\n|---|---|---|---|---|\n",
+        "`glint rule CODE` prints one. Codes never change meaning. Rules marked opt-in run "
+        "with `--select ALL` or when selected by code or prefix: their findings on real "
+        "shaders are not yet precise enough to run by default.\n\n",
+        "| code | name | severity | runs | fix | finds |\n|---|---|---|---|---|---|\n",
     ]
     for code, rule in rules.items():
         summary = rule_doc(rule)["summary"].replace("|", "\\|")
+        runs = "default" if rule.default else "opt-in"
         out.append(
-            f"| [{code}](#{code.lower()}) | {rule.name} | {rule.severity} | "
+            f"| [{code}](#{code.lower()}) | {rule.name} | {rule.severity} | {runs} | "
             f"{_FIXES[rule.fixable]} | {summary} |\n"
         )
+    out.append("\n## Precision on real shaders\n\n" + table_markdown(load_measured()) + "\n")
     for category, prefix in CATEGORY_PREFIX.items():
         members = [(c, r) for c, r in rules.items() if r.category == category]
         if not members:
@@ -43,6 +48,7 @@ def rules_markdown() -> str:
             else:
                 out.append(f"\n**Fix:** {_prose(doc['fix'])}\n")
             out.append(f"\n**Fix safety:** {_prose(doc['fix_safety'])}\n")
+            out.append(f"\n**On real shaders:** {precision_note(code)}\n")
             out.append(f"\n**References:**\n\n{_references(doc['references'])}\n")
     return "".join(out)
 

@@ -61,11 +61,20 @@ def load_labels(folder: Path = LABELS) -> list[Label]:
     for path in sorted(folder.glob("*.toml")):
         code = path.stem
         for entry in tomllib.loads(path.read_text(encoding="utf-8")).get("finding", []):
-            label = Label(code, entry["file"], int(entry["line"]), int(entry["column"]),
-                          entry["text"], entry["verdict"], entry["reason"])  # fmt: skip
+            label = Label(
+                code,
+                entry["file"],
+                int(entry["line"]),
+                int(entry["column"]),
+                entry["text"],
+                entry["verdict"],
+                entry["reason"],
+            )
             if label.verdict not in VERDICTS:
-                raise ValueError(f"{path.name}: {label.file}:{label.line}: verdict "
-                                 f"{label.verdict!r} is not one of {', '.join(VERDICTS)}")  # fmt: skip
+                raise ValueError(
+                    f"{path.name}: {label.file}:{label.line}: verdict "
+                    f"{label.verdict!r} is not one of {', '.join(VERDICTS)}"
+                )
             if not label.reason.strip():
                 raise ValueError(f"{path.name}: {label.file}:{label.line}: no reason given")
             labels.append(label)
@@ -124,8 +133,9 @@ def measure(labels: list[Label], findings: list[dict[str, Any]]) -> dict[str, Ru
     stats: dict[str, RuleStats] = {}
     for code in all_rules():
         mine = [f for f in findings if f["code"] == code]
-        stats[code] = RuleStats(code, len(mine), len({f["file"] for f in mine}), 0,
-                                Counter(), Counter())  # fmt: skip
+        stats[code] = RuleStats(
+            code, len(mine), len({f["file"] for f in mine}), 0, Counter(), Counter()
+        )
     for label in labels:
         entry = stats.get(label.code)
         if entry is None:
@@ -153,8 +163,10 @@ def precision_note(code: str) -> str:
     if not entry:
         return f"Runs: {state}; not measured on the corpus yet."
     if entry["precision"] is None:
-        return (f"Runs: {state}. On the corpus of real shaders: {entry['count']} findings, "
-                "none labelled.")  # fmt: skip
+        return (
+            f"Runs: {state}. On the corpus of real shaders: {entry['count']} findings, "
+            "none labelled."
+        )
     return (
         f"Runs: {state}. On the corpus of real shaders: {entry['count']} findings; of "
         f"{entry['labelled']} judged by reading the code, {entry['worth']} worth acting on, "
@@ -198,16 +210,30 @@ def replace_table(text: str, table: str) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m glint.lint.precision", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)  # fmt: skip
-    parser.add_argument("corpus", nargs="?", type=Path, default=CORPUS,
-                        help="the corpus folder (holding glslang-valid.txt and shadertoy/)")  # fmt: skip
-    parser.add_argument("--write", action="store_true",
-                        help="store lint/precision.json and rewrite the README's table")  # fmt: skip
+    parser = argparse.ArgumentParser(
+        prog="python -m glint.lint.precision",
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument(
+        "corpus",
+        nargs="?",
+        type=Path,
+        default=CORPUS,
+        help="the corpus folder (holding glslang-valid.txt and shadertoy/)",
+    )
+    parser.add_argument(
+        "--write",
+        action="store_true",
+        help="store lint/precision.json and rewrite the README's table",
+    )
     args = parser.parse_args(argv)
     if not (args.corpus / "glslang-valid.txt").is_file():
-        print(f"precision: {args.corpus}: no glslang-valid.txt; give the corpus folder "
-              "(../shared/corpus)", file=sys.stderr)  # fmt: skip
+        print(
+            f"precision: {args.corpus}: no glslang-valid.txt; give the corpus folder "
+            "(../shared/corpus)",
+            file=sys.stderr,
+        )
         return 2
     files = valid_files(args.corpus)
     stats = measure(load_labels(), corpus_findings(files))
@@ -225,8 +251,10 @@ def main(argv: list[str] | None = None) -> int:
         MEASURED.write_text(json.dumps(measured, indent=1, sort_keys=True) + "\n", "utf-8")
         readme = ROOT / "README.md"
         readme.write_text(replace_table(readme.read_text(encoding="utf-8"), table), "utf-8")
-        print(f"wrote {MEASURED.relative_to(ROOT)} and the table in README.md; now run "
-              "glint rule --all --markdown > site/docs/rules.md")  # fmt: skip
+        print(
+            f"wrote {MEASURED.relative_to(ROOT)} and the table in README.md; now run "
+            "glint rule --all --markdown > site/docs/rules.md"
+        )
     return 0
 
 

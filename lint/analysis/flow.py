@@ -4,20 +4,30 @@ parameters are written?
 
 A small forward analysis over the statement tree of each function (no control-flow graph):
 if/else join, loops may run zero times (unless their bounds say otherwise), `switch` falls
-through, `return`/`break`/`continue`/`discard` end a path. A state maps each tracked variable
-to a bit mask of its written components (vectors are tracked per component, through swizzles;
-everything else as a whole). Joins intersect the masks. Since masks only grow, a loop body is
-analysed once, with the state on entry, and no fixed point is needed.
+through, `return`/`break`/`continue`/`discard` end a path. A condition leaves two states, where
+it is true and where it is false: inside `if (a && f(x))` the call ran; and a condition that the
+semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has one side only.
+A state maps each tracked variable to a bit mask of its written components (vectors are tracked
+per component, through swizzles; everything else as a whole). Joins intersect the masks. Since
+masks only grow, a loop body is analysed once, with the state on entry, and no fixed point is
+needed.
 
 The analysis prefers silence to guessing: a write through a path it cannot follow
 (`a[i].x = ...`, a struct member) counts as a write of the whole variable, and a variable passed
 to a function this file does not define counts as written, never as read.
+
+Each function leaves a summary for the calls after it: which components of each `inout`
+parameter it may read before writing them. An `inout` argument the callee only writes is an
+`out` (`march(ro, rd, t)` that starts with `t = 0.`), and one whose callee reads only `.zw`
+first is read for `.zw` only at the call.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from itertools import compress
+from operator import ne
 from typing import Literal
 
 from lark import Token, Tree
@@ -26,6 +36,7 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node
 from ..context import tokens as tokens_of
+from .model import Model, condition_truth, semantic_model
 
 State = dict[int, int]  # id of a Var -> mask of written components
 SWIZZLE_SETS = ("xyzw", "rgba", "stpq")
@@ -41,7 +52,7 @@ class Var:
     name: str
     token: Token  # its name where declared
     width: int  # components tracked: 2-4 for vectors, 1 for anything else
-    kind: Literal["local", "out"]
+    kind: Literal["local", "out", "inout"]  # inout: tracked only for the function's summary
 
     @property
     def full(self) -> int:
@@ -72,6 +83,12 @@ class FunctionFlow:
     outs: list[Var]  # the tracked `out` parameters, in order
     reads: list[Read] = field(default_factory=list)
     exits: list[Exit] = field(default_factory=list)
+    # per parameter position: for an `inout` one, the mask of its components the function may
+    # read before writing them (0: it only writes it); None for the other parameters
+    inout_reads: list[int | None] = field(default_factory=list)
+
+
+Summaries = dict[tuple[str, int], "list[int | None] | None"]  # None: overloads, no summary
 
 
 def function_flows(ctx: LintContext) -> list[FunctionFlow]:
@@ -82,9 +99,17 @@ def function_flows(ctx: LintContext) -> list[FunctionFlow]:
         if ctx.tree is not None and ctx.pre is not None:
             signatures = _signatures(ctx.tree)
             consts = _const_ints(ctx.tree)
+            model = _Facts(ctx)
+            summaries: Summaries = {}
             for node in ctx.tree.children:
                 if isinstance(node, Tree) and node.data == "function_definition":
-                    cached.append(_Analyzer(signatures, consts, ctx.pre.text).function(node))
+                    analyzer = _Analyzer(signatures, consts, ctx.pre.text, model, summaries)
+                    flow = analyzer.function(node)
+                    cached.append(flow)
+                    # functions are defined before the calls that use the summary (no
+                    # recursion in GLSL); overloads of one arity share no summary
+                    key = (flow.name, len(flow.inout_reads))
+                    summaries[key] = None if key in summaries else flow.inout_reads
         ctx.cache["flow"] = cached
     return cached
 
@@ -210,9 +235,51 @@ def _join(states: Iterable[State | None]) -> State | None:
             continue
         if result is None:
             result = dict(state)
+            continue
+        keys = list(result)
+        if keys == list(state):
+            # Copies of one state that differ in a few masks: find those with C-level
+            # iteration; a Python-level pass over every tracked variable at each merge was
+            # quadratic in long functions.
+            for key in list(compress(keys, map(ne, result.values(), state.values()))):
+                result[key] &= state[key]
         else:
             result = {k: v & state[k] for k, v in result.items() if k in state}
     return result
+
+
+class _Facts:
+    """What the semantic model knows of conditions and loop bounds, built on first use (a file
+    without a condition does not need it). Where the model cannot evaluate (an expression too
+    deep for its recursion), it knows nothing."""
+
+    def __init__(self, ctx: LintContext) -> None:
+        self.ctx = ctx
+        self.model: Model | None = None
+        self.failed = False
+
+    def get(self) -> Model | None:
+        if self.model is None and not self.failed:
+            try:
+                self.model = semantic_model(self.ctx)
+            except (RecursionError, ValueError):
+                self.failed = True
+        return self.model
+
+    def truth(self, cond: Node) -> bool | None:
+        model = self.get()
+        try:
+            return condition_truth(model, cond) if model is not None else None
+        except RecursionError:
+            return None
+
+    def range(self, node: Node) -> tuple[float, float] | None:
+        model = self.get()
+        try:
+            got = model.range_of(node) if model is not None else None
+        except RecursionError:
+            return None
+        return None if got is None or got.is_unknown or got.lo > got.hi else (got.lo, got.hi)
 
 
 @dataclass
@@ -226,11 +293,19 @@ class _Target:
 
 class _Analyzer:
     def __init__(
-        self, signatures: dict[str, list[tuple[str, ...]]], consts: dict[str, int], text: str
+        self,
+        signatures: dict[str, list[tuple[str, ...]]],
+        consts: dict[str, int],
+        text: str,
+        model: _Facts | None = None,
+        summaries: Summaries | None = None,
     ) -> None:
         self.signatures = signatures
         self.consts = consts
         self.text = text
+        self.model = model
+        self.summaries = summaries if summaries is not None else {}
+        self.inout_position: dict[int, int] = {}  # id of a tracked inout parameter -> position
         self.scopes: list[dict[str, Var | None]] = []  # None: a name that is not tracked
         self.targets: list[_Target] = []
         self.flow: FunctionFlow | None = None
@@ -245,14 +320,22 @@ class _Analyzer:
         self.flow = flow
         self.scopes = [{}]
         state: State = {}
-        for param in params:
-            qualifier, type_name, is_array, pname = parameter_parts(param)
+        parts = [parameter_parts(param) for param in params]
+        if len(parts) == 1 and parts[0][:2] == ("in", "void") and parts[0][3] is None:
+            parts = []  # `f(void)`
+        flow.inout_reads = [None] * len(parts)
+        for position, (qualifier, type_name, is_array, pname) in enumerate(parts):
+            if qualifier == "inout":
+                flow.inout_reads[position] = 0
             if pname is None:
                 continue
-            if qualifier == "out":
+            if qualifier in ("out", "inout"):
                 width = 1 if is_array else vector_width(type_name)
-                var = Var(str(pname), pname, width, "out")
-                flow.outs.append(var)
+                var = Var(str(pname), pname, width, qualifier)  # type: ignore[arg-type]
+                if qualifier == "out":
+                    flow.outs.append(var)
+                else:
+                    self.inout_position[id(var)] = position
                 self.scopes[-1][var.name] = var
                 state[id(var)] = 0
             else:
@@ -291,9 +374,18 @@ class _Analyzer:
             self.expr(node.children[0], state)
             return state
         if kind == "if_statement":
-            self.expr(node.children[0], state)
-            then = self.nested(node.children[1], dict(state))
-            other = self.nested(node.children[2], dict(state)) if len(node.children) > 2 else state
+            yes, no = self.condition(node.children[0], state)
+            then = self.nested(node.children[1], yes) if yes is not None else None
+            other = no
+            if len(node.children) > 2 and no is not None:
+                otherwise = node.children[2]
+                if isinstance(otherwise, Tree) and otherwise.data == "if_statement":
+                    # `else if`: an if declares nothing, so it needs no scope of its own; one
+                    # per link made a long else-if chain as deep in scopes as it is long, and
+                    # every name lookup walked them all (quadratic in the chain's length).
+                    other = self.statement(otherwise, no)
+                else:
+                    other = self.nested(otherwise, no)
             return _join([then, other])
         if kind == "for_statement":
             return self.for_loop(node, state)
@@ -352,25 +444,24 @@ class _Analyzer:
         if after is None:
             self.scopes.pop()
             return None
+        enter: State | None = after
+        leave: State | None = None  # no condition: only `break` leaves
         if cond is not None:
-            self.expr(cond, after)
+            enter, leave = self.condition(cond, after)
+            if self.runs_once(init, cond):
+                leave = None
         target = _Target(loop=True)
         self.targets.append(target)
-        end = self.nested(body, dict(after))
+        end = self.nested(body, dict(enter)) if enter is not None else None
         self.targets.pop()
         looped = _join([end, *target.continues])
         if looped is not None and step is not None:
             self.expr(step, looped)
-        if looped is not None and cond is not None:
-            self.expr(cond, looped)
+        again: State | None = None  # leaving after some iterations: looped ⊇ after, but a
+        if looped is not None and cond is not None:  # loop that surely runs has no `after`
+            _, again = self.condition(cond, looped)
         self.scopes.pop()
-        if cond is None or _is_true(cond):
-            exit_states: list[State | None] = []  # only `break` leaves
-        elif self.runs_once(init, cond):
-            exit_states = [looped]
-        else:
-            exit_states = [after]
-        return _join([*exit_states, *target.breaks])
+        return _join([leave, again, *target.breaks])
 
     def for_parts(self, node: Tree) -> tuple[Node | None, Node | None]:
         """The condition and the step of a for loop; either may be absent, and the tree does
@@ -388,22 +479,34 @@ class _Analyzer:
         return (None, only) if self.text[start:end].count(";") >= 2 else (only, None)
 
     def runs_once(self, init: Node, cond: Node) -> bool:
-        """Whether a counted loop certainly runs its body: `for (int i = A; i < B; ...)`."""
+        """Whether a counted loop certainly runs its body: `for (int i = A; i < B; ...)`, with
+        A and B int or float constants, const variables or anything else whose value ranges
+        compare (`for (float i = 1.5; i > 0.; i -= .002)`, `i < iterations`)."""
         start = _loop_start(init)
         if start is None or not (isinstance(cond, Tree) and cond.data == "binary"):
             return False
         left, op, right = cond.children
-        bound = _int_value(right)
-        if bound is None and isinstance(right, Tree) and right.data == "variable":
-            bound = self.consts.get(str(right.children[0]))
-        if bound is None or not (isinstance(left, Tree) and left.data == "variable"):
+        op = str(op)
+        if _is_variable(right, start[0]) and op in _FLIP:
+            left, op, right = right, _FLIP[op], left
+        if not _is_variable(left, start[0]) or op not in _FLIP:
             return False
-        if str(left.children[0]) != start[0]:
+        a, b = self.number(start[1]), self.number(right)
+        if a is None or b is None:
             return False
-        value = start[1]
-        checks = {"<": value < bound, "<=": value <= bound, ">": value > bound,
-                  ">=": value >= bound, "!=": value != bound}  # fmt: skip
-        return checks.get(str(op), False)
+        (a_lo, a_hi), (b_lo, b_hi) = a, b
+        checks = {"<": a_hi < b_lo, "<=": a_hi <= b_lo, ">": a_lo > b_hi,
+                  ">=": a_lo >= b_hi, "!=": a_hi < b_lo or a_lo > b_hi}  # fmt: skip
+        return checks[op]
+
+    def number(self, node: Node) -> tuple[float, float] | None:
+        """The range of a loop bound: an int constant of this file, else the value ranges."""
+        value = _int_value(node)
+        if value is None and isinstance(node, Tree) and node.data == "variable":
+            value = self.consts.get(str(node.children[0]))
+        if value is not None:
+            return value, value
+        return self.model.range(node) if self.model is not None else None
 
     def while_loop(self, node: Tree, state: State) -> State | None:
         cond, body = node.children
@@ -411,16 +514,17 @@ class _Analyzer:
         if isinstance(cond, Tree) and cond.data == "condition_declaration":
             self.expr(cond.children[-1], state)
             self.scopes[-1][str(cond.children[1])] = None
+            enter, leave = state, dict(state)
         else:
-            self.expr(cond, state)
+            enter, leave = self.condition(cond, state)
         target = _Target(loop=True)
         self.targets.append(target)
         # writes in the body only strengthen later tests: the first test's state is the exit's
-        self.nested(body, dict(state))
+        if enter is not None:
+            self.nested(body, dict(enter))
         self.targets.pop()
         self.scopes.pop()
-        exits: list[State | None] = [] if _is_true(cond) else [state]
-        return _join([*exits, *target.breaks])
+        return _join([leave, *target.breaks])
 
     def do_loop(self, node: Tree, state: State) -> State | None:
         body, cond = node.children
@@ -429,10 +533,8 @@ class _Analyzer:
         end = self.nested(body, dict(state))
         self.targets.pop()
         looped = _join([end, *target.continues])
-        if looped is not None:
-            self.expr(cond, looped)
-        exits = [] if _is_true(cond) else [looped]
-        return _join([*exits, *target.breaks])
+        leave = self.condition(cond, looped)[1] if looped is not None else None
+        return _join([leave, *target.breaks])
 
     def switch(self, node: Tree, state: State) -> State | None:
         self.expr(node.children[0], state)
@@ -482,10 +584,13 @@ class _Analyzer:
             self.write(target, state)
         elif kind == "ternary":
             cond, yes, no = node.children
-            self.expr(cond, state)
-            a, b = dict(state), dict(state)
-            self.expr(yes, a)
-            self.expr(no, b)
+            on_true, on_false = self.condition(cond, state)
+            a = dict(on_true) if on_true is not None else None
+            b = dict(on_false) if on_false is not None else None
+            if a is not None:
+                self.expr(yes, a)
+            if b is not None:
+                self.expr(no, b)
             state.update(_join([a, b]) or {})
         elif kind == "call":
             self.call(node, state)
@@ -493,6 +598,51 @@ class _Analyzer:
             for child in node.children:
                 if isinstance(child, Tree) and child.data != "type_specifier":
                     self.expr(child, state)
+
+    def condition(self, node: Node, state: State) -> tuple[State | None, State | None]:
+        """Evaluate a condition: the states where it is true and where it is false (None: it
+        cannot be). Inside `a && b` being true, b ran; `a || b` false ran both; a comparison
+        the value ranges decide leaves one side only. Mutates `state` (its first operand runs
+        on every path); the true state may be `state` itself."""
+        if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "!":
+            no, yes = self.condition(node.children[1], state)
+            return self.decided(node, yes, no)
+        if not (isinstance(node, Tree) and node.data == "binary"
+                and str(node.children[1]) in ("&&", "||")):  # fmt: skip
+            self.expr(node, state)
+            return self.decided(node, state, dict(state))
+        op = str(node.children[1])
+        spine = [node]  # `a && b && c` parses ((a && b) && c): walk the left spine iteratively
+        first: Node = node.children[0]
+        while (isinstance(first, Tree) and first.data == "binary"
+               and str(first.children[1]) == op):  # fmt: skip
+            spine.append(first)
+            first = first.children[0]
+        operands = [first, *(link.children[2] for link in reversed(spine))]
+        current: State | None = state
+        others: list[State | None] = []  # the states that decide the chain early
+        for operand in operands:
+            if current is None:
+                break  # decided before this operand: it does not run
+            yes, no = self.condition(operand, current)
+            current, other = (yes, no) if op == "&&" else (no, yes)
+            others.append(other)
+        decided = _join(others)
+        yes, no = (current, decided) if op == "&&" else (decided, current)
+        return self.decided(node, yes, no)
+
+    def decided(
+        self, node: Node, yes: State | None, no: State | None
+    ) -> tuple[State | None, State | None]:
+        """Drop the side of a condition that the value ranges say cannot happen."""
+        truth = self.model.truth(node) if self.model is not None else None
+        if truth is None and _is_true(node):
+            truth = True
+        if truth is True:
+            return yes, None
+        if truth is False:
+            return None, no
+        return yes, no
 
     def chain(self, node: Tree, state: State) -> None:
         """Binary operators and sequences; left-deep chains (`a + b + c + ...`) are walked
@@ -518,13 +668,15 @@ class _Analyzer:
         is_name = isinstance(callee, Tree) and callee.data == "variable"
         name = str(callee.children[0]) if is_name else ""  # type: ignore[union-attr]
         qualifiers = self.qualifiers(name, len(args))
+        summary = self.summaries.get((name, len(args))) if name in self.signatures else None
         written = []
-        for arg, qualifier in zip(args, qualifiers, strict=True):
+        for position, (arg, qualifier) in enumerate(zip(args, qualifiers, strict=True)):
             lvalue = _root(arg) is not None
             if qualifier == "in" or not lvalue:
                 self.expr(arg, state)
             elif qualifier == "inout":
-                self.read(arg, state)
+                # the callee's summary: which components it may read before writing them
+                self.read(arg, state, part=None if summary is None else summary[position])
                 written.append(arg)
             else:  # out, or a function this file does not define: a write, never a read
                 self.indices(arg, state)
@@ -572,15 +724,25 @@ class _Analyzer:
                 comps = (comps[index],) if in_range else None  # type: ignore[index]
         return var, comps
 
-    def read(self, node: Node, state: State, indices: bool = True) -> None:
+    def read(self, node: Node, state: State, indices: bool = True, part: int | None = None) -> None:
+        """Check a read of `node`; `part`: only these of its components (by position in the
+        expression's value: an inout argument whose callee reads `.zw` first)."""
         if indices:
             self.indices(node, state)
         var, comps = self.access(node)
         if var is None:
             return  # not tracked; `indices` evaluated whatever the chain starts from (`f().x`)
+        if part is not None and comps is not None:
+            comps = tuple(c for i, c in enumerate(comps) if part >> i & 1)
         mask = var.full if comps is None else sum(1 << c for c in set(comps))
+        if part == 0:
+            mask = 0
         missing = mask & ~state.get(id(var), var.full)
-        if missing and id(node) not in self.reported:
+        if missing and var.kind == "inout":  # the function's summary, not a finding
+            assert self.flow is not None
+            position = self.inout_position[id(var)]
+            self.flow.inout_reads[position] = (self.flow.inout_reads[position] or 0) | missing
+        elif missing and id(node) not in self.reported:
             self.reported.add(id(node))
             assert self.flow is not None
             self.flow.reads.append(Read(var, node, missing))
@@ -620,8 +782,15 @@ def _start_pos(node: Node) -> int | None:
     return None if node.meta.empty else node.meta.start_pos
 
 
-def _loop_start(init: Node) -> tuple[str, int] | None:
-    """(counter, first value) of `int i = A;` or `i = A;`."""
+_FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}
+
+
+def _is_variable(node: Node, name: str) -> bool:
+    return isinstance(node, Tree) and node.data == "variable" and str(node.children[0]) == name
+
+
+def _loop_start(init: Node) -> tuple[str, Node] | None:
+    """(counter, first value's expression) of `int i = A;` or `i = A;`."""
     if not isinstance(init, Tree):
         return None
     if init.data == "declaration_statement":
@@ -630,13 +799,11 @@ def _loop_start(init: Node) -> tuple[str, int] | None:
         if single and decl.data == "variable_declaration":  # type: ignore[union-attr]
             declarator = decl.children[1]  # type: ignore[union-attr]
             if isinstance(declarator, Tree) and len(declarator.children) == 2:
-                value = _int_value(declarator.children[1])
-                if value is not None:
-                    return str(declarator.children[0]), value
+                return str(declarator.children[0]), declarator.children[1]
     if init.data == "expression_statement":
         expr = init.children[0]
         if isinstance(expr, Tree) and expr.data == "assignment" and expr.children[1] == "=":
-            target, value = expr.children[0], _int_value(expr.children[2])
-            if isinstance(target, Tree) and target.data == "variable" and value is not None:
-                return str(target.children[0]), value
+            target = expr.children[0]
+            if isinstance(target, Tree) and target.data == "variable":
+                return str(target.children[0]), expr.children[2]
     return None

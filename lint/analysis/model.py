@@ -1278,3 +1278,36 @@ def semantic_model(ctx: LintContext) -> Model:
             raise ValueError("semantic_model needs a parsed file")
         model = ctx.cache["model"] = Model(ctx.tree)
     return model
+
+
+def condition_truth(model: Model, cond: Node) -> bool | None:
+    """Whether a comparison is true (True) or false (False) every time it is evaluated, from
+    the ranges of its scalar operands where the model evaluates them (`abs(uv.x) < 1.0` with
+    `uv` in [0, 1]); None when it may be either. The data-flow analysis (flow.py) follows only
+    the side of a branch that can be taken."""
+    if is_tree(cond, "bool_literal"):
+        return str(cond.children[0]) == "true"  # type: ignore[union-attr]
+    if not is_tree(cond, "binary"):
+        return None
+    left, op_token, right = cond.children  # type: ignore[union-attr]
+    op = str(op_token)
+    if op not in ("<", "<=", ">", ">=", "==", "!="):
+        return None
+    a, b = model.value_of(left), model.value_of(right)
+    if not (T.is_scalar(a.type) and T.is_scalar(b.type)):
+        return None
+    x, y = a.range, b.range
+    if x.lo > x.hi or y.lo > y.hi:
+        return None  # an empty range: a branch the model found unreachable, no fact
+    if op in (">", ">="):
+        x, y, op = y, x, {">": "<", ">=": "<="}[op]
+    if op == "<":
+        return True if x.hi < y.lo else False if x.lo >= y.hi else None
+    if op == "<=":
+        return True if x.hi <= y.lo else False if x.lo > y.hi else None
+    equal = None
+    if x.hi < y.lo or y.hi < x.lo:
+        equal = False
+    elif x.is_point and y.is_point:
+        equal = True
+    return equal if op == "==" or equal is None else not equal

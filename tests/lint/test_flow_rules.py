@@ -179,6 +179,71 @@ def test_c103_quiet_when_assigned_or_unsure(body: str) -> None:
     assert found(image(body, head)) == []
 
 
+# --- conditions, loop bounds and callee summaries ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "loop",
+    [
+        "for (float i = 1.5; i > 0.; i -= .002)",
+        "for (float i = 8.; i > 0.; --i)",
+        "for (float i = 0.; i < ITER; i++)",  # a const float
+        "for (int i = N - 1; i >= 0; i--)",  # const arithmetic
+        "for (float i = 0.; 20. > i; i++)",  # the bound on the left
+    ],
+)
+def test_loops_with_numeric_constant_bounds_run(loop: str) -> None:
+    head = "const float ITER = 5.;\nconst int N = 4;\n"
+    body = f"float d;\n{loop} {{ d = 1.0; fragColor = vec4(d); }}\nfragColor.rgb *= d;"
+    assert found(image(body, head)) == []
+    # a loop that may not run still leaves them unwritten
+    body = "float d;\nfor (float i = 0.; i < iTime; i++) { d = 1.0; }\nfragColor = vec4(d);"
+    assert found(image(body, head)) == [("C103", 6)]
+
+
+def test_and_condition_true_means_both_sides_ran() -> None:
+    head = "bool get(out vec3 v) { v = vec3(1.0); return true; }\n"
+    body = ("vec3 v; fragColor = vec4(0.0);\n"
+            "if (fragCoord.x > 1.0 && get(v)) fragColor.rgb = v;\n"
+            "else fragColor.rgb = v;")  # fmt: skip
+    # the else joins (x <= 1: get did not run) and (get returned false): v may be unset
+    assert found(image(body, head)) == [("C103", 5)]
+    body = ("vec3 v; fragColor = vec4(0.0);\n"
+            "if (fragCoord.x > 1.0 || !get(v)) { } else fragColor.rgb = v;\n"
+            "fragColor.rgb = v;")  # fmt: skip
+    # || false: both sides ran; after the if, v is still unsure
+    assert found(image(body, head)) == [("C103", 5)]
+    body = "vec3 v; fragColor = (fragCoord.x > 1.0 && get(v)) ? vec4(v, 1.0) : vec4(0.0);"
+    assert found(image(body, head)) == []
+
+
+def test_condition_decided_by_value_ranges() -> None:
+    body = "float d;\nif (fract(fragCoord.x) < 2.0) d = 1.0;\nfragColor = vec4(d);"
+    assert found(image(body)) == []
+    body = "float d;\nif (fract(fragCoord.x) > 2.0) fragColor = vec4(d);\nfragColor = vec4(1.0);"
+    assert found(image(body)) == []  # a branch that is never taken reads nothing
+    body = "float d;\nif (fract(fragCoord.x) < 0.5) d = 1.0;\nfragColor = vec4(d);"
+    assert found(image(body)) == [("C103", 4)]  # may be either: still reported
+
+
+def test_inout_parameter_the_callee_only_writes_is_an_out() -> None:
+    head = "float march(inout float t, inout bool hit) { t = 0.; hit = false; return t; }\n"
+    body = "float t; bool hit; float d = march(t, hit); fragColor = vec4(t, d, 0.0, 1.0);"
+    assert found(image(body, head)) == []
+    head = "void shade(inout float t) { t = t * 2.0; }\n"
+    assert found(image("float t; shade(t); fragColor = vec4(t);", head)) == [("C103", 3)]
+
+
+def test_inout_summary_names_the_components_read_first() -> None:
+    head = "void mode(inout vec4 o, vec2 i) { o.xy = i; o = mod(o, .8); }\n"
+    findings = lint_source(image("mode(fragColor, fragCoord);", head), "x.glsl", FAST)
+    assert [f.code for f in findings] == ["C102"] and "fragColor.zw" in findings[0].message
+    # transitively: a function passing its own inout on inherits the callee's reads
+    head += "void wrap(inout vec4 c) { c.z = 0.0; mode(c, vec2(0.0)); }\n"
+    findings = lint_source(image("wrap(fragColor);", head), "x.glsl", FAST)
+    assert [f.code for f in findings] == ["C102"] and "fragColor.w" in findings[0].message
+
+
 # --- robustness -----------------------------------------------------------------------------
 
 
