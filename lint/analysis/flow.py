@@ -36,7 +36,7 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node
 from ..context import tokens as tokens_of
-from .model import Model, condition_truth, semantic_model
+from .model import Model, condition_truth, same_expression, semantic_model
 
 State = dict[int, int]  # id of a Var -> mask of written components
 SWIZZLE_SETS = ("xyzw", "rgba", "stpq")
@@ -574,6 +574,12 @@ class _Analyzer:
         elif kind == "assignment":
             target, op, value = node.children
             self.indices(target, state)
+            rest = _clearing(target, str(op), value)
+            if rest is not None:  # `O -= O`, `o = o*0. - d`: the old value does not matter
+                if not isinstance(rest, bool):
+                    self.expr(rest, state)
+                self.write(target, state)
+                return
             if op != "=":
                 self.read(target, state, indices=False)
             self.expr(value, state)
@@ -770,6 +776,56 @@ def _root(node: Node) -> Tree | None:
     while isinstance(node, Tree) and node.data in ("field", "index"):
         node = node.children[0]
     return node if isinstance(node, Tree) and node.data == "variable" else None
+
+
+def _is_zero(node: Node) -> bool:
+    if isinstance(node, Tree) and node.data in ("float_literal", "int_literal"):
+        text = str(node.children[0]).rstrip("fFuU").lower()
+        try:
+            return float(text) == 0.0 if not text.startswith("0x") else int(text, 16) == 0
+        except ValueError:
+            return False
+    return False
+
+
+def _cleared(expr: Node, target: Node) -> bool:
+    """Whether `expr` is the target times zero or minus itself (`x*0.`, `0.*x`, `x - x`)."""
+    if not (isinstance(expr, Tree) and expr.data == "binary"):
+        return False
+    left, op, right = expr.children
+    if str(op) == "-":
+        return same_expression(left, target) and same_expression(right, target)
+    if str(op) == "*":
+        return (same_expression(left, target) and _is_zero(right)) or (
+            _is_zero(left) and same_expression(right, target)
+        )
+    return False
+
+
+def _clearing(target: Node, op: str, value: Node) -> Node | bool | None:
+    """The golfing idioms that clear a variable before use (`O -= O`, `x *= 0.`, `x = x - x`,
+    `o = o*0. - d`): its old value is multiplied by zero or cancelled, so the assignment is a
+    write, not a read (only a NaN or an infinity in the old bits would survive). Returns what
+    else the value reads (`d`), True when nothing, None when it is no such idiom."""
+    if _root(target) is None:
+        return None
+    if op == "-=":
+        return True if same_expression(value, target) else None
+    if op == "*=":
+        return True if _is_zero(value) else None
+    if op != "=":
+        return None
+    if _cleared(value, target):
+        return True
+    if isinstance(value, Tree) and value.data == "binary":
+        left, op_token, right = value.children
+        if str(op_token) not in ("+", "-"):
+            return None
+        if _cleared(left, target):
+            return right
+        if str(op_token) == "+" and _cleared(right, target):
+            return left
+    return None
 
 
 def _is_true(node: Node) -> bool:

@@ -108,6 +108,27 @@ def test_c102_quiet_after_a_write() -> None:
     assert found(src) == []
 
 
+@pytest.mark.parametrize(
+    "body",
+    [
+        "fragColor -= fragColor; fragColor.rgb += vec3(1.0);",
+        "fragColor *= 0.; fragColor += vec4(1.0);",
+        "fragColor = fragColor - fragColor;",
+        "fragColor.xyz = vec3(1.0); fragColor = fragColor*0. - vec4(0.5); fragColor.a = 1.;",
+        "fragColor = 0.*fragColor + vec4(1.0);",
+        "fragColor.rgb = vec3(1.0); fragColor *= 0.5;",  # only the (invisible) alpha is undefined
+    ],
+)
+def test_c102_clearing_idioms_and_alpha_only(body: str) -> None:
+    assert found(image(body)) == []
+
+
+def test_c102_clearing_idiom_still_checks_the_rest() -> None:
+    assert found(image("float d;\nfragColor = fragColor*0. - d;")) == [("C103", 3)]
+    src = image("fragColor += fragColor * 0.;")  # += keeps the old value: not a clear
+    assert [c for c, _ in found(src)] == ["C102"]
+
+
 # --- C103 -----------------------------------------------------------------------------------
 
 
@@ -239,9 +260,9 @@ def test_inout_summary_names_the_components_read_first() -> None:
     findings = lint_source(image("mode(fragColor, fragCoord);", head), "x.glsl", FAST)
     assert [f.code for f in findings] == ["C102"] and "fragColor.zw" in findings[0].message
     # transitively: a function passing its own inout on inherits the callee's reads
-    head += "void wrap(inout vec4 c) { c.z = 0.0; mode(c, vec2(0.0)); }\n"
+    head += "void wrap(inout vec4 c) { c.w = 1.0; mode(c, vec2(0.0)); }\n"
     findings = lint_source(image("wrap(fragColor);", head), "x.glsl", FAST)
-    assert [f.code for f in findings] == ["C102"] and "fragColor.w" in findings[0].message
+    assert [f.code for f in findings] == ["C102"] and "`fragColor.z`" in findings[0].message
 
 
 # --- robustness -----------------------------------------------------------------------------

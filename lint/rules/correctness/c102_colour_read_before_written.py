@@ -10,11 +10,16 @@ from ...finding import Finding
 from .. import Rule, register
 from ._data_flow import main_colour
 
+_ALPHA = 1 << 3  # the missing mask of a read that lacks only `.w`
+
 
 @register
 class ColourReadBeforeWritten(Rule):
     """Finds mainImage's `out` colour read before it is written, such as `fragColor.rgb *= 0.5;` or
-    `fragColor += ...` as the first use.
+    `fragColor += ...` as the first use, or passed to an `inout` parameter that reads it (the
+    message names the components the callee reads before writing them). The clearing idioms
+    `O -= O`, `O *= 0.` and `o = o*0. - d` are writes, and a read that only misses the alpha is
+    not reported (ShaderToy never shows the Image pass's alpha).
 
     Why is this bad?
         An `out` parameter starts undefined, not as ShaderToy's black; reading it gives whatever the
@@ -50,7 +55,7 @@ class ColourReadBeforeWritten(Rule):
         for flow in function_flows(ctx):
             colour = main_colour(flow)
             for read in flow.reads:
-                if read.var is colour:
+                if read.var is colour and read.missing != _ALPHA:
                     what = f"`{read.var.name}{mask_names(read.var, read.missing)}`"
                     message = (
                         f"{what} is read before mainImage writes it; out parameters start undefined"
