@@ -340,6 +340,102 @@ def test_l007_tonemap_clamp_or_a_dim_single_light_are_fine() -> None:
     assert found(image(LIT + out)) == []
 
 
+def test_l005_a_2d_vector_a_hash_argument_or_a_ray_plane_dot_is_not_lighting() -> None:
+    # a "normal" must be a vec3 dotted with a light or view vector
+    vignette = image("    vec2 N = fragCoord / iResolution.xy - 0.5;\n"
+                     "    fragColor = vec4(vec3(1.0 - dot(N, N)), 1.0);")  # fmt: skip
+    head = "float hash(vec2 n) { return fract(sin(dot(n, vec2(12.9898, 4.1414))) * 43758.5); }\n"
+    hashed = image("    fragColor = vec4(vec3(hash(fragCoord)), 1.0);", head)
+    plane = image(
+        "    vec3 rd = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 n = vec3(0.0, 1.0, 0.0);\n"
+        "    float t = -1.0 / dot(rd, n);\n"
+        "    fragColor = vec4(vec3(fract(t)), 1.0);"
+    )
+    assert found(vignette) == found(hashed) == found(plane) == []
+
+
+def test_l005_a_lighting_term_that_never_reaches_the_colour_does_not_count() -> None:
+    dead = image(
+        "    vec3 n = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 lig = normalize(vec3(1.0));\n"
+        "    float diff = dot(lig, n);\n"
+        "    fragColor = vec4(0.5 + 0.5 * sin(n * 3.0), 1.0);"
+    )
+    assert found(dead, "L005") == []
+    live = dead.replace("sin(n * 3.0)", "sin(n * 3.0) * diff")
+    assert found(live, "L005") == [("L005", 5)]
+
+
+def test_l005_a_light_named_vector_or_a_light_struct_counts() -> None:
+    head = "struct Light { vec3 dir; vec3 color; };\n"
+    src = image(
+        "    vec3 nor = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    Light l = Light(normalize(vec3(1.0)), vec3(1.0));\n"
+        "    vec3 ligt = normalize(vec3(1.0, 2.0, 0.5));\n"
+        "    vec3 col = l.color * max(dot(nor, l.dir), 0.0) + 0.2 * max(dot(nor, ligt), 0.0);\n"
+        "    fragColor = vec4(col, 1.0);",
+        head,
+    )
+    assert found(src, "L005") == [("L005", 7)]
+
+
+@pytest.mark.parametrize(
+    "curve",
+    ["col = pow(clamp(col, 0.0, 1.0), vec3(0.8));", "col = pow(col, vec3(GAMMA)) * 1.1;"],
+)
+def test_l005_an_output_curve_the_author_chose_counts(curve: str) -> None:
+    src = image(LIT + f"    {curve}\n    fragColor = vec4(col, 1.0);", "#define GAMMA 1.3\n")
+    assert found(src, "L005") == []
+
+
+@pytest.mark.parametrize(
+    "out",
+    [
+        "fragColor = vec4(col, length(fragCoord) * 0.01);",  # depth or a blur strength in alpha
+        "fragColor = vec4(col, 1.0);\n    if (ivec2(fragCoord) == ivec2(0)) fragColor = vec4(1.0);",
+        "fragColor = vec4(n * 0.5 + 0.5, 1.0);",  # a G-buffer normal
+        "fragColor = vec4(col * 750.0 + 10.0 * vec3(0.5, 0.8, 1.0), 1.0);",  # HDR radiance
+        "fragColor = vec4(mix(vec3(0.0, 0.0, 1.0), vec3(1.0, 1.0, 0.0), step(0.5, col.x)), 1.0);",
+    ],
+)
+def test_l005_l007_a_buffer_pass_or_a_palette_is_not_a_displayed_linear_image(out: str) -> None:
+    assert found(image(LIT + f"    {out}"), "L005") == []
+    bright = LIT.replace("vec3(0.8) *", "vec3(2.0) *")
+    assert found(image(bright + "    fragColor = vec4(sqrt(col), 1.0);"), "L007") == [("L007", 5)]
+    assert found(image(bright + f"    {out}"), "L007") == []
+
+
+def test_l006_a_grade_or_a_mask_is_not_an_encoding() -> None:
+    grade = image(
+        LIT + "    vec3 uGamma = vec3(-0.25);\n"
+        "    col = pow(max(vec3(0.0), col), max(vec3(0.0), 1.0 - uGamma));\n"
+        "    fragColor = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);"
+    )
+    assert found(grade, "L006") == []
+    mask = image(
+        LIT + "    vec2 m = sqrt(abs(fract(fragCoord / 8.0) - 0.5));\n"
+        "    float k = pow(m.x * m.y, 0.5);\n"
+        "    fragColor = vec4(pow(col, vec3(1.0 / 2.2)) * k, 1.0);"
+    )
+    assert found(mask, "L006") == []
+
+
+def test_l007_a_clamp_in_the_function_that_returns_the_colour_counts() -> None:
+    head = (
+        "vec3 render(vec2 fragCoord) {\n"
+        "    vec3 n = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 lig = normalize(vec3(1.0));\n"
+        "    vec3 col = 2.0 * vec3(0.8) * max(dot(n, lig), 0.0);\n"
+        "    CLIP\n"
+        "    return col;\n"
+        "}\n"
+    )
+    out = "    fragColor = vec4(pow(render(fragCoord), vec3(0.4545)), 1.0);"
+    assert found(image(out, head.replace("CLIP", "")), "L007") == [("L007", 9)]
+    assert found(image(out, head.replace("CLIP", "col = clamp(col, 0., 1.);")), "L007") == []
+
+
 # --- L008 -----------------------------------------------------------------------------------
 
 SPLIT = """#define PI 3.14159265

@@ -618,7 +618,7 @@ def lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
         if used is not None and fn.name not in used:
             continue
         for node in calls_in(fn.body):
-            if call_name(node) != "dot" or cosine_of(node, fn) not in ("NL", "NV", "NH"):
+            if call_name(node) != "dot" or not _lighting_dot(node, fn):
                 continue
             if not all(_vec3_or_unknown(ctx, a) for a in call_args(node)):
                 continue
@@ -626,6 +626,36 @@ def lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
                 result.append((node, fn))
     ctx.cache["lighting.cosines"] = result
     return result
+
+
+_LIGHT_WORD = re.compile(r"light|lig|sun", re.I)
+
+
+def _light_like(node: Node, fn: Function) -> bool:
+    """A light (or view, half) vector by its role, or named after a light: `vLight`, `ligt`,
+    `sun.dir`, `l.dir` with l the light (a field of a light-named variable)."""
+    if vector_role(node, fn) in ("L", "V", "H"):
+        return True
+    base: Node = node
+    while isinstance(base, Tree) and (base.data in ("field", "index") or call_name(base) ==
+                                      "normalize" or base.data == "unary"):  # fmt: skip
+        base = call_args(base)[0] if call_name(base) == "normalize" else (
+            base.children[1] if base.data == "unary" else base.children[0])
+    name = var_name(base)
+    if name is None:
+        return False
+    return name_role(name) == "L" or bool(_LIGHT_WORD.search(name))
+
+
+def _lighting_dot(node: Tree, fn: Function) -> bool:
+    """dot(N, X) with X a light, view or half vector (see _light_like)."""
+    if cosine_of(node, fn) in ("NL", "NV", "NH"):
+        return True
+    args = call_args(node)
+    if len(args) != 2:
+        return False
+    roles = [vector_role(a, fn) for a in args]
+    return any(r == "N" and _light_like(args[1 - i], fn) for i, r in enumerate(roles))
 
 
 def lights_surface(ctx: LintContext) -> bool:

@@ -7,10 +7,8 @@ from collections.abc import Iterator
 from ...context import LintContext
 from ...finding import Finding
 from .. import Rule, register
-from ._common import ColourOutput, main_image, output_writes
-from ._terms import (
-    mentions_normal,
-)
+from ._common import ColourOutput, data_output, main_image, output_writes
+from ._terms import lights_surface
 
 
 @register
@@ -18,12 +16,17 @@ class MissingOutputTransfer(Rule):
     """Finds a lit shader that writes linear colour to the output without a gamma or sRGB encoding
     anywhere.
 
-    A shader counts as lit when it takes a dot product with a normal (2D art and image effects are
-    left alone: their colours are already display values). An encoding is a pow by an exponent of
-    0.38 to 0.5 (1/2.2, 0.4545, 1/2.4), a pow by something named gamma, a sqrt of a colour (gamma
-    2), or a function named like gamma/sRGB/outputTransfer; anywhere in the shader counts, since
-    where it sits is for L006 to judge. A buffer pass that hands linear colour to the Image pass is
-    correct without an encoding: suppress L005 there (`// glint: file-ignore[L005, L007]`).
+    A shader counts as lit when it shades a 3D surface: a dot of two vec3, a normal with a light,
+    view or half vector (by role or a light-like name), in code mainImage runs, whose value
+    reaches the colour (a term computed and never used does not count). 2D art, hashes of an
+    argument named n and ray-plane intersections are left alone. Any output curve the author
+    chose counts: an encoding (a pow by 0.38 to 0.5, a sqrt of a colour, a function named like
+    gamma/sRGB/outputTransfer), a pow of a colour by a constant in (0, 1), or a pow by an exponent
+    named gamma as written (`#define GAMMA 1.3`); anywhere in the shader, since where it sits is
+    for L006 to judge. Output that is data for another pass is left alone: a non-constant alpha,
+    a texel that stores state, a normal packed as n * 0.5 + 0.5, radiance of 10 or more with no
+    tone map, or a palette of constant colours. Other buffer passes that hand linear colour to the
+    Image pass: suppress L005 there (`// glint: file-ignore[L005, L007]`).
 
     Why is this bad?
         Lighting is computed in linear units, but the display expects sRGB-encoded values; without
@@ -53,7 +56,9 @@ class MissingOutputTransfer(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         found = main_image(ctx)
-        if found is None or not mentions_normal(ctx) or ColourOutput(ctx).any_gamma():
+        if found is None or not lights_surface(ctx) or ColourOutput(ctx).any_curve():
+            return
+        if data_output(ctx):
             return
         fn, out = found
         writes = output_writes(fn, out)

@@ -23,7 +23,9 @@ class DoubleGamma(Rule):
     Traced in source order through mainImage: a variable assigned an encoded value stays encoded
     while it is reassigned from itself; encoding it again (directly, or through a function whose
     result is an encoded value) is reported, as is an encoding nested in another anywhere. Branches
-    are not told apart.
+    are not told apart. An encoding is what L005 takes for one, on a colour (a vec3 or vec4, not a
+    vec2 or a float mask), with an exponent in the encoding window: a lift/gamma/gain grade such
+    as `pow(col, 1.0 - uGamma)` with a value of 1.25 is not one.
 
     Why is this bad?
         Encoding twice is gamma 4.84 instead of 2.2: the image looks washed out and flat, with

@@ -13,11 +13,13 @@ from ...finding import Finding
 from .. import Rule, register
 from ._common import (
     ColourOutput,
+    data_output,
     is_lobe,
     is_vector,
     main_image,
     output_writes,
     product_factors,
+    rough_bound,
     short_text,
 )
 from ._terms import (
@@ -25,15 +27,15 @@ from ._terms import (
     binary_op,
     call_args,
     call_name,
+    callable_from_main,
     calls_in,
     const_value,
     cosine_of,
     functions,
     global_constants,
-    mentions_normal,
+    lights_surface,
     operands,
     parents,
-    resolve,
     root_var,
 )
 
@@ -50,50 +52,6 @@ def _light_terms(fn: Function, up: dict[int, Tree]) -> list[Node]:
     return terms
 
 
-def _bound(node: Node, fn: Function, names: dict[str, float], depth: int = 6) -> float | None:
-    """A rough upper bound of a light term from its constants: cosines, lobes and values the
-    code does not say are taken as at most 1, so only explicit intensities raise it; None
-    when a divisor is not a constant."""
-    if depth <= 0 or not isinstance(node, Tree):
-        return 1.0
-    value = const_value(node, names)
-    if value is not None:
-        return abs(value)
-    if node.data == "constructor":
-        values = [const_value(a) for a in call_args(node)]
-        known = [abs(v) for v in values if v is not None]
-        return max(known) if known and len(known) == len(values) else 1.0
-    if node.data == "variable":
-        resolved = resolve(node, fn, 1)
-        return 1.0 if resolved is node else _bound(resolved, fn, names, depth - 1)
-    op = binary_op(node)
-    if op in ("*", "/"):
-        top, bottom = product_factors(node)
-        result = 1.0
-        for factor in top:
-            b = _bound(factor, fn, names, depth - 1)
-            if b is None:
-                return None
-            result *= b
-        for factor in bottom:
-            divisor = const_value(factor, names)
-            if divisor is None:
-                divisor = _bound(factor, fn, names, depth - 1) if binary_op(factor) == "+" else None
-            if not divisor:
-                return None
-            result /= divisor
-        return result
-    if op == "+":
-        parts = [_bound(p, fn, names, depth - 1) for p in operands(node, "+")]
-        return None if any(p is None for p in parts) else sum(parts)  # type: ignore[arg-type]
-    if op == "-":
-        return _bound(node.children[0], fn, names, depth - 1)
-    if call_name(node) == "clamp" and len(call_args(node)) == 3:
-        hi = const_value(call_args(node)[2])
-        return abs(hi) if hi is not None else 1.0
-    return 1.0
-
-
 @register
 class HdrWithoutTonemap(Rule):
     """Finds lighting that can exceed 1 written to the output without a tone map.
@@ -104,8 +62,9 @@ class HdrWithoutTonemap(Rule):
     product of the term's constants (an intensity such as `2.0 * sunColor`, `vec3(1.3, 1.0, 0.7)`,
     divided by the constant divisors such as π), with cosines, lobes and values the code does not
     spell out taken as at most 1. A clamp (clamp(col, 0.0, 1.0) or min(col, 1.0)) is not a tone map,
-    but it shows that the author chose to clip, so it is not reported either; this rule is for code
-    that never considered the range.
+    but it shows that the author chose to clip, so it is not reported either, whether it is in
+    mainImage or in the colour a function it runs returns; this rule is for code that never
+    considered the range. "Lit" and the buffer-pass signals are L005's.
 
     Why is this bad?
         The display clips each channel at 1, so bright highlights and sums of lights lose their hue
@@ -135,7 +94,7 @@ class HdrWithoutTonemap(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         found = main_image(ctx)
-        if found is None or not mentions_normal(ctx):
+        if found is None or not lights_surface(ctx) or data_output(ctx):
             return
         output = ColourOutput(ctx)
         if output.any_tonemap():
@@ -154,15 +113,16 @@ class HdrWithoutTonemap(Rule):
             )
 
     def _clipped(self, ctx: LintContext) -> bool:
+        """A clip in mainImage, or in the colour a function it runs returns (render() ending
+        in `col = clamp(col, 0., 1.)`, `return vec4(clamp(col, 0., 1.), m)`)."""
         found = main_image(ctx)
         assert found is not None
         fn, _ = found
-        for node in calls_in(fn.body):
-            name = call_name(node)
-            args = call_args(node)
-            if name in ("clamp", "saturate") and args and is_vector(ctx, args[0]):
-                return True
-            if name == "min" and any(const_value(a) == 1.0 for a in args):
+        if any(_clip(ctx, node) for node in calls_in(fn.body)):
+            return True
+        defined = {f.name: f for f in functions(ctx)}
+        for name in callable_from_main(ctx) or ():
+            if name != fn.name and _returns_clipped(ctx, defined[name]):
                 return True
         return False
 
@@ -183,7 +143,7 @@ class HdrWithoutTonemap(Rule):
     def _hi(self, ctx: LintContext, node: Node, fn: Function) -> float | None:
         """The model's finite upper bound, else the bound from the code's constants."""
         hi = _bounded_hi(ctx, node)
-        return hi if hi is not None else _bound(node, fn, global_constants(ctx))
+        return hi if hi is not None else rough_bound(node, fn, global_constants(ctx))
 
     def _summed(self, ctx: LintContext, fn: Function, terms: list[Node]) -> str:
         ids = {id(t) for t in terms}
@@ -209,6 +169,35 @@ class HdrWithoutTonemap(Rule):
                     if len(added) >= 2 and may_exceed(added):
                         return f"light terms accumulated into `{target}` in {fn.name}"
         return ""
+
+
+def _clip(ctx: LintContext, node: Node) -> bool:
+    name = call_name(node)
+    args = call_args(node) if name else []  # type: ignore[arg-type]
+    if name in ("clamp", "saturate") and args and is_vector(ctx, args[0]):
+        return True
+    return name == "min" and any(const_value(a) == 1.0 for a in args)
+
+
+def _returns_clipped(ctx: LintContext, fn: Function) -> bool:
+    """Whether the function returns a clipped colour: a clip (inside a constructor too), or a
+    variable last given one."""
+    for node in walk(fn.body):
+        if node.data != "jump_statement" or len(node.children) != 2:
+            continue
+        value = node.children[1]
+        while isinstance(value, Tree) and value.data == "constructor" and call_args(value):
+            value = call_args(value)[0]
+        if _clip(ctx, value):
+            return True
+        name = root_var(value)
+        if name is None:
+            continue
+        writes = [w.children[2] for w in walk(fn.body)
+                  if w.data == "assignment" and root_var(w.children[0]) == name]  # fmt: skip
+        if writes and _clip(ctx, writes[-1]):
+            return True
+    return False
 
 
 def _bounded_hi(ctx: LintContext, node: Node) -> float | None:
