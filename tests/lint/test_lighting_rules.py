@@ -233,6 +233,33 @@ def test_l004_normalized_lobe_or_no_pbr_term_is_fine() -> None:
     assert found(alone) == []
 
 
+def test_l002_wrap_lighting_and_projections_stay_signed() -> None:
+    body = (
+        "    vec3 N = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 L = normalize(vec3(1.0));\n"
+        "    float dn = fragCoord.x * 0.01;\n"
+        "    float nl = dot(N, L);\n"
+        "    vec3 t = L - N * nl;\n"
+        "    vec3 wrap = vec3(1.0) * (0.6 + dn * dot(N, L) * 0.4);\n"
+        "    vec3 raw = vec3(0.8) * dn * dot(N, L);\n"
+        "    fragColor = vec4(wrap + raw + t, 1.0);"
+    )
+    assert found(image(body), "L002") == [("L002", 8)]
+
+
+def test_l004_a_lobe_or_fresnel_that_is_never_used_is_not_reported() -> None:
+    head = "vec3 fresnelSchlick(float c, vec3 f0) { return f0 + (1.0 - f0) * pow(1.0 - c, 5.0); }\n"
+    body = (
+        "    vec3 n = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));\n"
+        "    vec3 h = normalize(vec3(0.2, 0.3, 1.0));\n"
+        "    vec3 fres = fresnelSchlick(dot(n, h), vec3(0.04));\n"
+        "    float spec = pow(max(dot(n, h), 0.0), 20.0);\n"
+        "    fragColor = vec4(OUT, 1.0);"
+    )
+    assert found(image(body.replace("OUT", "fres * spec"), head), "L004") == [("L004", 6)]
+    assert found(image(body.replace("OUT", "n * 0.2"), head), "L004") == []
+
+
 # --- L005 / L006 / L007 ---------------------------------------------------------------------
 
 LIT = (

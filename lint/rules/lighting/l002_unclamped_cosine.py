@@ -18,6 +18,7 @@ from ._terms import (
     const_value,
     cosine_of,
     functions,
+    is_unit,
     may_be_negative,
     names_in,
     operands,
@@ -25,6 +26,7 @@ from ._terms import (
     resolve,
     root_var,
     var_name,
+    vector_role,
 )
 
 _DIFFUSE_FUNCTION = re.compile(r"diffuse|lambert|brdf|shade|light|illum|^fd|^dif", re.I)
@@ -46,7 +48,9 @@ class UnclampedCosine(Rule):
     a colour (a vec3/vec4 factor or target) or returned bare by a function named like diffuse,
     Lambert, BRDF, shade or light. A cosine that the function compares (`if (ndl > 0.0)`) is taken
     as guarded, and a product with a scalar constant only (half-Lambert's `dot(N, L) * 0.5 + 0.5`)
-    is not a lighting term.
+    is not a lighting term; nor is wrap lighting with any scale (`0.6 + density * dot(N, L) *
+    0.4`: a positive constant plus the scaled cosine), nor a direction scaled by a cosine (`v - n
+    * nv`, a projection, which must stay signed).
 
     Why is this bad?
         On the side facing away from the light the cosine is negative, and the product subtracts
@@ -77,6 +81,7 @@ class UnclampedCosine(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
+        self._ctx = ctx
         up = parents(ctx.tree)
         for fn in functions(ctx):
             compared = self._compared(fn)
@@ -91,7 +96,12 @@ class UnclampedCosine(Rule):
                     # a scalar constant scales the cosine (half-Lambert); a colour does not
                     others = [c for c in candidates if const_value(c) is None
                               or (isinstance(c, Tree) and c.data == "constructor")]  # fmt: skip
-                    colour = len(others) >= 2 and self._colour(node, candidates, fn, up)
+                    colour = (
+                        len(others) >= 2
+                        and not self._geometry(candidates, fn)
+                        and not self._wrapped(node, up)
+                        and self._colour(node, candidates, fn, up)
+                    )
                 else:
                     continue
                 if not colour:
@@ -103,6 +113,29 @@ class UnclampedCosine(Rule):
                         and may_be_negative(ctx, operand)
                     ):
                         yield self._finding(ctx, operand, fn)
+
+    def _geometry(self, factors: list[Node], fn: Function) -> bool:
+        """`n * nv`: a direction (a normal, light, view or half vector) scaled by a cosine is a
+        projection (v - n * dot(n, v) is v's tangent part), which must stay signed."""
+        for f in factors:
+            role = vector_role(f, fn)
+            if role is not None and cosine_of(f, fn) is None and (
+                role == "N" or is_unit(self._ctx, f)
+            ):  # a colour may be named `light`; a unit vector is a direction
+                return True
+        return False
+
+    def _wrapped(self, node: Tree, up: dict[int, Tree]) -> bool:
+        """`a + s * dot(N, L)` with a positive constant a: wrap lighting (half-Lambert with any
+        scale, such as a density), whose negative side is meant to darken, not to subtract."""
+        current: Node = node
+        while (parent := up.get(id(current))) is not None and binary_op(parent) in ("+", "*"):
+            if binary_op(parent) == "+":
+                others = [p for p in operands(parent, "+") if p is not current]
+                if any((const_value(p) or 0.0) > 0.0 for p in others):
+                    return True
+            current = parent
+        return False
 
     def _raw(self, node: Node, fn: Function, compared: set[str]) -> bool:
         value = resolve(node, fn)

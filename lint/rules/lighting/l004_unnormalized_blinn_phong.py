@@ -14,6 +14,7 @@ from ._terms import (
     binary_op,
     call_args,
     call_name,
+    callable_from_main,
     calls_in,
     const_value,
     cosine_of,
@@ -21,6 +22,8 @@ from ._terms import (
     is_fresnel_name,
     names_in,
     operands,
+    parents,
+    reaches_output,
     schlick_base,
 )
 
@@ -31,11 +34,20 @@ _NORM_NAME = re.compile(r"norm(?!al)", re.I)
 
 
 def _has_pbr(ctx: LintContext) -> bool:
+    """Physically based terms that are used: a GGX/Smith/Fresnel function that mainImage runs, or
+    a Schlick Fresnel or Fresnel call whose value reaches its function's result."""
+    used = callable_from_main(ctx)
+    assert ctx.tree is not None
+    up = parents(ctx.tree)
     for fn in functions(ctx):
-        if _PBR_NAME.search(fn.name) or is_fresnel_name(fn.name):
+        if used is not None and fn.name not in used:
+            continue
+        if fn.name != "mainImage" and (_PBR_NAME.search(fn.name) or is_fresnel_name(fn.name)):
             return True
         for node in calls_in(fn.body):
-            if schlick_base(node) is not None or is_fresnel_name(call_name(node)):
+            if (schlick_base(node) is not None or is_fresnel_name(call_name(node))) and (
+                reaches_output(ctx, node, fn, up)
+            ):
                 return True
     return False
 
@@ -46,8 +58,9 @@ class UnnormalizedBlinnPhong(Rule):
     factor, in a shader that also has physically based terms (Fresnel, GGX, Smith, Cook-Torrance).
 
     The lobe is pow(x, n) with x a known N·H (names and dot(N, H)) and n not 5 (that is a Fresnel
-    shape); it counts as normalized when `n + 8`, `n + 2` (or + 1, 4, 6) appears anywhere in the
-    shader, or a name like normFactor multiplies it in the same function.
+    shape) whose value reaches the colour (dead code is not reported, nor counted as physically
+    based evidence); it counts as normalized when `n + 8`, `n + 2` (or + 1, 4, 6) appears anywhere
+    in the shader, or a name like normFactor multiplies it in the same function.
 
     Why is this bad?
         The peak of pow(N·H, n) is 1 whatever n is, so the energy it reflects falls as the lobe
@@ -78,10 +91,14 @@ class UnnormalizedBlinnPhong(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         lobes = []
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
         for fn in functions(ctx):
             for node in calls_in(fn.body):
                 if call_name(node) != "pow" or len(call_args(node)) != 2:
                     continue
+                if not reaches_output(ctx, node, fn, up):
+                    continue  # a lobe that is computed and never used
                 base, exponent = call_args(node)
                 if const_value(exponent) == 5.0 or cosine_of(base, fn) != "NH":
                     continue
