@@ -189,15 +189,17 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec3 a = normalize(normalize(rd + kSun));
     vec3 b = normalize(rd);
     vec3 c = normalize(reflect(rd, kSun)).xzy;
-    vec3 d = normalize(-kSun);
-    float e = normalize(-kSun).x;
+    vec3 l = normalize(vec3(iMouse.xy, 1.0));
+    vec3 d = normalize(-l);
+    float e = normalize(-l).x;
     fragColor = vec4(a + b + c + d, e);
 }
 """
 
 
 def test_pf003_reports_normalize_of_unit_vectors() -> None:
-    assert [line for _, line, _ in found(UNITS, "PF003")] == [4, 5, 6, 7, 8]
+    # normalize(-kSun) of the const kSun would be folded by the compiler: -l is a runtime value
+    assert [line for _, line, _ in found(UNITS, "PF003")] == [4, 5, 6, 8, 9]
 
 
 def test_pf003_fix_drops_the_outer_normalize() -> None:
@@ -205,8 +207,8 @@ def test_pf003_fix_drops_the_outer_normalize() -> None:
     assert "vec3 a = normalize(rd + kSun);" in out
     assert "vec3 b = rd;" in out
     assert "vec3 c = reflect(rd, kSun).xzy;" in out
-    assert "vec3 d = -kSun;" in out
-    assert "float e = (-kSun).x;" in out  # a field after it needs the parentheses
+    assert "vec3 d = -l;" in out
+    assert "float e = (-l).x;" in out  # a field after it needs the parentheses
     assert fixed(out) == out and found(out, "PF003") == []
 
 
@@ -224,6 +226,21 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 
 
 @needs_glslang
+def test_pf003_leaves_constants_and_comma_sequenced_writes_alone() -> None:
+    text = image(
+        "    vec3 up = normalize(vec3(0.0, 1.0, 0.0));\n"
+        "    vec3 fwd = normalize(DIR);\n"
+        "    vec3 m = vec3(0.0, 0.0, 1.0);\n"
+        "    m = normalize(m);\n"
+        "    vec3 no = normalize(vec3(fragCoord, 1.0));\n"
+        "    if (fragCoord.x > 5.) no -= 0.2, no = normalize(no);\n"
+        "    vec3 r = normalize(no);\n"
+        "    fragColor = vec4(up + fwd + m + r, 1.0);",
+        "const vec3 DIR = normalize(vec3(1.0, 2.0, 3.0));\n",
+    )
+    assert [line for _, line, _ in found(text, "PF003")] == [9]
+
+
 def test_pf003_fixed_shader_validates() -> None:
     out = fixed(UNITS)
     assert [d for d in validate(out, "x.glsl", "shadertoy") if d.severity == "error"] == []

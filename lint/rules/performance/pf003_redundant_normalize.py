@@ -13,12 +13,15 @@ from ..lighting._terms import (
     Function,
     call_args,
     call_name,
+    folded,
     functions,
     is_unit,
     names_in,
+    out_param_map,
     parents,
     resolve,
     var_name,
+    writes_of,
 )
 from ._common import needs_parens
 
@@ -65,13 +68,38 @@ def _const_values(ctx: LintContext) -> dict[str, Node]:
     return values
 
 
+def _written_earlier_in_sequence(
+    node: Tree, inner: Node, up: dict[int, Tree], outs: dict[str, list[int]]
+) -> bool:
+    """Whether an earlier operand of a comma expression around the call writes a variable the
+    argument reads: operands run left to right, so that write comes between the variable's
+    declaration (or last assignment) and this use."""
+    reads = names_in(inner)
+    current: Node = node
+    while (parent := up.get(id(current))) is not None:
+        if parent.data == "sequence":
+            for operand in parent.children:
+                if operand is current:
+                    break
+                if isinstance(operand, Tree) and any(
+                    writes_of(sub, outs) & reads for sub in walk(operand)
+                ):
+                    return True
+        current = parent
+    return False
+
+
 @register
 class RedundantNormalize(Rule):
     """Finds normalize() of a vector that is already unit length: normalize(normalize(x)), a
     variable whose only value came from normalize, a reflect of unit vectors.
 
     Only vectors that are unit by construction are reported, never parameters (whose callers may
-    pass anything).
+    pass anything), nor a constant (`normalize(vec3(0, 1, 0))`, a `const` direction: the
+    compiler folds it, and the form keeps the direction easy to edit), nor a variable that an
+    earlier operand of the same comma expression changes.
+
+    Opt-in: once constants are excluded, what remains is real but usually one rsqrt per pixel.
 
     Why is this bad?
         normalize is a dot product, an inverse square root and a multiply; doing it twice is waste,
@@ -98,11 +126,13 @@ class RedundantNormalize(Rule):
     category = "performance"
     severity = "info"
     fixable = "safe"
+    default = False
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
         up = parents(ctx.tree)
         consts = _const_values(ctx)
+        outs = out_param_map(ctx)
         for fn in functions(ctx):
             for node in walk(fn.body):
                 if call_name(node) != "normalize":
@@ -111,6 +141,10 @@ class RedundantNormalize(Rule):
                 if len(args) != 1:
                     continue
                 inner = args[0]
+                if folded(ctx, inner, fn):
+                    continue  # normalize of a constant is folded by the compiler: it costs nothing
+                if _written_earlier_in_sequence(node, inner, up, outs):
+                    continue  # `no -= d, no = normalize(no)`: the first operand runs first
                 # The model's unit facts about parameters come from today's callers; a
                 # normalize that guards a parameter is kept for tomorrow's.
                 modelled = not (names_in(inner) & set(fn.params)) and is_unit(ctx, inner)
