@@ -45,6 +45,7 @@ from .ranges import (
     log_range,
     mix_range,
     mod_range,
+    poly_range,
     pow_range,
     sign_range,
     sin_range,
@@ -72,6 +73,16 @@ class Value:
     origin: str | None = None
     zero: bool = False
     comps: tuple[Interval, ...] | None = None  # per component of a vector, when known
+    # Where the evidence of a 0 comes from, when it is far from the expression (a parameter
+    # given an unclamped dot product at a call site): for messages.
+    why: str | None = None
+    # Relations to other variables (`x < y` inside `if (x < y)`): (part, op, name, value)
+    # says self (or its component `part`, "" for the whole) op name, while the variable
+    # `name` names (or is the base of) still holds that very Value object.
+    rel: tuple[tuple[str, str, str, Value], ...] = ()
+    # The variables (name, value) this vector is known orthogonal to: a cross product's
+    # operands, and so normalize(cross(a, b)).
+    ortho: tuple[tuple[str, Value], ...] = ()
 
     def __post_init__(self) -> None:
         if self.comps is not None:  # the range is always the hull of the components
@@ -98,6 +109,9 @@ class Value:
             self.origin if self.origin == other.origin else None,
             self.zero or other.zero,
             comps,
+            self.why or other.why,
+            _common_facts(self.rel, other.rel),
+            _common_facts(self.ortho, other.ortho),
         )
 
     def unknown(self) -> Value:
@@ -105,16 +119,26 @@ class Value:
         return Value(self.type)
 
 
+# The largest framebuffer or texture side a GPU offers: a resolution is finite, so a positive
+# constant over it (2.0 / iResolution.y, a pixel's width) is strictly positive.
+MAX_RESOLUTION = 16384.0
+def _common_facts(a: tuple, b: tuple) -> tuple:  # type: ignore[type-arg]
+    """The facts that hold on both paths (the same fact about the very same value)."""
+    if not a or not b:
+        return ()
+    return tuple(f for f in a if any(f[:-1] == g[:-1] and f[-1] is g[-1] for g in b))
+
+
 # ShaderToy's uniforms: times and counts never go below zero, a resolution is at least a pixel.
 SHADERTOY_RANGES: dict[str, Interval] = {
-    "iResolution": Interval(1.0, INF),
+    "iResolution": Interval(1.0, MAX_RESOLUTION),
     "iTime": NONNEG,
     "iTimeDelta": NONNEG,
     "iFrame": NONNEG,
     "iFrameRate": NONNEG,
     "iDate": NONNEG,
     "iChannelTime": NONNEG,
-    "iChannelResolution": Interval(1.0, INF),  # a channel a shader reads is bound
+    "iChannelResolution": Interval(1.0, MAX_RESOLUTION),  # a channel a shader reads is bound
     "iSampleRate": NONNEG,
     "gl_FragCoord": NONNEG,
 }
@@ -390,16 +414,27 @@ class Model:
 
     def _analyse(self) -> None:
         self._global_env: Env = self._globals.flat()
-        for rnd in range(2):  # the second round knows the arguments each parameter gets
+        # Round 0 knows nothing of parameters; each later round knows the arguments the round
+        # before passed them, so facts reach one call deeper per round (N·V computed in
+        # shade() and passed on to a visibility term needs two). The last round only reads.
+        called = {callee_name(c) for c in walk(self.tree) if c.data == "call"}
+        deep = sum(1 for n in self.tree.children if is_tree(n, "function_definition")
+                   and str(n.children[0].children[1]) in called) > 1  # type: ignore  # fmt: skip
+        rounds = _ROUNDS if deep else 2
+        for rnd in range(rounds):
             self._globals = Scopes([dict(_shadertoy_values())])
             self.functions = {}
-            self._collecting = rnd == 0
+            self._collecting = rnd < rounds - 1
+            self._reading = rnd > 0
+            self._new_params: dict[tuple[str, int], list[Value]] = {}
             for node in self.tree.children:
                 if is_tree(node, "function_definition"):
                     self._function(node)  # type: ignore[arg-type]
                 elif is_tree(node, "variable_declaration"):
                     self._declaration(node, self._globals, is_global=True)  # type: ignore[arg-type]
             self._global_env = self._globals.flat()
+            if self._collecting:
+                self._params = self._new_params
         self._memo.clear()
 
     def _collect_structs(self) -> None:
@@ -440,7 +475,7 @@ class Model:
         spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
         fn = Function(name, node, spec_text(spec), params)
         scopes = Scopes([self._globals.flat()])
-        facts = None if self._collecting else self._params.get((name, len(params)))
+        facts = self._params.get((name, len(params))) if self._reading else None
         scopes.push()
         for i, (qualifier, ptype, pname) in enumerate(params):
             if not pname:
@@ -449,7 +484,7 @@ class Model:
             if name == "mainImage" and pname == "fragCoord":
                 value = Value(ptype, NONNEG)
             elif facts is not None and "out" not in qualifier.split():
-                value = replace(facts[i], type=ptype)
+                value = replace(facts[i], type=ptype, rel=(), ortho=())
             scopes.declare(pname, value)
         # visible to the body's own (illegal) recursion and to later functions
         self.functions.setdefault(name, []).append(fn)
@@ -512,10 +547,10 @@ class Model:
         if name is None or name in BUILTIN_FUNCTIONS or self.function(name, len(args)) is None:
             return
         ev = Evaluator(self, env)
-        values = [ev.eval(a) for a in args]
+        values = [_passed(ev.eval(a), a) for a in args]
         key = (name, len(args))
-        old = self._params.get(key)
-        self._params[key] = (
+        old = self._new_params.get(key)
+        self._new_params[key] = (
             values if old is None else [a.join(b) for a, b in zip(old, values, strict=True)]
         )
 
@@ -539,12 +574,13 @@ class Model:
 
     def _bound(self, env: Env, target: Node, op: str, other: Node) -> Env:
         """Narrow a scalar variable `x`, or one component `v.y` of a vector variable."""
-        component = None
+        component, target_field = None, ""
         if is_tree(target, "field") and is_tree(target.children[0], "variable"):  # type: ignore
             letter = str(target.children[1])  # type: ignore[union-attr]
             if len(letter) != 1:
                 return env
             component, target = _swizzle_index(letter), target.children[0]  # type: ignore
+            target_field = letter
         if not is_tree(target, "variable"):
             return env
         name = str(target.children[0])  # type: ignore[union-attr]
@@ -552,7 +588,13 @@ class Model:
         if old is None or (component is None and not T.is_scalar(old.type)):
             return env
         limit = Evaluator(self, env).eval(other).range
-        bound = Interval(-INF, limit.hi) if op in ("<", "<=") else Interval(limit.lo, INF)
+        if op == "<":  # strict: x < c excludes c itself (x > 0.0 makes x nonzero)
+            bound = Interval(-INF, math.nextafter(limit.hi, -INF))
+        elif op == ">":
+            bound = Interval(math.nextafter(limit.lo, INF), INF)
+        else:
+            bound = Interval(-INF, limit.hi) if op == "<=" else Interval(limit.lo, INF)
+        part = "" if component is None else "." + str(target_field)
         if component is None:
             narrowed = replace(old, range=old.range.meet(bound))
         else:
@@ -562,7 +604,69 @@ class Model:
             parts = old.parts(n)
             parts[component] = parts[component].meet(bound)
             narrowed = replace(old, comps=tuple(parts))
+        key = _var_key(other)
+        if key is not None and key[1] in env and key[1] != name:
+            # x < y: y - x > 0 however y varies (while y keeps this value)
+            narrowed = replace(narrowed, rel=(*narrowed.rel, (part, op, key[0], env[key[1]])))
         return {**env, name: narrowed} if narrowed != old else env
+
+
+def _square_root_node(node: Node) -> Node | None:
+    """x for `x * x`."""
+    if is_tree(node, "binary") and str(node.children[1]) == "*":  # type: ignore[union-attr]
+        left, _, right = node.children  # type: ignore[union-attr]
+        if same_expression(left, right):
+            return left
+    return None
+
+
+_ROUNDS = 3
+
+
+def _passed(value: Value, arg: Node) -> Value:
+    """An argument as its parameter sees it: an unclamped dot product keeps the evidence of
+    its 0, and says where it came from."""
+    if value.why is None and value.zero and value.origin in ("dot", "length", "distance"):
+        first = next(arg.scan_values(lambda t: isinstance(t, Token)), None) \
+            if isinstance(arg, Tree) else arg  # fmt: skip
+        line = getattr(first, "line", None)
+        where = f" at line {line}" if line else ""
+        what = {"dot": "dot product"}.get(value.origin, value.origin)
+        return replace(value, why=f"an unclamped {what} passed as an argument{where}")
+    return value
+
+
+def _var_key(node: Node) -> tuple[str, str] | None:
+    """("y", "y") for a variable, ("s.w", "s") for one component of one: what a relation
+    names, and the variable whose value it is about."""
+    if is_tree(node, "variable"):
+        name = str(node.children[0])  # type: ignore[union-attr]
+        return name, name
+    if is_tree(node, "field") and is_tree(node.children[0], "variable"):  # type: ignore
+        letter = str(node.children[1])  # type: ignore[union-attr]
+        base = str(node.children[0].children[0])  # type: ignore[union-attr]
+        return (f"{base}.{letter}", base) if len(letter) == 1 else None
+    return None
+
+
+def _related(env: Env, a: Node, op: str, b: Node) -> bool:
+    """Whether the environment records `a op b` (op "<" or "<="; "<" implies "<="), from
+    a relation on either side, while both still hold the values the relation was made with."""
+    ka, kb = _var_key(a), _var_key(b)
+    if ka is None or kb is None:
+        return False
+    ops = ("<",) if op == "<" else ("<", "<=")
+    flipped = {"<": ">", "<=": ">="}
+    for mine, other, wanted in ((ka, kb, ops), (kb, ka, tuple(flipped[o] for o in ops))):
+        holder = env.get(mine[1])
+        if holder is None:
+            continue
+        part = mine[0][len(mine[1]):]
+        for rel_part, rel_op, name, target in holder.rel:
+            if (rel_part == part and rel_op in wanted and name == other[0]
+                    and env.get(other[1]) is target):  # fmt: skip
+                return True
+    return False
 
 
 def _shadertoy_values() -> dict[str, Value]:
@@ -915,9 +1019,14 @@ class Evaluator:
         both_units = a.unit and b.unit and T.is_vector(a.type)
         if op in _ARITH:
             rng, comps = self._arith(op, a, b, ty, same_expression(left, right))
-            zero = _zero_of(op, a, b)
+            if op != "/":
+                rng, comps = self._polynomial(node, ty, rng, comps)
+            if comps is None:
+                rng = rng.meet(self._relation(op, left, right, a, b))
+            zero = _zero_of(op, a, b) and rng.may_be_zero
             origin = {"+": "sum", "-": "difference"}.get(op) if both_units else None
-            return Value(ty, rng, origin=origin, zero=zero, comps=comps)
+            why = ((a.zero and a.why) or (b.zero and b.why) or None) if zero else None
+            return Value(ty, rng, origin=origin, zero=zero, comps=comps, why=why)
         if op == "%" and a.range.lo >= 0 and b.range.lo > 0:
             return Value(ty, Interval(0.0, b.range.hi))
         return Value(ty)
@@ -938,6 +1047,44 @@ class Evaluator:
         if n > 1 and not (lm or rm):
             return UNKNOWN, tuple(map(combine, a.parts(n), b.parts(n)))
         return combine(a.range, b.range), None
+
+    def _relation(self, op: str, left: Node, right: Node, a: Value, b: Value) -> Interval:
+        """What a guard `x < y` (or `<=`) on the path says of y - x, y*y - x*x and x / y."""
+        env = self.env
+        if op == "-":
+            if _related(env, right, "<", left):
+                return Interval(5e-324, INF)  # y > x: y - x is a positive float (no underflow)
+            if _related(env, right, "<=", left):
+                return NONNEG
+            squares = [_square_root_node(n) for n in (left, right)]
+            if None not in squares:
+                y, x = squares
+                lower = self._sub(x).range  # type: ignore[arg-type]
+                if lower.is_nonnegative and _related(env, x, "<=", y):  # type: ignore[arg-type]
+                    return NONNEG  # 0 <= x <= y: y*y - x*x >= 0
+        if op == "/" and a.range.is_nonnegative and _related(env, left, "<=", right):
+            return ZERO_ONE  # 0 <= x <= y (so y > 0 where x > 0): x / y in [0, 1]
+        return UNKNOWN
+
+    def _polynomial(
+        self, node: Tree, ty: str | None, rng: Interval, comps: Comps
+    ) -> tuple[Interval, Comps]:
+        """Tighter bounds for a polynomial in one variable (written more than once): interval
+        arithmetic treats each occurrence as independent, so t*t*(3.0 - 2.0*t), the Hermite
+        weight of value noise, comes out [0, 3] for t in [0, 1] instead of [0, 1]."""
+        found = _as_polynomial(node)
+        if found is None:
+            return rng, comps
+        atom, coeffs = found
+        x = self._sub(atom)
+        n = T.size(ty)
+        if n > 1 and comps is not None and T.size(x.type) == n:
+            tight = tuple(c.meet(poly_range(coeffs, p)) for c, p in zip(comps, x.parts(n),
+                                                                          strict=True))
+            return hull_all(tight), tight
+        if n == 1 and T.size(x.type) == 1:
+            return rng.meet(poly_range(coeffs, x.range)), comps
+        return rng, comps
 
     def _ternary(self, node: Tree) -> Value:
         cond, then, other = node.children
@@ -978,8 +1125,11 @@ class Evaluator:
             if max(indices) >= len(parts):  # `v2.z`: invalid, glslang reports it
                 return Value(swizzled)
             picked = tuple(parts[i] for i in indices)
-            if len(picked) == 1:  # the vector's evidence of a 0 may be another component's
-                return Value(swizzled, picked[0], zero=base.zero and not picked[0].is_unknown)
+            if len(picked) == 1:  # the vector's evidence of a 0 may be another component's:
+                # eps.x of vec2(4.0 / iResolution.y, 0.0) is not 0 because eps.y is
+                zero = base.zero and picked[0].may_be_zero and not picked[0].is_unknown
+                origin = base.origin if base.origin in ("sin", "cos") else None
+                return Value(swizzled, picked[0], origin=origin, zero=zero, why=base.why)
             return Value(swizzled, unit=unit, zero=base.zero, comps=picked)
         member = self.model.structs.get(base.type or "", {}).get(name)
         return Value(member)
@@ -1047,11 +1197,27 @@ class Evaluator:
         rng, unit, comps = _builtin(name, values, args, T.size(ty))
         if comps is not None:
             rng = hull_all(comps)
-        zero = rng.may_be_zero and (name in _REACH_ZERO or any(v.zero for v in values))
+        zero = rng.may_be_zero and (name in _REACH_ZERO or _keeps_zero(name, values))
+        why = next((v.why for v in values if v.zero and v.why), None) if zero else None
         origin = name
         if name == "cross" and any(all(c.is_point for c in v.parts(3)) for v in values):
             origin = "cross-axis"  # with a fixed axis: degenerate only along that axis
-        return Value(ty, rng, unit, origin, zero, comps)
+        return Value(ty, rng, unit, origin, zero, comps, why=why)
+
+
+# Builtins with f(0) = 0 (or that pass an argument through): evidence of a 0 in an argument is
+# evidence of a 0 in the result. pow(2.0, floor(b)) is 1 where b is 0; exp, cos, inversesqrt
+# never give 0 for a 0.
+_KEEP_ZERO = words(
+    """abs sqrt sign min max clamp mix radians degrees sinh tanh asin atan normalize reflect
+    faceforward dFdx dFdy fwidth"""
+)
+
+
+def _keeps_zero(name: str, values: list[Value]) -> bool:
+    if name == "pow":
+        return bool(values) and values[0].zero
+    return name in _KEEP_ZERO and any(v.zero for v in values)
 
 
 def _converted(value: Value, ty: str) -> Interval:
@@ -1090,11 +1256,17 @@ def _square_of(a: Interval, b: Interval) -> Interval:
 
 def _zero_of(op: str, a: Value, b: Value) -> bool:
     """Whether a op b reaches 0 on evidence (see Value.zero)."""
-    if op == "+":  # a sum is surely 0 only when both terms are, and of one sign
-        same_sign = (a.range.is_nonnegative and b.range.is_nonnegative) or (
-            a.range.hi <= 0 and b.range.hi <= 0
+    if op == "+":  # a sum is 0 on evidence where both terms are
+        # (N·L·X + N·V·Y, Smith's denominator, with N·V unclamped: it also changes sign)
+        if a.zero and b.zero:
+            return True
+        # or where a term that reaches 0 and changes sign (an unclamped N·V) can cancel the
+        # other: N·V·(1 - k) + k in Schlick-GGX's G1, N·L·X + N·V·Y in Smith's
+        total = a.range + b.range
+        return total.lo < 0 < total.hi and any(
+            x.zero and x.range.lo < 0 < x.range.hi and y.range.is_bounded
+            for x, y in ((a, b), (b, a))
         )
-        return same_sign and a.zero and b.zero
     if op in "+-" and b.range.is_point:  # x - c crosses 0 where x passes the constant c
         c = b.range.lo if op == "-" else -b.range.lo
         known = not a.range.is_unknown  # an unknown x passing c is no evidence
@@ -1104,6 +1276,71 @@ def _zero_of(op: str, a: Value, b: Value) -> bool:
     if op == "*":
         return a.zero or b.zero
     return op == "/" and a.zero
+
+
+_POLY_SIZE = 64  # nodes: longer expressions are left to interval arithmetic
+_POLY_DEGREE = 8
+
+
+def _as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
+    """(x, coefficients) when `node` is a polynomial with constant coefficients in one
+    expression x that occurs at least twice (+, -, *, unary minus, division by a constant);
+    None otherwise."""
+    atoms: list[Node] = []
+    budget = [_POLY_SIZE]
+
+    def poly(n: Node) -> list[float] | None:
+        budget[0] -= 1
+        if budget[0] < 0 or not isinstance(n, Tree):
+            return None
+        if n.data in ("float_literal", "int_literal"):
+            text = str(n.children[0]).rstrip("fFuU")
+            try:
+                return [float(text) if n.data == "float_literal" else float(int_value(text) or 0)]
+            except ValueError:
+                return None
+        if n.data == "unary" and str(n.children[0]) in "+-":
+            inner = poly(n.children[1])
+            if inner is None:
+                return None
+            return inner if str(n.children[0]) == "+" else [-c for c in inner]
+        if n.data == "binary" and str(n.children[1]) in ("+", "-", "*", "/"):
+            op = str(n.children[1])
+            a, b = poly(n.children[0]), poly(n.children[2])
+            if a is None or b is None:
+                return None
+            if op == "/":
+                if len(b) != 1 or b[0] == 0:
+                    return None
+                return [c / b[0] for c in a]
+            if op == "*":
+                if len(a) + len(b) - 1 > _POLY_DEGREE + 1:
+                    return None
+                out = [0.0] * (len(a) + len(b) - 1)
+                for i, x in enumerate(a):
+                    for j, y in enumerate(b):
+                        out[i + j] += x * y
+                return out
+            sign = 1.0 if op == "+" else -1.0
+            out = [0.0] * max(len(a), len(b))
+            for i, x in enumerate(a):
+                out[i] += x
+            for i, y in enumerate(b):
+                out[i] += sign * y
+            return out
+        if n.data in ("variable", "field", "index", "call"):
+            if atoms and not same_expression(atoms[0], n):
+                return None
+            if not atoms and not same_expression(n, n):
+                return None  # a call with side effects is not one value
+            atoms.append(n)
+            return [0.0, 1.0]
+        return None
+
+    coeffs = poly(node)
+    if coeffs is None or len(atoms) < 2:
+        return None
+    return atoms[0], coeffs
 
 
 def _swizzle_index(letter: str) -> int:
@@ -1196,7 +1433,10 @@ def _length(v: Value, n: int) -> Interval:
     if v.unit:
         return Interval.point(1.0)
     if n and v.comps is not None:
-        return sqrt_range(_total(c.square() for c in v.parts(n)))
+        out = sqrt_range(_total(c.square() for c in v.parts(n)))
+        # |v| >= |v.x|: also where the squares underflow (a component > 0 from `x > 0.0`)
+        near = max(0.0 if c.may_be_zero else min(abs(c.lo), abs(c.hi)) for c in v.parts(n))
+        return Interval(max(out.lo, near), max(out.hi, near))
     return length_bound(v.range, n or 4)
 
 

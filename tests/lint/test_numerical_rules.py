@@ -227,6 +227,61 @@ def test_division_by_products_widened_by_interval_arithmetic_is_clean() -> None:
     assert codes(shader(body, helper)) == []
 
 
+VISIBILITY = """
+float V_SmithGGXCorrelated(float NoV, float NoL, float a) {
+    float a2 = a * a;
+    return 0.5 / (NoL * sqrt(NoV*NoV*(1.0-a2)+a2) + NoV * sqrt(NoL*NoL*(1.0-a2)+a2));
+}
+float G1(float NoV, float k) { return NoV / (NoV * (1.0 - k) + k); }
+float V_Kelemen(float NoV, float NoL) { return 0.25 / (NoV * NoL); }
+vec3 shade(vec3 n, vec3 v, vec3 l, float r) {
+    float NoV = NOV;
+    float NoL = NOL;
+    float a = r * r;
+    float k = (r + 1.0) * (r + 1.0) / 8.0;
+    return vec3(V_SmithGGXCorrelated(NoV, NoL, a) * G1(NoV, k) * V_Kelemen(NoV, NoL));
+}
+"""
+SHADE = "fragColor = vec4(shade(N, V, L, clamp(sin(iTime), 0.05, 1.0)), 1.0);"
+
+
+def test_division_by_a_cosine_passed_to_a_visibility_function() -> None:
+    # an unclamped N·V reaches the denominators through a parameter, two calls deep
+    src = shader(SHADE, VISIBILITY.replace("NOV", "dot(n, v)").replace("NOL",
+                                                                       "max(dot(n, l), 1e-4)"))
+    found = [f for f in lint(src) if f.code == "N005"]
+    assert [f.line for f in found] == [4, 6, 7]
+    for f in found:
+        assert "unclamped dot product passed as an argument" in f.message, f.message
+
+
+def test_division_by_a_clamped_cosine_passed_to_a_visibility_function_is_clean() -> None:
+    src = shader(SHADE, VISIBILITY.replace("NOV", "max(dot(n, v), 1e-4)").replace(
+        "NOL", "max(dot(n, l), 1e-4)"))  # fmt: skip
+    assert codes(src, "N005") == []
+    # NoL clamped at 0 still zeroes a product (the unlit half), not Smith's sum with NoV > 0
+    src = shader(SHADE, VISIBILITY.replace("NOV", "max(dot(n, v), 1e-4)").replace(
+        "NOL", "max(dot(n, l), 0.0)"))  # fmt: skip
+    assert [f.line for f in lint(src) if f.code == "N005"] == [7]
+
+
+def test_division_by_a_nonzero_component_or_an_unknown_range_is_clean() -> None:
+    # eps.y is 0, eps.x = 4/iResolution.y is not: a picked component has its own evidence
+    body = "vec2 eps = vec2(4.0 / iResolution.y, 0.0);\nfloat fx = sin(iTime) / eps.x;"
+    assert codes(shader(body), "N005") == []
+    # pow(2.0, x) is 1 where x is 0: no evidence of a 0 passes through it
+    body = "float b = floor(iTime);\nfloat q = 1.0 / pow(2.0, b);"
+    assert codes(shader(body), "N005") == []
+    # nothing known of the range: no evidence (sin(...) times an unknown parameter)
+    helpers = "float f(float r, float p) { float size = sin(r) * r * p; return 1.0 / size; }\n"
+    assert codes(shader("", helpers), "N005") == []
+
+
+def test_division_guarded_by_a_strict_comparison_is_clean() -> None:
+    body = "vec2 uv = fragCoord - 0.5;\nfloat a = (uv.x > 0.0) ? acos(uv.y / length(uv)) : 0.0;"
+    assert codes(shader(body), "N005") == []
+
+
 def test_division_by_constant_zero() -> None:
     assert codes(shader("float z = 1.0 / 0.0;")) == ["N005"]
 

@@ -312,7 +312,7 @@ def test_an_if_without_else_keeps_the_old_value_in_the_hull() -> None:
 
 def test_conditions_narrow_the_compared_variable() -> None:
     body = "float x = sin(iTime);\nif (x > 0.0) { fragColor = vec4(sqrt(x)); }"
-    assert rng(body, "x", nth=-1) == Interval(0.0, 1.0)
+    assert rng(body, "x", nth=-1) == Interval(5e-324, 1.0)  # strict: 0 itself is excluded
     body = "float x = sin(iTime);\nif (x < 0.25) return;\nfloat y = x;"
     assert rng(body, "x") == Interval(0.25, 1.0)
     body = "float x = sin(iTime);\nfloat y = x > 0.5 ? x : 0.5;"
@@ -445,3 +445,64 @@ def test_invalid_code_gives_unknowns_not_crashes() -> None:
     ctx, model = model_of("vec2 v = vec2(1.0);\nfloat z = v.z + undefinedThing.x * foo(3.0);")
     assert model.range_of(node(ctx, "v.z")).is_unknown
     assert model.type_of(node(ctx, "foo(3.0)")) is None
+
+
+# --- knowledge beyond interval arithmetic ----------------------------------------------------
+
+
+def test_the_smoothstep_polynomial_stays_in_zero_one() -> None:
+    # value noise's Hermite weight: t*t*(3 - 2t) maps [0, 1] onto [0, 1], not [0, 3]
+    body = "float f = fract(iTime);\nfloat w = f*f*(3.0-2.0*f);"
+    assert rng(body, "f*f*(3.0-2.0*f)") == Interval(0.0, 1.0)
+    body = "vec2 f = fract(fragCoord);\nf = f*f*(3.-2.*f);\nvec2 g = f;"
+    assert rng(body, "f") == Interval(0.0, 1.0)
+    body = "float t = fract(iTime);\nfloat q = t*t*t*(t*(t*6.0-15.0)+10.0);"
+    assert rng(body, "t*t*t*(t*(t*6.0-15.0)+10.0)") == Interval(0.0, 1.0)
+    # a contrast curve: 0.7c + 0.3c^2(3 - 2c) of c in [0, 1]
+    body = "float c = clamp(sin(iTime), 0.0, 1.0);\nfloat k = c*0.7 + 0.3*c*c*(3.0-2.0*c);"
+    r = rng(body, "c*0.7 + 0.3*c*c*(3.0-2.0*c)")  # 0.3 * 3.0 rounds: within an ulp of [0, 1]
+    assert r.lo == 0.0 and abs(r.hi - 1.0) < 1e-12
+    # a polynomial with an extremum inside: (x - 1)^2 on [-1, 3] is [0, 4] up to the root
+    r = R.poly_range([1.0, -2.0, 1.0], Interval(-1.0, 3.0))
+    assert -1e-9 < r.lo <= 0.0 and r.hi == 4.0
+
+
+@given(st.floats(-3, 3), st.floats(0, 3), st.lists(st.floats(-5, 5), min_size=1, max_size=6))
+@settings(max_examples=200, deadline=None)
+def test_poly_range_contains_every_value(lo: float, width: float, coeffs: list[float]) -> None:
+    r = R.poly_range(coeffs, Interval(lo, lo + width))
+    for k in range(11):
+        x = lo + width * k / 10
+        v = sum(c * x**i for i, c in enumerate(coeffs))
+        assert r.lo - 1e-9 * (1 + abs(v)) <= v <= r.hi + 1e-9 * (1 + abs(v))
+
+
+def test_a_positive_constant_over_the_resolution_is_positive() -> None:
+    # iResolution is finite (no framebuffer is wider than 16384): 2/iResolution.y > 0
+    r = rng("float px = 2.0 / iResolution.y;", "2.0 / iResolution.y")
+    assert r.lo > 0 and r.hi == 2.0
+
+
+def test_a_strict_comparison_keeps_the_length_away_from_zero() -> None:
+    body = "vec2 uv = fragCoord - 0.5;\nfloat a = (uv.x > 0.0) ? uv.y / length(uv) : 0.0;"
+    assert rng(body, "length(uv)").lo > 0
+
+
+def test_guards_relate_two_variables() -> None:
+    # inside `if (c < rq)`: rq - c > 0 however both vary
+    body = "float rq = sin(iTime);\nfloat c = cos(iTime);\n" \
+        "if (c < rq) { float l = sqrt(rq - c); }"
+    assert rng(body, "rq - c").lo > 0
+    # after `if (r2 > sr2) return;`: sr2 - r2 >= 0
+    body = "float sr2 = sin(iTime);\nfloat r2 = cos(iTime);\n" \
+        "if (r2 > sr2) return;\nfloat e = sr2 - r2;"
+    assert rng(body, "sr2 - r2").lo == 0
+    # 0 <= y < s.w: s.w*s.w - y*y >= 0; and y / s.w in [0, 1]
+    body = ("vec4 s = vec4(sin(iTime));\nfloat y = length(fragCoord);\n"
+            "if (y < s.w) { float x = s.w*s.w - y*y; float r = y / s.w; }")
+    assert rng(body, "s.w*s.w - y*y").lo == 0
+    assert rng(body, "y / s.w") == Interval(0.0, 1.0)
+    # a reassignment after the guard ends the relation
+    body = "float a = sin(iTime);\nfloat b = cos(iTime);\n" \
+        "if (b < a) { b = 2.0 * iTime; float d = a - b; }"
+    assert rng(body, "a - b").lo < 0

@@ -36,7 +36,7 @@ def reaches_zero(v: Value) -> bool:
     merely contains 0 after interval arithmetic is no evidence: GGX's 1 + NoH²(a² - 1) is in
     [0, 1.25] by intervals and never below a²."""
     r = v.range
-    if not r.may_be_zero:
+    if not r.may_be_zero or r.is_unknown:  # nothing known is no evidence of anything
         return False
     return v.zero or v.origin in ("dot", "length", "distance")
 

@@ -62,7 +62,11 @@ class DivisionByZero(NumericalRule):
             if v.range.is_nonnegative and (components(v.type) or ("", 0))[0] == "float":
                 advice = f"add an epsilon: max({shown}, {EPSILON})"
                 fix = wrap_fix(ctx, divisor, "max({}, " + EPSILON + ")", "floor the divisor")
-            message = f"division by {shown}, which may be 0 (range {v.range.describe()}); {advice}"
+            source = f"; it comes from {v.why}" if v.why else ""
+            message = (
+                f"division by {shown}, which may be 0 (range {v.range.describe()}{source}); "
+                f"{advice}"
+            )
             yield self.emit(ctx, divisor, message, fix)
 
 
