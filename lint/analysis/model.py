@@ -1163,7 +1163,10 @@ class Evaluator:
         zero = any(a.zero or a.range == Interval.point(0.0) for a in args)
         unit = self._unit_constructor(ty, args)
         comps = _constructor_parts(ty, args)
-        return Value(ty, rng, unit, zero=zero, comps=comps)
+        origin = None
+        if not unit and _trig_axis(ty, call_args(node)):
+            unit, origin = True, "axis"  # sin² + cos² = 1: a chosen (rolled) axis
+        return Value(ty, rng, unit, origin, zero=zero, comps=comps)
 
     @staticmethod
     def _unit_constructor(ty: str, args: list[Value]) -> bool:
@@ -1200,9 +1203,12 @@ class Evaluator:
         zero = rng.may_be_zero and (name in _REACH_ZERO or _keeps_zero(name, values))
         why = next((v.why for v in values if v.zero and v.why), None) if zero else None
         origin = name
-        if name == "cross" and any(all(c.is_point for c in v.parts(3)) for v in values):
-            origin = "cross-axis"  # with a fixed axis: degenerate only along that axis
-        return Value(ty, rng, unit, origin, zero, comps, why=why)
+        ortho: tuple[tuple[str, Value], ...] = ()
+        if name == "cross" and len(values) == 2:
+            origin, unit, ortho = _cross_facts(args, values, unit)
+        elif name == "normalize" and values:
+            ortho = values[0].ortho  # the same direction
+        return Value(ty, rng, unit, origin, zero, comps, why=why, ortho=ortho)
 
 
 # Builtins with f(0) = 0 (or that pass an argument through): evidence of a 0 in an argument is
@@ -1218,6 +1224,52 @@ def _keeps_zero(name: str, values: list[Value]) -> bool:
     if name == "pow":
         return bool(values) and values[0].zero
     return name in _KEEP_ZERO and any(v.zero for v in values)
+
+
+def _cross_facts(
+    nodes: list[Node], values: list[Value], unit: bool
+) -> tuple[str, bool, tuple[tuple[str, Value], ...]]:
+    """Origin, unit-length and orthogonality of cross(a, b). With a fixed axis (a constant, or
+    (sin r, cos r, 0), a camera's rolled up) it degenerates only along that axis; the cross of
+    two unit vectors known orthogonal (the look-at basis: uu = normalize(cross(ww, up)), then
+    cross(uu, ww)) is a unit vector; the cross of a vector already from a fixed-axis cross and
+    a vector it is orthogonal to is still zero only along that axis."""
+    origin = "cross"
+    if any(all(c.is_point for c in v.parts(3)) or v.origin == "axis" for v in values):
+        origin = "cross-axis"
+    keys = [str(n.children[0]) if is_tree(n, "variable") else None for n in nodes]  # type: ignore
+    ortho = tuple((k, v) for k, v in zip(keys, values, strict=True) if k is not None)
+    for (x, _kx), (y, ky) in (((values[0], keys[0]), (values[1], keys[1])),
+                             ((values[1], keys[1]), (values[0], keys[0]))):  # fmt: skip
+        if ky is None or not any(name == ky and v is y for name, v in x.ortho):
+            continue
+        if x.unit and y.unit:
+            return "cross-orthonormal", True, ortho
+        if x.origin == "cross-axis":
+            origin = "cross-axis"
+    return origin, unit, ortho
+
+
+def _trig_axis(ty: str, nodes: list[Node]) -> bool:
+    """vec2/vec3(sin(x), cos(x)) with zeros elsewhere, in any order: a unit vector."""
+    if ty not in ("vec2", "vec3") or len(nodes) != T.size(ty):
+        return False
+    trig = {}
+    for n in nodes:
+        if is_tree(n, "float_literal", "int_literal"):
+            text = str(n.children[0]).rstrip("fF")  # type: ignore[union-attr]
+            try:
+                if float(text) != 0:
+                    return False
+            except ValueError:
+                return False
+            continue
+        name = callee_name(n) if is_tree(n, "call") else None  # type: ignore[arg-type]
+        inner = call_args(n) if name in ("sin", "cos") else []  # type: ignore[arg-type]
+        if len(inner) != 1 or name in trig:
+            return False
+        trig[name] = inner[0]
+    return len(trig) == 2 and same_expression(trig["sin"], trig["cos"])
 
 
 def _converted(value: Value, ty: str) -> Interval:

@@ -305,6 +305,35 @@ def test_normalize_of_other_vectors_is_clean() -> None:
     assert codes(shader(body)) == []
 
 
+def test_normalize_of_the_look_at_basis_is_clean() -> None:
+    # uu = normalize(cross(ww, up)) is unit and orthogonal to ww: cross(uu, ww) is unit; a
+    # rolled up axis (sin r, cos r, 0) is a chosen axis like the constant world up
+    body = """
+    vec3 ro = vec3(sin(iTime), 1.0, cos(iTime)) * 4.0;
+    vec3 ww = normalize(vec3(0.0) - ro);
+    float cr = 0.1 * sin(iTime);
+    vec3 cp = vec3(sin(cr), cos(cr), 0.0);
+    vec3 uu = normalize(cross(ww, cp));
+    vec3 vv = normalize(cross(uu, ww));
+    vec3 d = normalize(vec3(fragCoord, 1.0));
+    vec3 u = cross(d, vec3(1.0, 0.0, 0.0));
+    vec3 v = normalize(cross(u, d));
+    """
+    assert codes(shader(body), "N006") == []
+
+
+def test_normalize_of_a_cross_of_vectors_not_known_orthogonal_is_reported() -> None:
+    body = """
+    vec3 a = normalize(vec3(fragCoord, 1.0));
+    vec3 b = normalize(vec3(sin(iTime), cos(iTime), sin(2.0 * iTime)));
+    vec3 c = normalize(cross(a, b));
+    vec3 e = normalize(cross(c, b));
+    """
+    # c is orthogonal to b (unit): cross(c, b) is unit; cross(a, b) is not
+    found = [f for f in lint(shader(body)) if f.code == "N006"]
+    assert len(found) == 1 and "cross(a, b)" in found[0].message
+
+
 # --- N007 mod / atan --------------------------------------------------------------------------
 
 
