@@ -156,8 +156,8 @@ float march(vec3 ro, vec3 rd) {
 def test_pf002_nested_loop_reports_once_at_the_outer_loop() -> None:
     src = """float f(vec3 a) {
     float s = 0.0;
-    for (int i = 0; i < 4; i++) {
-        for (int j = 0; j < 4; j++) {
+    for (int i = 0; i < 8; i++) {
+        for (int j = 0; j < 8; j++) {
             s += normalize(a).x;
         }
     }
@@ -165,6 +165,33 @@ def test_pf002_nested_loop_reports_once_at_the_outer_loop() -> None:
 }
 """
     assert found(src, "PF002") == [("PF002", 5, 18)]
+
+
+def test_pf002_only_hot_loops_count_and_nesting_goes_through_calls() -> None:
+    src = """#define AA 3
+#define R(p, a) p = cos(a) * p + sin(a) * vec2(p.y, -p.x)
+float fold(vec3 p) {
+    for (int i = 0; i < 6; i++) { p = abs(p) - vec3(1.0 + 0.2 * sin(iTime)); }
+    return length(p);
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec3 col = vec3(0.0);
+    for (int m = 0; m < AA; m++)
+        for (int n = 0; n < AA; n++)
+            col += sin(iTime * vec3(1.0, 2.0, 3.0)) + vec3(float(m + n));
+    float t = 0.0;
+    vec2 q = fragCoord;
+    for (int i = 0; i < 20; i++) { t += fold(vec3(q, t)); R(q, iTime * .1); }
+    fragColor = vec4(col, t);
+}
+"""
+    # the 3x3 AA grid runs 9 times: unrolled and merged; the fold runs 6 x 20 = 120 times
+    # through its caller's loop, and R's rotation 20 times only
+    findings = [f for f in lint_source(src, "x.glsl", FAST) if f.code == "PF002"]
+    assert [(f.line, f.column) for f in findings] == [(4, 48)]
+    hot = src.replace("i < 20", "i < 99")
+    messages = [f.message for f in lint_source(hot, "x.glsl", FAST) if f.code == "PF002"]
+    assert any("(in the expansion of R)" in m for m in messages)
 
 
 def test_pf002_variable_written_through_an_out_argument_varies() -> None:

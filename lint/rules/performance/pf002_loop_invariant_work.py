@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 from lark import Tree
@@ -9,12 +10,17 @@ from lark import Tree
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
+from ..lighting._common import macros_used, short_text
 from ..lighting._terms import (
     Function,
+    call_args,
     call_name,
+    const_value,
     functions,
+    global_constants,
     names_in,
     out_param_map,
+    parents,
     writes_of,
 )
 from ._common import BUILTINS
@@ -98,6 +104,120 @@ def _local_consts(fn: Function) -> set[str]:
     return found
 
 
+def _from_macro(ctx: LintContext, expr: Tree) -> str:
+    """` (in the expansion of R)` when the expression is not in the user's text as shown."""
+    if not ctx.has_macros(expr):
+        return ""
+    line = ctx.span(expr)[0]
+    source = "".join(ctx.lines[line - 1].split()) if 0 < line <= len(ctx.lines) else ""
+    if "".join(ctx.node_text(expr).split()) in source:
+        return ""
+    names = sorted(macros_used(ctx, expr))
+    return f" (in the expansion of {', '.join(names)})" if names else " (in a macro expansion)"
+
+
+# Executions per pixel below which hoisting saves nothing worth a finding: drivers unroll short
+# constant loops (an AA grid of 3x3, a few bounces) and merge the repeated calls.
+HOT = 64
+
+# A loop whose trip count the code does not say (a while, a bound that is not a constant) is
+# taken as a march: hot.
+_UNKNOWN_TRIPS = HOT
+
+
+def trip_count(ctx: LintContext, loop: Tree, fn: Function) -> int:
+    """The number of passes of `for (i = A; i < B; i += k)` with constant A, B and k (macros
+    expanded, const names and locals with one value included); _UNKNOWN_TRIPS otherwise."""
+    if loop.data != "for_statement" or len(loop.children) < 4:
+        return _UNKNOWN_TRIPS
+    init, cond, step = loop.children[0], loop.children[1], loop.children[2]
+    start = None
+    for node in walk(init):
+        if node.data == "declarator" and len(node.children) > 1:
+            start = _number(ctx, node.children[-1], fn)
+        elif node.data == "assignment":
+            start = _number(ctx, node.children[2], fn)
+    op = str(cond.children[1]) if isinstance(cond, Tree) and cond.data == "binary" else ""
+    if start is None or op not in ("<", "<=", ">", ">="):
+        return _UNKNOWN_TRIPS
+    end = _number(ctx, cond.children[2], fn)  # type: ignore[union-attr]
+    delta = _step(ctx, step, fn)
+    if end is None or not delta:
+        return _UNKNOWN_TRIPS
+    span = (end - start) if delta > 0 else (start - end)
+    span += 1 if op in ("<=", ">=") else 0
+    return max(0, math.ceil(span / abs(delta)))
+
+
+def _number(ctx: LintContext, node: Node, fn: Function) -> float | None:
+    if isinstance(node, Tree) and node.data == "call" and call_name(node) in ("int", "float"):
+        args = call_args(node)
+        node = args[0] if len(args) == 1 else node
+    value = const_value(node, global_constants(ctx))
+    if value is None and fn is not None:
+        name = node.children[0] if isinstance(node, Tree) and node.data == "variable" else None
+        init = fn.value_of(str(name)) if name is not None else None
+        value = const_value(init, global_constants(ctx)) if init is not None else None
+    return value
+
+
+def _step(ctx: LintContext, node: Node, fn: Function) -> float | None:
+    if not isinstance(node, Tree):
+        return None
+    if node.data in ("postfix", "prefix"):
+        op = str(node.children[1] if node.data == "postfix" else node.children[0])
+        return 1.0 if op == "++" else -1.0
+    if node.data == "assignment" and str(node.children[1]) in ("+=", "-="):
+        value = _number(ctx, node.children[2], fn)
+        return None if value is None else (value if str(node.children[1]) == "+=" else -value)
+    return None
+
+
+def _enclosing_trips(ctx: LintContext, node: Tree, fn: Function, up: dict[int, Tree]) -> int:
+    """The product of the trip counts of the loops around the node in its function (for a
+    loop's for-init, its own loop does not repeat it)."""
+    total = 1
+    current: Node = node
+    while (parent := up.get(id(current))) is not None and parent is not fn.node:
+        if parent.data in _LOOPS and not (
+            parent.data == "for_statement" and parent.children[0] is current
+        ):
+            total *= trip_count(ctx, parent, fn)
+        current = parent
+    return total
+
+
+def calls_per_pixel(ctx: LintContext, up: dict[int, Tree]) -> dict[str, int]:
+    """How many times each function runs per pixel, at most: mainImage once, another function
+    the largest over its call sites of (runs of the caller x loops around the call)."""
+    defined = {f.name: f for f in functions(ctx)}
+    sites: dict[str, list[tuple[Function, Tree]]] = {}
+    for fn in defined.values():
+        for node in walk(fn.body):
+            if node.data == "call" and call_name(node) in defined:
+                sites.setdefault(call_name(node) or "", []).append((fn, node))
+    runs: dict[str, int] = {}
+
+    def count(name: str, depth: int) -> int:
+        if name in runs:
+            return runs[name]
+        if name == "mainImage" or name not in sites or depth > 16:
+            runs[name] = 1
+            return 1
+        best = 1
+        for caller, call in sites[name]:
+            if caller.name == name:
+                continue
+            best = max(best, count(caller.name, depth + 1)
+                       * _enclosing_trips(ctx, call, caller, up))  # fmt: skip
+        runs[name] = min(best, 1 << 30)
+        return runs[name]
+
+    for name in defined:
+        count(name, 0)
+    return runs
+
+
 @register
 class LoopInvariant(Rule):
     """Finds expensive work inside a loop that gives the same value on every iteration: a call to
@@ -108,12 +228,19 @@ class LoopInvariant(Rule):
     (assignment, ++/--, an out argument), nor declared inside it, nor a global that any function
     writes. Calls of the shader's own functions are never counted (they may be expensive, but
     proving them pure is out of scope), and expressions of constants only are left to the compiler,
-    which folds them.
+    which folds them. Only hot code is reported: the estimated executions per pixel (the trip
+    counts of the loops around it, times how often its function runs from the loops of its
+    callers, as map() from a march) must reach 64; a loop whose count the code does not state
+    counts as hot. Short constant loops (an AA grid, a few bounces) are unrolled and their
+    repeated calls merged by the driver.
+
+    Opt-in: desktop compilers hoist pure arithmetic themselves (even across a break); the value
+    is on targets that do not hoist reliably (ANGLE/FXC, mobile) and in hot march or fold loops.
 
     Why is this bad?
         A raymarch or shadow loop runs up to hundreds of times per pixel; a normalize or texture
-        fetch of loop-invariant inputs is paid on every step. Compilers hoist some of it, but not
-        across a `break` or through a texture fetch.
+        fetch of loop-invariant inputs is paid on every step where the compiler does not hoist
+        it (ANGLE's HLSL path and many mobile drivers do not reliably).
 
     Example:
         for (int i = 0; i < 64; i++) {
@@ -139,12 +266,16 @@ class LoopInvariant(Rule):
     name = "loop-invariant-work"
     category = "performance"
     severity = "info"
+    default = False
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         constants, other_globals = _global_names(ctx)
         outs = out_param_map(ctx)
         global_writes = set().union(*(f.written for f in functions(ctx))) & other_globals
         reported: list[tuple[int, int]] = []
+        assert ctx.tree is not None
+        up = parents(ctx.tree)
+        runs = calls_per_pixel(ctx, up)
         for fn in functions(ctx):
             fixed = constants | _local_consts(fn)
             for loop in walk(fn.body):
@@ -158,18 +289,18 @@ class LoopInvariant(Rule):
                     elif node.data == "condition_declaration":
                         varying.add(str(node.children[1]))
                 for expr in self._candidates(loop, varying, fixed, fn):
+                    if runs.get(fn.name, 1) * _enclosing_trips(ctx, expr, fn, up) < HOT:
+                        continue  # a short loop: unrolled and merged by the driver
                     span = (expr.meta.start_pos, expr.meta.end_pos)
                     if any(a <= span[0] and span[1] <= b for a, b in reported):
                         continue
                     reported.append(span)
-                    text = " ".join(ctx.node_text(expr).split())
-                    if len(text) > 60:
-                        text = text[:57] + "..."
+                    text = short_text(ctx, expr, 60)
                     yield self.report(
                         ctx,
                         expr,
-                        f"`{text}` gives the same value on every iteration of the "
-                        "loop; compute it once before the loop",
+                        f"`{text}`{_from_macro(ctx, expr)} gives the same value on every "
+                        "iteration of the loop; compute it once before the loop",
                     )
 
     def _candidates(
