@@ -17,13 +17,15 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
+from itertools import compress
+from operator import is_not
 
 from lark import Token, Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 from glint.compiler.glsl.keywords import words
 
-from ..context import LintContext, walk
+from ..context import LintContext, tokens, walk
 from . import types as T
 from .ranges import (
     BOOL,
@@ -303,6 +305,26 @@ class Scopes:
             out.update(frame)
         return out
 
+    def env_for(self, expr: Node) -> dict[str, Value]:
+        """The variables in scope that `expr` names: all an evaluation of it can read.
+
+        The model keeps each expression's environment for later queries (`record`). A copy of
+        every variable in scope (`flat`) per expression made the analysis quadratic in time
+        and memory on long functions (a chain of 1000 declarations kept 1000 copies of up to
+        1000 variables); the names an expression contains are few."""
+        wanted = {str(token) for token in tokens(expr)}
+        env: dict[str, Value] = {}
+        for frame in reversed(self.frames):  # the innermost declaration of a name wins
+            if wanted.isdisjoint(frame):
+                continue
+            found = wanted & frame.keys()
+            for name in found:
+                env[name] = frame[name]
+            wanted -= found
+            if not wanted:
+                break
+        return env
+
     def push(self) -> None:
         self.frames.append({})
 
@@ -340,16 +362,41 @@ def join_scopes(items: Sequence[Scopes]) -> Scopes:
     frames: list[dict[str, Value]] = []
     for i in range(depth):
         first = live[0].frames[i]
-        frame: dict[str, Value] = {}
-        for name, value in first.items():
-            for other in live[1:]:
-                if name not in other.frames[i]:
-                    break
-                value = value.join(other.frames[i][name])
-            else:
-                frame[name] = value
+        if not first:  # a block that declares nothing (a name must be on every path)
+            frames.append({})
+            continue
+        others = [s.frames[i] for s in live[1:]]
+        names = list(first)
+        if all(list(other) == names for other in others):
+            # The paths are copies of one state: the same names, and mostly the very same
+            # Value objects (a branch assigns a few variables). Find the names whose objects
+            # differ with C-level iteration and join only those; a Python-level pass over every
+            # variable in scope at each merge was quadratic in long code.
+            changed: dict[str, list[Value]] = {}
+            for other in others:
+                for name in compress(names, map(is_not, first.values(), other.values())):
+                    changed.setdefault(name, [first[name]]).append(other[name])
+            frame = dict(first)
+            for name, values in changed.items():
+                frame[name] = _join_values(values)
+        else:
+            frame = {}
+            for name in names:
+                values = [other.get(name) for other in others]
+                if None not in values:
+                    frame[name] = _join_values([first[name], *values])  # type: ignore[list-item]
         frames.append(frame)
     return Scopes(frames)
+
+
+def _join_values(values: list[Value]) -> Value:
+    """The join of the values, each distinct object once (the join is idempotent)."""
+    joined, seen = values[0], {id(values[0])}
+    for value in values[1:]:
+        if id(value) not in seen:
+            seen.add(id(value))
+            joined = joined.join(value)
+    return joined
 
 
 def widen(scopes: Scopes, names: set[str], keep_flags: bool = True) -> Scopes:
@@ -509,7 +556,7 @@ class Model:
             init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
             value = Value(dtype)
             if init is not None:
-                env = scopes.flat()
+                env = scopes.env_for(init)
                 self.record(init, env)
                 got = Evaluator(self, env).eval(init)
                 value = replace(got, type=dtype)
@@ -534,12 +581,35 @@ class Model:
                           (kids[2], self.refine(here, kids[0], False))]  # fmt: skip
                 continue
             if node.data == "binary" and str(kids[1]) in ("&&", "||"):
-                truth = str(kids[1]) == "&&"
-                stack += [(kids[0], here), (kids[2], self.refine(here, kids[0], truth))]
+                stack += self._short_circuit_operands(node, here)
                 continue
             if node.data == "call" and self._collecting:
                 self._call_site(node, here)
             stack.extend((child, here) for child in kids)
+
+    def _short_circuit_operands(self, node: Tree, env: Env) -> list[tuple[Node, Env]]:
+        """The operands of `a && b && c ...` (or of `||`), each with the environment where it
+        is evaluated: narrowed by every operand before it being true (false for `||`).
+
+        The chain parses left-nested, `((a && b) && c)`, so narrowing each right operand by its
+        whole left side would refine the chain's prefix again at every level: quadratic in the
+        chain's length. Walking the left spine once and threading the environment gives the
+        same environments (refining by `x && y` is refining by x, then by y) in linear time."""
+        op = str(node.children[1])
+        truth = op == "&&"
+        spine = [node]  # the `&&` nodes of the chain, outermost first
+        first = node.children[0]
+        while is_tree(first, "binary") and str(first.children[1]) == op:  # type: ignore
+            spine.append(first)  # type: ignore[arg-type]
+            self._env_of[id(first)] = env
+            first = first.children[0]  # type: ignore[union-attr]
+        out: list[tuple[Node, Env]] = [(first, env)]
+        before = first
+        for link in reversed(spine):
+            env = self.refine(env, before, truth)
+            before = link.children[2]
+            out.append((before, env))
+        return out
 
     def _call_site(self, call: Tree, env: Env) -> None:
         name = callee_name(call)
@@ -772,7 +842,7 @@ class _Flow:
             expr = node.children[1]
             self.expression(expr, scopes)
             if not scopes.dead:
-                self.returns.append(Evaluator(self.model, scopes.flat()).eval(expr))
+                self.returns.append(Evaluator(self.model, scopes.env_for(expr)).eval(expr))
         elif kind == "break" and self.loops:
             self.loops[-1].breaks.append(scopes.copy())
         elif kind == "continue":
@@ -782,15 +852,27 @@ class _Flow:
         scopes.dead = True
 
     def _if_statement(self, node: Tree, scopes: Scopes) -> None:
-        cond, then = node.children[0], node.children[1]
-        other = node.children[2] if len(node.children) > 2 else None
-        self.expression(cond, scopes)
+        # `else if` is an if nested in the else branch. Following the chain here and joining
+        # all its branches once gives the same state as joining level by level (the join is a
+        # hull: associative and idempotent), without joining a variable assigned deep in a long
+        # chain again at every level on the way out (quadratic in the chain's length).
         branches = []
-        for branch, truth in ((then, True), (other, False)):
-            state = self.narrowed(scopes, cond, truth)
-            if branch is not None:
-                self.statement(branch, state)
+        current = scopes
+        while True:
+            cond, then = node.children[0], node.children[1]
+            other = node.children[2] if len(node.children) > 2 else None
+            self.expression(cond, current)
+            state = self.narrowed(current, cond, True)
+            self.statement(then, state)
             branches.append(state)
+            state = self.narrowed(current, cond, False)
+            if is_tree(other, "if_statement"):
+                current, node = state, other  # type: ignore[assignment]
+                continue
+            if other is not None:
+                self.statement(other, state)
+            branches.append(state)
+            break
         scopes.become(join_scopes(branches))
 
     def _for_statement(self, node: Tree, scopes: Scopes) -> None:
@@ -894,7 +976,7 @@ class _Flow:
         out = scopes.copy()
         if cond is None or out.dead:
             return out
-        env = out.flat()
+        env = out.env_for(cond)
         refined = self.model.refine(env, cond, truth)
         if refined is not env:
             for name, value in refined.items():
@@ -905,7 +987,7 @@ class _Flow:
     # --- expressions -----------------------------------------------------------------------
 
     def expression(self, expr: Node, scopes: Scopes) -> None:
-        self.model.record(expr, scopes.flat())
+        self.model.record(expr, scopes.env_for(expr))
         self.effects(expr, scopes)
 
     def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False) -> None:
@@ -934,7 +1016,7 @@ class _Flow:
         old = scopes.lookup(name) if name else None
         if name is None or old is None:
             return
-        got = Evaluator(self.model, scopes.flat()).eval(expr)
+        got = Evaluator(self.model, scopes.env_for(expr)).eval(expr)
         if op not in ("=", *_ASSIGN_OPS):
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):

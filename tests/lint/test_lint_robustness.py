@@ -414,3 +414,87 @@ def test_valid_shaders_draw_no_errors(path: Path) -> None:
     findings = lint_text(text, path.name, OFF).findings
     check_findings(findings, text)
     assert [f for f in findings if f.severity == "error"] == []
+
+
+# --- scaling: the analyses' work grows linearly with the code's length -------------------------
+# Work is counted, not timed: the Python lines the semantic model and the flow analysis execute
+# (sys.settrace), and the variables the model stores with the expressions it records. Each
+# shape is built with n and 4n statements; linear work grows 4x, quadratic 16x. (Nesting depth
+# is another matter: it is capped at 256 levels, C006, and each level costs a scope.)
+
+
+def _scaling_shape(kind: str, n: int) -> str:
+    lines: list[str] = []
+    if kind == "declaration-chain":
+        lines = ["float a0 = 1.0;"] + [f"float a{i} = a{i - 1} + 1.0;" for i in range(1, n)]
+    elif kind == "self-assignments":
+        lines = ["float x = 1.0;"] + ["x = x + 1.0;"] * n
+    elif kind == "plus-chain":
+        lines = [f"float a{i} = {i}.0;" for i in range(n)]
+        lines.append("float x = " + " + ".join(f"a{i}" for i in range(n)) + ";")
+    elif kind == "and-chain":
+        cond = " && ".join(f"fragCoord.x > {i}.0" for i in range(n))
+        lines = ["float x = 0.0;", f"if ({cond}) x = 1.0;"]
+    elif kind == "else-if-chain":
+        lines = [f"float a{i} = 0.0;" for i in range(n)] + ["if (fragCoord.x < 0.0) a0 = 1.0;"]
+        lines += [f"else if (fragCoord.x < {i}.0) a{i} = {i}.0;" for i in range(n)]
+    elif kind == "ifs-over-uninitialised":
+        lines = [f"float a{i};" for i in range(n)]
+        lines += [f"if (fragCoord.x > {i}.0) a{i} = 1.0; else a{i} = 2.0;" for i in range(n)]
+    elif kind == "sequential-loops":
+        lines = [f"float a{i} = 0.0;" for i in range(n)]
+        lines += [f"for (int i = 0; i < 4; i++) {{ a{i} += sin(a{i}); }}" for i in range(n)]
+    lines.append("fragColor = vec4(1.0);")
+    body = "\n    ".join(lines)
+    return "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    " + body + "\n}\n"
+
+
+def _analysis_work(text: str) -> tuple[int, int]:
+    """(lines executed, variables stored with recorded expressions) for the semantic model and
+    the definite-assignment analysis of `text`."""
+    from glint.lint.analysis.flow import function_flows
+    from glint.lint.analysis.model import semantic_model
+    from glint.lint.runner import build_context
+
+    ctx = build_context(text, "scaling.glsl", OFF)
+    assert ctx.tree is not None, ctx.front_end_error
+    lines = 0
+
+    def count(frame: object, event: str, arg: object) -> object:
+        nonlocal lines
+        if event == "line":
+            lines += 1
+        return count
+
+    previous = sys.gettrace()
+    old_limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old_limit, 20_000))
+    sys.settrace(count)  # type: ignore[arg-type]
+    try:
+        model = semantic_model(ctx)
+        function_flows(ctx)
+    finally:
+        sys.settrace(previous)
+        sys.setrecursionlimit(old_limit)
+    envs = {id(env): env for env in model._env_of.values()}
+    return lines, sum(len(env) for env in envs.values())
+
+
+@pytest.mark.parametrize(
+    "kind",
+    [
+        "declaration-chain",
+        "self-assignments",
+        "plus-chain",
+        "and-chain",
+        "else-if-chain",
+        "ifs-over-uninitialised",
+        "sequential-loops",
+    ],
+)
+def test_analysis_work_grows_linearly(kind: str) -> None:
+    small_lines, small_stored = _analysis_work(_scaling_shape(kind, 60))
+    large_lines, large_stored = _analysis_work(_scaling_shape(kind, 240))
+    # 4x the statements: linear work is 4x plus a constant; quadratic would be ~16x.
+    assert large_lines <= 5 * small_lines, (kind, small_lines, large_lines)
+    assert large_stored <= 5 * max(small_stored, 1), (kind, small_stored, large_stored)
