@@ -306,6 +306,8 @@ class _Analyzer:
         self.model = model
         self.summaries = summaries if summaries is not None else {}
         self.inout_position: dict[int, int] = {}  # id of a tracked inout parameter -> position
+        # counters of loops analysed in two passes: (name, start range, first iteration?)
+        self.counters: list[tuple[str, tuple[float, float] | None, bool]] = []
         self.scopes: list[dict[str, Var | None]] = []  # None: a name that is not tracked
         self.targets: list[_Target] = []
         self.flow: FunctionFlow | None = None
@@ -446,13 +448,35 @@ class _Analyzer:
             return None
         enter: State | None = after
         leave: State | None = None  # no condition: only `break` leaves
+        surely = False
         if cond is not None:
             enter, leave = self.condition(cond, after)
-            if self.runs_once(init, cond):
+            surely = self.runs_once(init, cond)
+            if surely:
                 leave = None
         target = _Target(loop=True)
         self.targets.append(target)
+        start = _loop_start(init)
+        peel = (surely and enter is not None and start is not None and len(self.counters) < 2
+                and not _assigns(body, start[0]))  # fmt: skip
+        if peel and enter is not None and start is not None:
+            # A loop that surely runs, in two passes: the first iteration, where the counter
+            # is its start (`if (i == 0) first = q; else use(prev);`), then the later ones
+            # from the state the first leaves (`prev = q` at its end), where it is not.
+            first = self.number(start[1])
+            self.counters.append((start[0], first, True))
+            end = self.nested(body, dict(enter))
+            self.counters.pop()
+            enter = _join([end, *target.continues])
+            target.continues.clear()
+            if enter is not None and step is not None:
+                self.expr(step, enter)
+            if enter is not None and cond is not None:
+                enter = self.condition(cond, enter)[0]
+            self.counters.append((start[0], first, False))
         end = self.nested(body, dict(enter)) if enter is not None else None
+        if peel:
+            self.counters.pop()
         self.targets.pop()
         looped = _join([end, *target.continues])
         if looped is not None and step is not None:
@@ -641,7 +665,9 @@ class _Analyzer:
         self, node: Node, yes: State | None, no: State | None
     ) -> tuple[State | None, State | None]:
         """Drop the side of a condition that the value ranges say cannot happen."""
-        truth = self.model.truth(node) if self.model is not None else None
+        truth = self.counter_truth(node)
+        if truth is None and self.model is not None:
+            truth = self.model.truth(node)
         if truth is None and _is_true(node):
             truth = True
         if truth is True:
@@ -649,6 +675,31 @@ class _Analyzer:
         if truth is False:
             return None, no
         return yes, no
+
+    def counter_truth(self, node: Node) -> bool | None:
+        """A comparison of a peeled loop's counter with its start value: decided in the first
+        iteration (the counter is the start) and for `==`/`!=` in the later ones (it is not)."""
+        if not (self.counters and isinstance(node, Tree) and node.data == "binary"):
+            return None
+        left, op, right = node.children
+        op = str(op)
+        for name, first, is_first in reversed(self.counters):
+            if _is_variable(right, name) and op in _FLIP:
+                left, op, right = right, _FLIP[op], left
+            if not _is_variable(left, name):
+                continue
+            value = self.number(right)
+            if first is None or value is None or first[0] != first[1] or value[0] != value[1]:
+                return None
+            a, b = first[0], value[0]
+            if is_first:
+                checks = {"<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b, "==": a == b,
+                          "!=": a != b}  # fmt: skip
+                return checks.get(op)
+            if a == b and op in ("==", "!="):
+                return op == "!="
+            return None
+        return None
 
     def chain(self, node: Tree, state: State) -> None:
         """Binary operators and sequences; left-deep chains (`a + b + c + ...`) are walked
@@ -839,6 +890,25 @@ def _start_pos(node: Node) -> int | None:
 
 
 _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}
+
+
+def _assigns(node: Node, name: str) -> bool:
+    """Whether `name` may be assigned anywhere in `node` (an assignment, ++/--, or an argument
+    that a call may write)."""
+    if not isinstance(node, Tree):
+        return False
+    for sub in node.iter_subtrees():
+        if sub.data == "assignment" and _root(sub.children[0]) is not None:
+            targets = [sub.children[0]]
+        elif sub.data in ("prefix", "postfix"):
+            targets = [sub.children[1] if sub.data == "prefix" else sub.children[0]]
+        elif sub.data == "call" and len(sub.children) > 1 and isinstance(sub.children[1], Tree):
+            targets = list(sub.children[1].children)
+        else:
+            continue
+        if any(_is_variable(_root(t) or t, name) for t in targets):
+            return True
+    return False
 
 
 def _is_variable(node: Node, name: str) -> bool:

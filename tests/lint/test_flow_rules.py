@@ -265,6 +265,23 @@ def test_inout_summary_names_the_components_read_first() -> None:
     assert [f.code for f in findings] == ["C102"] and "`fragColor.z`" in findings[0].message
 
 
+def test_loop_that_surely_runs_is_peeled_at_its_first_iteration() -> None:
+    body = ("float d = 1e9; vec2 prev, first;\n"
+            "for (int i = 0; i < 8; i++) {\n"
+            "  vec2 q = vec2(float(i));\n"
+            "  if (i == 0) first = q; else d = min(d, distance(q, prev));\n"
+            "  prev = q;\n"
+            "}\n"
+            "fragColor = vec4(d, first, 1.0);")  # fmt: skip
+    assert found(image(body)) == []
+    # a loop that may not run is not peeled; nor one whose counter the body changes
+    assert found(image(body.replace("i < 8", "i < int(iTime)"))) != []
+    assert found(image(body.replace("prev = q;", "prev = q; i += 0;"))) != []
+    # the later iterations still see what the first leaves unset
+    body = body.replace("prev = q;", "").replace("vec2 prev, first;", "vec2 prev, first;")
+    assert [c for c, _ in found(image(body))] == ["C103"]
+
+
 # --- robustness -----------------------------------------------------------------------------
 
 
