@@ -12,6 +12,7 @@ import re
 import shutil
 import subprocess
 import tempfile
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from glint.compiler import shadertoy
@@ -20,6 +21,9 @@ from glint.compiler.sourcemap import Origin, build_line_map, split_lines
 
 TARGETS = shadertoy.TARGETS
 TIMEOUT_S = 30.0
+# validate_many: files per glslangValidator process, and the time each file adds to its limit.
+BATCH_FILES = 64
+BATCH_FILE_TIMEOUT_S = 2.0
 SPIRV_OPT = "/usr/bin/spirv-opt"
 MAIN_IMAGE_SIGNATURE = "void mainImage(out vec4 fragColor, in vec2 fragCoord)"
 
@@ -74,12 +78,12 @@ def wrap_for_target(source: str, target: str) -> tuple[str, int]:
     return shadertoy.wrap_for(wrap_as, source), shadertoy.prelude_lines(wrap_as)
 
 
-def _run(args: list[str]) -> subprocess.CompletedProcess[str]:
+def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess[str]:
     try:
-        return subprocess.run(args, capture_output=True, text=True, timeout=TIMEOUT_S)
+        return subprocess.run(args, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired as exc:
         raise EnvironmentProblem(
-            f"{os.path.basename(args[0])} did not finish within {TIMEOUT_S:.0f} s"
+            f"{os.path.basename(args[0])} did not finish within {timeout:.0f} s"
         ) from exc
     except OSError as exc:
         raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
@@ -189,12 +193,85 @@ def validate(source: str, filename: str = "<input>", target: str = "shadertoy") 
     wrapped, prelude_lines = wrap_for_target(source, target)
     with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
         result = _compile(wrapped, workdir, [])
-    diagnostics = parse_output(result.stdout + result.stderr, source, filename, prelude_lines)
-    if result.returncode != 0 and not any(d.severity == "error" for d in diagnostics):
+    output = result.stdout + result.stderr
+    return _diagnostics(output, result.returncode, source, filename, prelude_lines)
+
+
+def _diagnostics(
+    output: str, returncode: int, source: str, filename: str, prelude_lines: int
+) -> list[Diagnostic]:
+    diagnostics = parse_output(output, source, filename, prelude_lines)
+    if returncode != 0 and not any(d.severity == "error" for d in diagnostics):
         # A failure we could not parse must not pass silently.
-        detail = (result.stdout + result.stderr).strip() or f"exit status {result.returncode}"
+        detail = output.strip() or f"exit status {returncode}"
         diagnostics.append(Diagnostic(filename, 1, 1, "error", f"glslangValidator: {detail}"))
     return diagnostics
+
+
+def validate_many(
+    sources: Sequence[tuple[str, str]], target: str = "shadertoy"
+) -> list[list[Diagnostic]]:
+    """`validate` for many (source, filename) pairs with one glslangValidator process per
+    BATCH_FILES files instead of one per file; the diagnostics of each, in the given order.
+
+    Each source is wrapped as `validate` wraps it and written to a file of its own; glslang
+    compiles the files given on one command line separately (no linking between them) and
+    prints each file's name on a line of its own before that file's messages. The output is
+    cut at those names and each part parsed against its own source, with the same line
+    mapping as `validate`. Where the output cannot be cut that way (a crash, a message on
+    stderr, a name missing), the batch is validated again one file at a time: the results are
+    always those of `validate`, only faster."""
+    results: list[list[Diagnostic]] = []
+    for start in range(0, len(sources), BATCH_FILES):
+        batch = sources[start : start + BATCH_FILES]
+        results += _validate_batch(batch, target) or [validate(s, f, target) for s, f in batch]
+    return results
+
+
+def _validate_batch(
+    batch: Sequence[tuple[str, str]], target: str
+) -> list[list[Diagnostic]] | None:
+    """One glslangValidator process for the batch, or None when its output cannot be split."""
+    wrapped = [wrap_for_target(source, target) for source, _ in batch]
+    validator = find_validator()
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        paths = []
+        for index, (text, _) in enumerate(wrapped):
+            path = os.path.join(workdir, f"{index:05d}.frag")  # .frag: the fragment stage
+            with open(path, "w", encoding="utf-8") as handle:
+                handle.write(text)
+            paths.append(path)
+        timeout = TIMEOUT_S + BATCH_FILE_TIMEOUT_S * len(paths)
+        result = _run([validator, *paths], timeout)
+    sections = _split_by_file(result.stdout, paths)
+    if sections is None or result.stderr.strip() or result.returncode < 0:
+        return None
+    # glslang's exit status covers the whole batch; a file failed if its part has an ERROR.
+    failed = [any(line.startswith("ERROR") for line in part.splitlines()) for part in sections]
+    if result.returncode != 0 and not any(failed):
+        return None  # it failed, and no file says why: let `validate` find out which
+    return [
+        _diagnostics(part, result.returncode if bad else 0, source, filename, prelude)
+        for (source, filename), (_, prelude), part, bad in zip(
+            batch, wrapped, sections, failed, strict=True
+        )
+    ]
+
+
+def _split_by_file(output: str, paths: list[str]) -> list[str] | None:
+    """glslang's output cut into each file's part: every file's name comes on a line of its
+    own, in the order given, before its messages. None if the output is not like that."""
+    parts: list[list[str]] = []
+    for line in output.splitlines():
+        if len(parts) < len(paths) and line.strip() == paths[len(parts)]:
+            parts.append([])
+        elif parts:
+            parts[-1].append(line)
+        elif line.strip():
+            return None  # a message before the first file's name
+    if len(parts) != len(paths):
+        return None
+    return ["\n".join(part) for part in parts]
 
 
 def spirv_instruction_count(source: str, target: str = "shadertoy") -> int | None:

@@ -3,11 +3,18 @@
 from __future__ import annotations
 
 import shutil
+import subprocess
 
 import pytest
 
+from glint.compiler import glslang
 from glint.compiler.errors import EnvironmentProblem, UsageError
-from glint.compiler.glslang import find_validator, spirv_instruction_count, validate
+from glint.compiler.glslang import (
+    find_validator,
+    spirv_instruction_count,
+    validate,
+    validate_many,
+)
 from glint.compiler.sourcemap import Origin, build_line_map
 
 needs_glslang = pytest.mark.skipif(
@@ -138,3 +145,93 @@ def test_spirv_instruction_count_grows_with_code() -> None:
     count = spirv_instruction_count(VALID)
     assert count is not None and count > spirv_instruction_count(small)  # type: ignore[operator]
     assert spirv_instruction_count("not glsl") is None
+
+
+# --- validate_many: one glslangValidator process for many files ---------------------------------
+
+# Two files with errors on different lines, a clean one between them and a complete shader
+# (#version, not wrapped: no prelude to subtract) whose error is on yet another line.
+ERROR_ON_LINE_2 = "void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(undefinedA);\n}\n"
+ERROR_ON_LINE_5 = (
+    "float helper(float x) {\n    return x;\n}\n\n"
+    "float other() { return undefinedB; }\n"
+    "void mainImage(out vec4 c, in vec2 f) { c = vec4(helper(1.0)); }\n"
+)
+COMPLETE_ERROR_ON_LINE_4 = (
+    "#version 300 es\nprecision highp float;\nout vec4 color;\n"
+    "void main() { color = vec4(undefinedC); }\n"
+)
+Completed = subprocess.CompletedProcess[str]
+BATCH = [
+    (ERROR_ON_LINE_2, "a.glsl"),
+    (VALID, "ok.glsl"),
+    (ERROR_ON_LINE_5, "b.glsl"),
+    (COMPLETE_ERROR_ON_LINE_4, "c.frag"),
+]
+
+
+@needs_glslang
+def test_validate_many_keeps_each_files_diagnostics_on_that_file() -> None:
+    results = validate_many(BATCH)
+    assert len(results) == len(BATCH)
+    a, ok, b, c = results
+    assert ok == []
+    assert [(d.file, d.line, d.severity) for d in a] == [("a.glsl", 2, "error")]
+    assert "undefinedA" in a[0].message
+    assert [(d.file, d.line, d.severity) for d in b] == [("b.glsl", 5, "error")]
+    assert "undefinedB" in b[0].message
+    assert [(d.file, d.line) for d in c] == [("c.frag", 4)]
+    assert "undefinedC" in c[0].message
+    # exactly what one process per file says, columns and messages included
+    assert results == [validate(source, name) for source, name in BATCH]
+
+
+@needs_glslang
+def test_validate_many_runs_one_process_per_batch(monkeypatch: pytest.MonkeyPatch) -> None:
+    calls: list[int] = []
+    real_run = glslang._run
+
+    def counting_run(args: list[str], timeout: float = glslang.TIMEOUT_S) -> Completed:
+        calls.append(len(args) - 1)
+        return real_run(args, timeout)
+
+    monkeypatch.setattr(glslang, "_run", counting_run)
+    monkeypatch.setattr(glslang, "BATCH_FILES", 3)
+    sources = BATCH + [(ERROR_ON_LINE_2, "d.glsl")]
+    results = validate_many(sources)
+    assert calls == [3, 2]  # two processes for five files, not five
+    files = [[d.file for d in result] for result in results]
+    assert files == [["a.glsl"], [], ["b.glsl"], ["c.frag"], ["d.glsl"]]
+    assert results[4][0].line == 2  # d.glsl, alone in the second batch
+
+
+@needs_glslang
+def test_validate_many_falls_back_when_the_output_cannot_be_split(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    real_run = glslang._run
+
+    def mangled(args: list[str], timeout: float = glslang.TIMEOUT_S) -> Completed:
+        result = real_run(args, timeout)
+        if len(args) > 2:  # the batch: lose the file names, as a crash mid-way would
+            result.stdout = "\n".join(
+                line for line in result.stdout.splitlines() if not line.endswith(".frag")
+            )
+        return result
+
+    monkeypatch.setattr(glslang, "_run", mangled)
+    assert validate_many(BATCH) == [validate(source, name) for source, name in BATCH]
+
+
+def test_validate_many_of_nothing_runs_nothing() -> None:
+    assert validate_many([]) == []
+
+
+def test_output_is_split_at_the_file_names_in_order() -> None:
+    paths = ["/t/00000.frag", "/t/00001.frag"]
+    output = "/t/00000.frag\nERROR: 0:3: 'x' : bad\n\n/t/00001.frag\nWARNING: 0:1: w\n"
+    assert glslang._split_by_file(output, paths) == ["ERROR: 0:3: 'x' : bad\n", "WARNING: 0:1: w"]
+    assert glslang._split_by_file("/t/00000.frag\n", paths) is None  # a file is missing
+    assert glslang._split_by_file("oops\n" + output, paths) is None  # text before the first
+    swapped = "/t/00001.frag\n/t/00000.frag\n"
+    assert glslang._split_by_file(swapped, paths) is None  # out of order
