@@ -91,6 +91,7 @@ class HdrWithoutTonemap(Rule):
     code = "L007"
     name = "hdr-without-tonemap"
     category = "lighting"
+    default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         found = main_image(ctx)
