@@ -110,4 +110,6 @@ def test_rule_all_json_lists_every_rule_with_its_docs() -> None:
     assert [r["code"] for r in data] == list(all_rules())
     assert set(data[0]) == {"code", "name", "category", "severity", "fixable", "summary", "details",
                             "why", "example", "fix_title", "fix", "fix_safety",
-                            "references"}  # fmt: skip
+                            "references", "runs", "on_real_shaders"}  # fmt: skip
+    runs = {r["code"]: r["runs"] for r in data}
+    assert runs == {c: "default" if r.default else "opt-in" for c, r in all_rules().items()}
