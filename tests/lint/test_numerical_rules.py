@@ -400,7 +400,8 @@ def test_smoothstep_with_inverted_edges_and_its_fix() -> None:
 
 def test_smoothstep_with_equal_edges_has_no_fix() -> None:
     f = only(shader("float s = smoothstep(0.5, 0.5, sin(iTime));"), "N009")
-    assert f.fix is None and "equal" in f.message and f.severity == "error"
+    # a step on every GPU but at x == edge (some authors use it as one): not an error
+    assert f.fix is None and "equal" in f.message and f.severity == "warning"
 
 
 def test_smoothstep_with_a_positive_width_against_zero_is_reversed_not_equal() -> None:

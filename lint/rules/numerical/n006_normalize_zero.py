@@ -43,6 +43,7 @@ class NormalizeZero(NumericalRule):
 
     code = "N006"
     name = "normalize-zero"
+    default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
 
     _WHY = {
         "sum": "the sum of two unit vectors is zero when they are opposite",

@@ -19,11 +19,13 @@ class SmoothstepInverted(NumericalRule):
     """Finds `smoothstep(e0, e1, x)` whose edges are reversed (e0 > e1 for every value) or equal
     (both the same constant).
 
-    Equal edges are an error: smoothstep(e, e, x) divides 0 by 0 at x == e and is a step
-    elsewhere, on every run. Reversed edges are a portability warning: GLSL leaves them
-    undefined, but every GPU and ShaderToy runner evaluates the usual formula and draws the
-    mirrored ramp, the same image on every run; authors write `smoothstep(aa, 0.0, d)` on purpose
-    as an anti-aliased mask. The rewrite below is defined everywhere and draws the same curve.
+    Both are warnings, not errors (an error is code that does not compile or is wrong on every
+    run). Equal edges: smoothstep(e, e, x) divides by zero; GPUs give a step at e (some authors
+    use it as one), and 0/0 = NaN where x == e exactly. Reversed edges are a portability note:
+    GLSL leaves them undefined, but every GPU and ShaderToy runner evaluates the usual formula
+    and draws the mirrored ramp, the same image on every run; authors write
+    `smoothstep(aa, 0.0, d)` on purpose as an anti-aliased mask. The rewrite below is defined
+    everywhere and draws the same curve.
     Edges are called equal only when both are the same constant: a positive width such as
     `2.0 / iResolution.y` or `fwidth(d)` against 0.0 is a reversed ramp, not a step.
 
@@ -51,6 +53,7 @@ class SmoothstepInverted(NumericalRule):
 
     code = "N009"
     name = "smoothstep-inverted"
+    default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
     severity = "warning"
     fixable = "safe"
 
@@ -70,7 +73,7 @@ class SmoothstepInverted(NumericalRule):
                     f"smoothstep edges {shown0} and {shown1} are equal: it divides by zero (NaN "
                     "at x == edge) and is a step elsewhere; use step() or separate them"
                 )
-                yield self.emit(ctx, call, message, severity="error")
+                yield self.emit(ctx, call, message)
                 continue
             edit = ctx.replace(call, f"(1.0 - smoothstep({b}, {a}, {x}))")
             fix = Fix("write the reversed ramp as 1.0 - smoothstep", (edit,)) if edit else None
