@@ -48,6 +48,7 @@ class ColourReadBeforeWritten(Rule):
 
     code = "C102"
     name = "colour-read-before-written"
+    default = False  # below 90% worth acting on in the labelled corpus sample
     category = "correctness"
     severity = "warning"
 

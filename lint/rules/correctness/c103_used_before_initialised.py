@@ -42,6 +42,7 @@ class UsedBeforeInitialised(Rule):
 
     code = "C103"
     name = "used-before-initialised"
+    default = False  # below 90% worth acting on in the labelled corpus sample
     category = "correctness"
     severity = "warning"
 

@@ -58,6 +58,8 @@ class ClampInverted(NumericalRule):
             lo, hi = model.range_of(args[1]), model.range_of(args[2])
             if not lo.lo >= hi.hi:  # lo >= hi for every value of both
                 continue
+            if lo.is_point and lo == hi:  # clamp(x, 1.0, 1.0): a constant, written on purpose
+                continue
             shown = [text(ctx, a, 24) for a in args]
             if lo.is_point and hi.is_point and lo.lo > hi.lo:
                 message = (
