@@ -471,19 +471,10 @@ def global_constants(ctx: LintContext) -> dict[str, float]:
     if cached is not None:
         return cached  # type: ignore[no-any-return]
     values: dict[str, float] = {}
-    for node in ctx.tree.children if ctx.tree is not None else ():
-        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
-            continue
-        spec = node.children[0]
-        qual = spec.children[0] if isinstance(spec, Tree) and spec.children else None
-        if not (isinstance(qual, Tree) and qual.data == "type_qualifier"
-                and "const" in [str(t) for t in qual.children]):  # fmt: skip
-            continue
-        for child in node.children[1:]:
-            if isinstance(child, Tree) and child.data == "declarator" and len(child.children) > 1:
-                value = const_value(child.children[-1], values)
-                if value is not None:
-                    values[str(child.children[0])] = value
+    for name, init in global_const_inits(ctx).items():  # in order: later ones use earlier
+        value = const_value(init, values)
+        if value is not None:
+            values[name] = value
     ctx.cache["lighting.constants"] = values
     return values
 
