@@ -16,14 +16,16 @@ from pathlib import Path
 from glint.compiler.errors import EnvironmentProblem, UsageError
 from glint.compiler.shadertoy import TARGETS
 
-from .config import load_options
+from .cache import LintCache, cache_directory
+from .config import find_pyproject, load_options
 from .docs import rules_markdown
 from .finding import Finding
 from .options import Options
+from .parallel import lint_items
 from .precision import precision_note
 from .reporters import FORMATS, REPORTERS, statistics, summary
 from .rules import CATEGORY_PREFIX, all_rules, rule_doc
-from .runner import lint_bytes
+from .runner import LintResult, decode
 
 EXTENSIONS = (".glsl", ".frag", ".fs")
 
@@ -48,6 +50,25 @@ def add_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-
     )
     lint.add_argument("--no-glslang", action="store_true", help="skip glslangValidator")
     lint.add_argument("--target", choices=TARGETS, help="how the file is wrapped (shadertoy)")
+    lint.add_argument(
+        "--no-cache",
+        action="store_true",
+        help="lint every file afresh; neither read nor write .glint_cache",
+    )
+    lint.add_argument(
+        "--cache-dir",
+        metavar="DIR",
+        help="where the cache lives (default: .glint_cache beside pyproject.toml, else here; "
+        "or $GLINT_CACHE_DIR)",
+    )
+    lint.add_argument(
+        "-j",
+        "--jobs",
+        type=_jobs,
+        default=0,
+        metavar="N",
+        help="worker processes (default 0: one per core; 1: lint in this process)",
+    )
     lint.set_defaults(handler=cmd_lint)
 
     rule = sub.add_parser("rule", help="explain a lint rule, or list them all")
@@ -58,16 +79,27 @@ def add_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-
     rule.set_defaults(handler=cmd_rule)
 
 
+def _jobs(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of processes, got {text!r}") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError("must be 0 (one per core) or more")
+    return value
+
+
 def _code_list(text: str) -> list[str]:
     return [c.strip().upper() for c in text.split(",") if c.strip()]
 
 
 def _check_codes(codes: list[str], flag: str) -> None:
-    rules = all_rules()
     prefixes = set(CATEGORY_PREFIX.values())
     for code in codes:
         known = code in ("ALL", "DEFAULT") or code in prefixes
-        known = known or any(c.startswith(code) for c in rules)
+        # all_rules() imports every rule module: only for a code to look up (a run that finds
+        # every file in the cache then needs none of them)
+        known = known or any(c.startswith(code) for c in all_rules())
         if not known:
             raise UsageError(
                 f"{flag}: unknown rule code or prefix {code!r}; see `glint rule --all`"
@@ -135,14 +167,13 @@ def cmd_lint(args: argparse.Namespace) -> int:
         raise UsageError("--unsafe-fixes needs --fix")
     options = options_for(args)
     files = collect(args.paths)
+    results = _lint_files(files, options, args)
     findings: list[Finding] = []
     sources: dict[str, str] = {}
     fixed = 0
-    for file in files:
-        name = "<stdin>" if file == "-" else file
-        result = lint_bytes(_read(file), name, options, args.fix, args.unsafe_fixes)
+    for file, result in zip(files, results, strict=True):
         findings += result.findings
-        sources[name] = result.text
+        sources[result.file] = result.text
         for note in result.notes:
             print(f"glint: {note}", file=sys.stderr)
         if result.fixed:
@@ -159,6 +190,34 @@ def cmd_lint(args: argparse.Namespace) -> int:
     if args.format in ("text", "concise") or args.statistics:
         out.write(summary(findings, fixed))
     return 1 if findings else 0
+
+
+def _lint_files(files: list[str], options: Options, args: argparse.Namespace) -> list[LintResult]:
+    """Each file's result, in order: from the cache when its bytes, name and the settings are
+    unchanged, the others linted (in parallel when there are enough of them). Fixing never
+    reads the cache: it lints afresh, and stores the findings of what it leaves on disk."""
+    names = ["<stdin>" if file == "-" else file for file in files]
+    data = [_read(file) for file in files]
+    cache = None
+    if not args.no_cache:
+        where = cache_directory(args.cache_dir, find_pyproject(Path.cwd().resolve()))
+        cache = LintCache(where, options)
+    results: list[LintResult | None] = [None] * len(files)
+    if cache is not None and not args.fix:
+        for index, (name, content) in enumerate(zip(names, data, strict=True)):
+            found = cache.load(cache.key(name, content))
+            if found is not None:
+                results[index] = LintResult(name, found, decode(content, name)[0])
+    todo = [index for index, result in enumerate(results) if result is None]
+    items = [(names[index], data[index]) for index in todo]
+    fresh = lint_items(items, options, args.fix, args.unsafe_fixes, args.jobs)
+    for index, result in zip(todo, fresh, strict=True):
+        results[index] = result
+        if cache is not None and not (result.fixed and files[index] == "-"):
+            # the bytes the file holds after this run (a fixed file is written as UTF-8)
+            now = result.text.encode("utf-8") if result.fixed else data[index]
+            cache.store(cache.key(names[index], now), result.findings)
+    return [result for result in results if result is not None]
 
 
 def cmd_rule(args: argparse.Namespace) -> int:

@@ -3,7 +3,8 @@ helpers rules use to turn tree nodes into spans, findings and edits of the user'
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -21,6 +22,25 @@ MAX_NESTING = 256
 
 Node = Tree | Token
 Span = tuple[int, int, int, int]  # line, column, end line, end column (1-based, end exclusive)
+
+# glslang's diagnostics computed ahead for many files with one process (lint/parallel.py, with
+# `validate_many`), by (file, target, text): `LintContext.glslang` takes them from here rather
+# than running glslangValidator for the file. Keyed by the text itself, so a text that differs
+# (a fix applied to it) is validated afresh.
+_PRECOMPUTED: dict[tuple[str, str, str], list[Diagnostic]] = {}
+
+
+@contextmanager
+def precomputed_glslang(
+    results: Mapping[tuple[str, str, str], list[Diagnostic]],
+) -> Iterator[None]:
+    """Within the block, contexts of these (file, target, text) use these diagnostics."""
+    _PRECOMPUTED.update(results)
+    try:
+        yield
+    finally:
+        for key in results:
+            _PRECOMPUTED.pop(key, None)
 
 
 @dataclass
@@ -49,7 +69,11 @@ class LintContext:
     def glslang(self) -> list[Diagnostic]:
         """glslangValidator's diagnostics on the file as the target wraps it (run once)."""
         if self._glslang is None:
-            self._glslang = validate(self.text, self.file, self.target) if self.text else []
+            known = _PRECOMPUTED.get((self.file, self.target, self.text))
+            if known is not None:
+                self._glslang = known
+            else:
+                self._glslang = validate(self.text, self.file, self.target) if self.text else []
         return self._glslang
 
     def nodes(self, kind: str) -> list[Tree]:

@@ -4,6 +4,7 @@ configuration, fixes written back in place, and one clear message for bad usage.
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -113,3 +114,170 @@ def test_rule_all_json_lists_every_rule_with_its_docs() -> None:
                             "references", "runs", "on_real_shaders"}  # fmt: skip
     runs = {r["code"]: r["runs"] for r in data}
     assert runs == {c: "default" if r.default else "opt-in" for c, r in all_rules().items()}
+
+
+# --- the cache (.glint_cache) and parallel linting ----------------------------------------------
+
+ROOT = Path(__file__).resolve().parents[2]
+CORPUS_FILES = sorted((ROOT / "tests" / "corpus" / "lint_mistakes").glob("*.glsl")) + sorted(
+    (ROOT / "tests" / "corpus" / "valid").glob("*.glsl")
+)
+
+
+def _entries(tree: Path) -> list[Path]:
+    return sorted((tree / ".glint_cache").glob("v1-*/*.json"))
+
+
+def _plant(entry: Path, message: str, fix: dict[str, object] | None = None) -> None:
+    """Rewrite a cache entry to hold one made-up finding: seen in the output only if the
+    entry was read."""
+    finding = {"file": "a.glsl", "line": 1, "column": 1, "end_line": 1, "end_column": 5,
+               "code": "C003", "severity": "error", "message": message, "fix": fix}  # fmt: skip
+    entry.write_text(json.dumps({"findings": [finding]}))
+
+
+def test_a_second_run_reads_the_cache(tree: Path) -> None:
+    first = glint("lint", "a.glsl", "--no-glslang", "--format", "json", cwd=tree)
+    assert first.returncode == 0 and json.loads(first.stdout) == []
+    # beside pyproject.toml, marked as a cache and ignored by git
+    assert (tree / ".glint_cache" / "CACHEDIR.TAG").is_file()
+    assert (tree / ".glint_cache" / ".gitignore").read_text().splitlines()[-1] == "*"
+    [entry] = _entries(tree)
+    _plant(entry, "from the cache")
+    second = glint("lint", "a.glsl", "--no-glslang", "--format", "json", cwd=tree)
+    assert [f["message"] for f in json.loads(second.stdout)] == ["from the cache"]
+    assert second.returncode == 1  # the exit status follows the cached findings
+
+
+def test_changed_content_options_or_no_cache_lint_afresh(tree: Path) -> None:
+    glint("lint", "a.glsl", "--no-glslang", cwd=tree)
+    [entry] = _entries(tree)
+    _plant(entry, "from the cache")
+    # --no-cache neither reads nor writes
+    fresh = glint("lint", "a.glsl", "--no-glslang", "--no-cache", cwd=tree)
+    assert fresh.returncode == 0 and "from the cache" not in fresh.stdout
+    assert _entries(tree) == [entry]
+    # other options are another entry
+    other = glint("lint", "a.glsl", "--no-glslang", "--select", "ALL", cwd=tree)
+    assert other.returncode == 0 and "from the cache" not in other.stdout
+    assert len(_entries(tree)) == 2
+    # a changed file is another entry: the broken text's syntax error, not the planted finding
+    (tree / "a.glsl").write_text(BROKEN)
+    changed = glint("lint", "a.glsl", "--no-glslang", "--format", "concise", cwd=tree)
+    assert changed.returncode == 1 and "from the cache" not in changed.stdout
+    assert changed.stdout.startswith("a.glsl:3:1: C003")
+    assert len(_entries(tree)) == 3
+
+
+def test_fix_never_applies_cached_findings(tree: Path) -> None:
+    glint("lint", "a.glsl", "--no-glslang", cwd=tree)
+    [entry] = _entries(tree)
+    edit = {"line": 1, "column": 1, "end_line": 1, "end_column": 5, "content": "SENTINEL"}
+    _plant(entry, "stale", {"message": "stale fix", "applicability": "safe", "edits": [edit]})
+    assert "stale" in glint("lint", "a.glsl", "--no-glslang", cwd=tree).stdout  # planted
+    fixed = glint("lint", "a.glsl", "--no-glslang", "--fix", cwd=tree)
+    assert fixed.returncode == 0, fixed.stdout + fixed.stderr
+    assert (tree / "a.glsl").read_text() == CLEAN  # linted afresh: nothing to fix
+
+
+def test_fixed_file_is_cached_as_written(tree: Path) -> None:
+    (tree / "t.glsl").write_text(CLEAN.replace("vec4(1.0)", "texture2D(iChannel0, fragCoord)"))
+    fixed = glint("lint", "t.glsl", "--no-glslang", "--select", "P003", "--fix", cwd=tree)
+    assert fixed.returncode == 0 and "texture(" in (tree / "t.glsl").read_text()
+    [entry] = _entries(tree)  # the fixed text's findings (none), keyed by the bytes written
+    assert json.loads(entry.read_text()) == {"findings": []}
+    _plant(entry, "from the cache")
+    again = glint("lint", "t.glsl", "--no-glslang", "--select", "P003", cwd=tree)
+    assert "from the cache" in again.stdout
+
+
+def test_cache_dir_option_and_environment(
+    tree: Path, tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    elsewhere = tmp_path_factory.mktemp("cache")
+    glint("lint", "a.glsl", "--no-glslang", "--cache-dir", str(elsewhere), cwd=tree)
+    assert len(list(elsewhere.glob("v1-*/*.json"))) == 1 and _entries(tree) == []
+    from_environment = tmp_path_factory.mktemp("environment")
+    monkeypatch.setenv("GLINT_CACHE_DIR", str(from_environment))
+    glint("lint", "a.glsl", "--no-glslang", cwd=tree)
+    assert len(list(from_environment.glob("v1-*/*.json"))) == 1 and _entries(tree) == []
+
+
+@pytest.mark.parametrize("glslang", [False, True])
+def test_parallel_results_equal_serial_ones_in_order(glslang: bool) -> None:
+    if glslang and shutil.which("glslangValidator") is None:
+        pytest.skip("glslangValidator not installed")
+    assert len(CORPUS_FILES) >= 8
+    flags = ["--select", "ALL", "--no-cache", "--format", "json"]
+    flags += [] if glslang else ["--no-glslang"]
+    files = [str(p) for p in CORPUS_FILES]
+    serial = glint("lint", *flags, "--jobs", "1", *files)
+    parallel = glint("lint", *flags, "--jobs", "3", *files)
+    assert serial.returncode == parallel.returncode == 1, serial.stderr + parallel.stderr
+    assert parallel.stdout == serial.stdout
+    found = json.loads(serial.stdout)
+    order = [files.index(f["file"]) for f in found]
+    assert order == sorted(order) and len(set(order)) > 5  # file by file, as given
+
+
+def test_lint_items_are_the_same_in_workers_and_in_process() -> None:
+    from glint.lint.options import Options
+    from glint.lint.parallel import chunks, lint_items, worker_count
+    from glint.lint.runner import lint_bytes
+
+    items = [(str(p), p.read_bytes()) for p in CORPUS_FILES]
+    options = Options(select=["ALL"], glslang=False)
+    alone = [lint_bytes(data, name, options) for name, data in items]
+    in_workers = lint_items(items, options, jobs=2)
+    assert [r.file for r in in_workers] == [name for name, _ in items]
+    assert [r.findings for r in in_workers] == [r.findings for r in alone]
+    assert any(r.findings for r in alone)
+    # a handful of files stays in this process; chunks cover every file once, in order
+    assert worker_count(3, jobs=8) == 1 and worker_count(100, jobs=2) == 2
+    parts = chunks(items, 2)
+    assert [item for part in parts for item in part] == items and len(parts) > 2
+
+
+@pytest.mark.skipif(shutil.which("glslangValidator") is None, reason="glslangValidator needed")
+def test_glslang_errors_of_a_batch_stay_on_their_files(tree: Path) -> None:
+    (tree / "x.glsl").write_text(CLEAN.replace("vec4(1.0)", "vec4(undefinedX)"))  # line 2
+    (tree / "y.glsl").write_text("\n\n\n" + CLEAN.replace("vec4(1.0)", "vec4(undefinedY)"))
+    result = glint("lint", "x.glsl", "a.glsl", "y.glsl", "--select", "C001", "--jobs", "1",
+                   "--no-cache", "--format", "json", cwd=tree)  # fmt: skip
+    found = json.loads(result.stdout)
+    assert [(f["file"], f["line"]) for f in found] == [("x.glsl", 2), ("y.glsl", 5)]
+    assert "undefinedX" in found[0]["message"] and "undefinedY" in found[1]["message"]
+
+
+def test_a_change_to_the_code_or_the_settings_changes_the_key(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from glint.lint import cache
+    from glint.lint.options import Options
+
+    source = tmp_path / "lint" / "rule.py"
+    source.parent.mkdir()
+    source.write_text("X = 1\n")
+    monkeypatch.setattr(cache, "_LINT_DIR", source.parent)
+    monkeypatch.setattr(cache, "_COMPILER_DIR", tmp_path / "compiler")
+    before = cache.code_fingerprint.__wrapped__()
+    source.write_text("X = 2\n")
+    assert cache.code_fingerprint.__wrapped__() != before
+    keys = {
+        cache.LintCache(tmp_path, options).key("a.glsl", b"x")
+        for options in (Options(), Options(select=["ALL"]), Options(ignore=["N"]),
+                        Options(target="webgl2"), Options(glslang=False))
+    }  # fmt: skip
+    assert len(keys) == 5
+    one = cache.LintCache(tmp_path, Options())
+    assert len({one.key("a.glsl", b"x"), one.key("b.glsl", b"x"), one.key("a.glsl", b"y")}) == 3
+
+
+def test_an_unreadable_entry_is_a_miss_and_is_rewritten(tree: Path) -> None:
+    glint("lint", "sub/b.frag", "--no-glslang", cwd=tree)
+    [entry] = _entries(tree)
+    entry.write_text('{"findings": [{"file": ')  # cut short, as by a full disk
+    result = glint("lint", "sub/b.frag", "--no-glslang", "--format", "json", cwd=tree)
+    assert result.returncode == 1 and json.loads(result.stdout)[0]["code"] == "C003"
+    assert json.loads(entry.read_text())["findings"][0]["code"] == "C003"
+    assert not list(entry.parent.glob("*.tmp"))  # written atomically: no temporary left
