@@ -281,3 +281,13 @@ def test_an_unreadable_entry_is_a_miss_and_is_rewritten(tree: Path) -> None:
     assert result.returncode == 1 and json.loads(result.stdout)[0]["code"] == "C003"
     assert json.loads(entry.read_text())["findings"][0]["code"] == "C003"
     assert not list(entry.parent.glob("*.tmp"))  # written atomically: no temporary left
+
+
+def test_entries_of_other_code_versions_are_removed(tree: Path) -> None:
+    old = tree / ".glint_cache" / "v1-0123456789abcdef"
+    old.mkdir(parents=True)
+    (old / "entry.json").write_text('{"findings": []}')
+    keep = tree / ".glint_cache" / "not-a-version"
+    keep.mkdir()
+    glint("lint", "a.glsl", "--no-glslang", cwd=tree)
+    assert not old.exists() and keep.exists() and len(_entries(tree)) == 1
