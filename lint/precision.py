@@ -23,6 +23,7 @@ import tomllib
 from collections import Counter
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -148,6 +149,7 @@ def measure(labels: list[Label], findings: list[dict[str, Any]]) -> dict[str, Ru
     return stats
 
 
+@cache
 def load_measured() -> dict[str, Any]:
     """The last stored measurement ({} before the first)."""
     if not MEASURED.is_file():

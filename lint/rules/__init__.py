@@ -19,6 +19,7 @@ import importlib
 import pkgutil
 import re
 from collections.abc import Iterator
+from functools import cache
 from typing import ClassVar, Literal
 
 from ..context import LintContext
@@ -78,10 +79,17 @@ def register(cls: type[Rule]) -> type[Rule]:
     return cls
 
 
-def all_rules() -> dict[str, type[Rule]]:
-    """Every registered rule by code, sorted; imports the rule modules on first use."""
+@cache
+def _import_rule_modules() -> None:
+    # Once per process: the runner asks for the rules on every file, and walking the
+    # packages on the file system each time cost as much as a small rule.
     for module in pkgutil.walk_packages(__path__, prefix=f"{__name__}."):
         importlib.import_module(module.name)
+
+
+def all_rules() -> dict[str, type[Rule]]:
+    """Every registered rule by code, sorted; imports the rule modules on first use."""
+    _import_rule_modules()
     return dict(sorted(REGISTRY.items()))
 
 
