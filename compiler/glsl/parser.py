@@ -8,6 +8,7 @@ syntax errors at the original file:line.
 from __future__ import annotations
 
 import functools
+import operator
 from collections import deque
 from collections.abc import Iterator
 from pathlib import Path
@@ -146,8 +147,20 @@ class _Retyper:
         return self.buffer[index] if self._fill(index + 1) else None
 
     def run(self) -> Iterator[Token]:
-        while self._fill(1):
-            tok = self.buffer.popleft()
+        buffer, stream = self.buffer, self.stream
+        while True:  # _fill(1) inlined: this loop runs once per token of every file
+            if buffer:
+                tok = buffer.popleft()
+            elif self.error is not None:
+                break
+            else:
+                try:
+                    tok = next(stream)
+                except StopIteration:
+                    break
+                except UnexpectedInput as exc:
+                    self.error = exc
+                    break
             if tok.type == "IDENTIFIER":
                 self._identifier(tok)
             else:
@@ -296,9 +309,70 @@ def _is_plain_identifier(tok: Token | None) -> bool:
     )
 
 
+# Binding strength of the binary operators (GLSL ES 3.00 §5.1), loosest first; all of them
+# associate to the left.
+_PRECEDENCE = {
+    "OR_OP": 1, "XOR_OP": 2, "AND_OP": 3, "BIT_OR": 4, "BIT_XOR": 5, "BIT_AND": 6,
+    "EQ_OP": 7, "NE_OP": 7, "LT_OP": 8, "GT_OP": 8, "LE_OP": 8, "GE_OP": 8,
+    "LEFT_OP": 9, "RIGHT_OP": 9, "PLUS": 10, "MINUS": 10, "STAR": 11, "SLASH": 11, "PERCENT": 11,
+}  # fmt: skip
+
+
+class _Shape:
+    """Callbacks the parser runs as it reduces, in place of building a plain tree node (lark
+    calls the method named like the rule; other rules build a `Tree`)."""
+
+    def binary_chain(self, items: list[Tree | Token]) -> Tree:
+        """`a op b op c ...` nested by precedence (shunting-yard) into `binary` nodes, the
+        tree a grammar with one rule per precedence level gives, positions included."""
+        operands: list[Tree | Token] = [items[0]]
+        operators: list[Token] = []
+        for index in range(1, len(items), 2):
+            op = items[index]
+            strength = _PRECEDENCE[op.type]  # type: ignore[union-attr]
+            while operators and _PRECEDENCE[operators[-1].type] >= strength:
+                _nest(operands, operators)
+            operators.append(op)  # type: ignore[arg-type]
+            operands.append(items[index + 1])
+        while operators:
+            _nest(operands, operators)
+        return operands[0]  # type: ignore[return-value]
+
+
+def _nest(operands: list[Tree | Token], operators: list[Token]) -> None:
+    """Replace the last two operands by their `binary` node, with the positions lark's
+    propagate_positions gives a node: from its first child's container (a parenthesised
+    operand starts at its `(`) to its last child's."""
+    right, left = operands.pop(), operands.pop()
+    node = Tree("binary", [left, operators.pop(), right])
+    meta, first, last = node.meta, _position(left), _position(right)
+    meta.line = meta.container_line = getattr(first, "container_line", first.line)
+    meta.column = meta.container_column = getattr(first, "container_column", first.column)
+    meta.start_pos = meta.container_start_pos = getattr(
+        first, "container_start_pos", first.start_pos
+    )
+    meta.end_line = meta.container_end_line = getattr(last, "container_end_line", last.end_line)
+    meta.end_column = meta.container_end_column = getattr(
+        last, "container_end_column", last.end_column
+    )
+    meta.end_pos = meta.container_end_pos = getattr(last, "container_end_pos", last.end_pos)
+    meta.empty = False
+    operands.append(node)
+
+
+def _position(node: Tree | Token) -> object:
+    return node.meta if isinstance(node, Tree) else node
+
+
 @functools.cache
 def glsl_parser() -> Lark:
     """The LALR parser, built once per process (building it takes a while)."""
+    parser = _lark()
+    _pass_unit_rules_through(parser)
+    return parser
+
+
+def _lark() -> Lark:
     return Lark(
         _GRAMMAR.read_text(encoding="utf-8"),
         parser="lalr",
@@ -306,7 +380,31 @@ def glsl_parser() -> Lark:
         postlex=_TypeNamePostLex(),
         propagate_positions=True,
         maybe_placeholders=False,
+        transformer=_Shape(),
     )
+
+
+def _pass_unit_rules_through(parser: Lark) -> None:
+    """Make the reductions of unit rules (`?statement: simple_statement`, `?type_name:
+    BUILTIN_TYPE`) hand their one child on untouched.
+
+    lark already returns that child, but only after its tree-building wrappers have looked
+    at it: a third of the parse went there. The child keeps the positions it has, so the
+    tree is the same (tests/glsl/test_parser_shortcuts.py compares). lark has no option for
+    this; its LALR parser's table of callbacks is replaced where it is found, and where lark
+    keeps it elsewhere the parser stays as it is, only slower."""
+    callbacks = getattr(getattr(getattr(parser, "parser", None), "parser", None), "parser", None)
+    table = getattr(callbacks, "callbacks", None)
+    if not isinstance(table, dict):
+        return
+    for rule in table:
+        options = getattr(rule, "options", None)
+        if rule.alias or options is None or not options.expand1 or len(rule.expansion) != 1:
+            continue
+        symbol = rule.expansion[0]
+        if symbol.name.startswith("_") or getattr(symbol, "filter_out", False):
+            continue  # inlined into its parent, or a token lark drops: not one child
+        table[rule] = operator.itemgetter(0)
 
 
 def parse(text: str, filename: str = "<input>") -> Tree:

@@ -480,8 +480,13 @@ class Model:
                 elif is_tree(node, "variable_declaration"):
                     self._declaration(node, self._globals, is_global=True)  # type: ignore[arg-type]
             self._global_env = self._globals.flat()
-            if self._collecting:
-                self._params = self._new_params
+            if not self._collecting:
+                break
+            # A round that found the arguments it was given (round 0 was given none) is a
+            # fixpoint: the next would see the same and find the same, so this one is final.
+            if self._new_params == (self._params if self._reading else {}):
+                break
+            self._params = self._new_params
         self._memo.clear()
 
     def _collect_structs(self) -> None:
