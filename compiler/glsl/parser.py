@@ -381,7 +381,14 @@ def _lark() -> Lark:
         propagate_positions=True,
         maybe_placeholders=False,
         transformer=_Shape(),
+        tree_class=_tree,
     )
+
+
+def _tree(data: str, children: list[Tree | Token], meta: object = None) -> Tree:
+    """A tree node named by a plain string: lark names nodes with a Token, whose `==` runs in
+    Python, and the analyses compare `node.data` millions of times."""
+    return Tree(str(data), children, meta)  # type: ignore[arg-type]
 
 
 def _pass_unit_rules_through(parser: Lark) -> None:
