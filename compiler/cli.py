@@ -16,8 +16,8 @@ from contextlib import contextmanager
 from importlib.metadata import entry_points
 from pathlib import Path
 
-from .errors import GlintError, UsageError
-from .shadertoy import TARGETS
+from glint.compiler.errors import GlintError, UsageError
+from glint.compiler.target.shadertoy import TARGETS
 
 PROG = "glint"
 
@@ -198,13 +198,13 @@ def _overrides(pairs: list[str]) -> dict[str, str]:
 
 
 def _version() -> str:
-    from .compose import glint_version
+    from glint.compiler.compose.pipeline import glint_version
 
     return glint_version()
 
 
 def _read_text(path: str) -> str:
-    from .errors import InputError
+    from glint.compiler.errors import InputError
 
     try:
         return Path(path).read_text(encoding="utf-8")
@@ -219,10 +219,10 @@ def _read_text(path: str) -> str:
 
 
 def cmd_compose(args: argparse.Namespace) -> int:
-    from .compose import compose_scene
-    from .explain import explain
-    from .outputs import write_atomic
-    from .scene import load_scene
+    from glint.compiler.compose.explain import explain
+    from glint.compiler.compose.pipeline import compose_scene
+    from glint.compiler.compose.scene import load_scene
+    from glint.compiler.outputs import write_atomic
 
     scene = load_scene(args.scene)
     shader = compose_scene(scene, args.target, args.tier, _overrides(args.variant), args.budget)
@@ -242,8 +242,8 @@ def cmd_compose(args: argparse.Namespace) -> int:
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from .bench.report import tier_table, write_measurements, write_report
-    from .bench.run import BenchOptions, run_bench
+    from glint.compiler.bench.report import tier_table, write_measurements, write_report
+    from glint.compiler.bench.run import BenchOptions, run_bench
 
     if args.update and (args.slots or args.no_variants):
         raise UsageError("--update writes every variant's measurements: drop --slots/--no-variants")
@@ -293,7 +293,7 @@ def _progress_bar(label: str, total: int) -> Iterator[Callable[[str], None]]:
 
 
 def cmd_validate(args: argparse.Namespace) -> int:
-    from .glslang import validate
+    from glint.compiler.target.glslang import validate
 
     source = _read_text(args.file)
     diagnostics = validate(source, args.file, args.target)
@@ -308,8 +308,8 @@ def cmd_validate(args: argparse.Namespace) -> int:
 
 
 def cmd_render(args: argparse.Namespace) -> int:
-    from .compose import compose
-    from .render import image_stats, render_full, save_png
+    from glint.compiler.compose.pipeline import compose
+    from glint.compiler.render import image_stats, render_full, save_png
 
     if args.input.endswith(".toml"):
         overrides = _overrides(args.variant)
@@ -349,7 +349,7 @@ def _num(value: float | None) -> str:
 
 
 def cmd_catalog(args: argparse.Namespace) -> int:
-    from .catalog_info import catalog_entries
+    from glint.compiler.catalog.info import catalog_entries
 
     entries = catalog_entries()
     if args.json:
@@ -370,7 +370,7 @@ def cmd_catalog(args: argparse.Namespace) -> int:
 
 
 def cmd_catalog_show(args: argparse.Namespace) -> int:
-    from .catalog_show import show_source
+    from glint.compiler.catalog.show import show_source
 
     sys.stdout.write(show_source(args.id))
     return 0

@@ -6,7 +6,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from .errors import EnvironmentProblem
+from glint.compiler.errors import EnvironmentProblem
 
 
 def write_atomic(path: str | Path, data: bytes) -> None:

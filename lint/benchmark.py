@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TextIO
 
-from glint.compiler.glslang import wrap_for_target
+from glint.compiler.target.glslang import wrap_for_target
 
 from .parallel import available_cores
 

@@ -14,7 +14,7 @@ import tempfile
 from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
-from glint.compiler.shadertoy import TARGETS
+from glint.compiler.target.shadertoy import TARGETS
 
 from .cache import LintCache, cache_directory
 from .config import find_pyproject, load_options

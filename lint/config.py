@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from glint.compiler.errors import UsageError
-from glint.compiler.shadertoy import TARGETS
+from glint.compiler.target.shadertoy import TARGETS
 
 from .options import Options
 

@@ -12,7 +12,7 @@ from lark import Token, Tree
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import ModuleSymbols, Preprocessed
-from glint.compiler.glslang import Diagnostic, validate
+from glint.compiler.target.glslang import Diagnostic, validate
 
 from .finding import Edit, Finding, Fix, Severity
 

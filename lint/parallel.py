@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from concurrent.futures import ProcessPoolExecutor
 
 from glint.compiler.errors import GlintError
-from glint.compiler.glslang import Diagnostic, validate_many
+from glint.compiler.target.glslang import Diagnostic, validate_many
 
 from .context import precomputed_glslang
 from .options import Options

@@ -13,8 +13,8 @@ from glint.compiler.bench import report
 from glint.compiler.bench.report import BenchResult, static_part
 from glint.compiler.bench.scenes import TierMeasure
 from glint.compiler.bench.variants import VariantMeasure
+from glint.compiler.catalog.measurements import load_measurements
 from glint.compiler.cli import main
-from glint.compiler.measurements import load_measurements
 
 pytestmark = pytest.mark.render
 

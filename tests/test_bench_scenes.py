@@ -22,10 +22,10 @@ from glint.compiler.bench.scenes import (
     truth_environment_glsl,
     truth_shadow_glsl,
 )
-from glint.compiler.glslang import validate
-from glint.compiler.references.environment import dfg_split_sum
-from glint.compiler.references.occlusion import shadow_disc_light
 from glint.compiler.render import render
+from glint.compiler.target.glslang import validate
+from glint.compiler.verify.references.environment import dfg_split_sum
+from glint.compiler.verify.references.occlusion import shadow_disc_light
 
 SMALL = {"size": (96, 54), "repeats": 2, "times": (1.0,), "passes": 1}
 # Balanced composed with the template's own models: it must give the template's picture.

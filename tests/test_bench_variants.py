@@ -22,9 +22,9 @@ from glint.compiler.bench.variants import (
     measurable_ids,
     measure_variants,
 )
-from glint.compiler.catalog import load_catalog
+from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.errors import InputError
-from glint.compiler.probes import run_empty_probe, run_probe, run_probe_timed
+from glint.compiler.verify.probes import run_empty_probe, run_probe, run_probe_timed
 
 CATALOG = load_catalog()
 MEASURED = ["F.schlick", "F.dielectric", "D.ggx", "shadow.hard", "shadow.soft", "tonemap.none"]

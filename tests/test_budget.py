@@ -7,15 +7,15 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler import explain as explain_module
-from glint.compiler import planner as planner_module
-from glint.compiler.budget import calls_per_pixel, front, within_budget
-from glint.compiler.catalog import load_catalog
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.catalog.measurements import VariantCost, load_measurements
 from glint.compiler.cli import main
+from glint.compiler.compose import explain as explain_module
+from glint.compiler.compose import planner as planner_module
+from glint.compiler.compose.budget import calls_per_pixel, front, within_budget
+from glint.compiler.compose.planner import plan
+from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import InputError
-from glint.compiler.measurements import VariantCost, load_measurements
-from glint.compiler.planner import plan
-from glint.compiler.scene import load_scene
 
 CATALOG = load_catalog()
 

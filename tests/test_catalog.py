@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import pytest
 
-from glint.compiler.catalog import Catalog, load_catalog, parse_snippet, snippets_root
-from glint.compiler.catalog_check import check_front_matter, compile_alone, snippet_symbols
-from glint.compiler.catalog_info import catalog_entries
+from glint.compiler.catalog.check import check_front_matter, compile_alone, snippet_symbols
+from glint.compiler.catalog.info import catalog_entries
+from glint.compiler.catalog.loader import Catalog, load_catalog, parse_snippet, snippets_root
+from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.errors import InputError
-from glint.compiler.slots import SLOTS
 
 CATALOG = load_catalog()
 IDS = sorted(CATALOG.snippets)
@@ -243,9 +243,9 @@ def test_a_preset_of_a_preset_is_refused(tmp_path) -> None:  # type: ignore[no-u
 
 
 def test_catalog_presets_are_listed_checked_and_composed() -> None:
-    from glint.compiler.compose import compose
-    from glint.compiler.glslang import validate
-    from glint.compiler.standalone import standalone_source
+    from glint.compiler.compose.pipeline import compose
+    from glint.compiler.compose.standalone import standalone_source
+    from glint.compiler.target.glslang import validate
 
     soft_12 = CATALOG.get("shadow.soft_12")
     assert soft_12.preset_of == "shadow.soft" and soft_12.params["SHADOW_STEPS"].default == 12

@@ -11,10 +11,10 @@ import sys
 
 import pytest
 
-from glint.compiler.catalog import glsl_value, load_catalog
-from glint.compiler.catalog_show import show_source
-from glint.compiler.glslang import validate
-from glint.compiler.slots import SLOTS
+from glint.compiler.catalog.loader import glsl_value, load_catalog
+from glint.compiler.catalog.show import show_source
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.target.glslang import validate
 
 GLINT = [sys.executable, "-m", "glint.compiler.cli"]
 CATALOG = load_catalog()

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.compose import compose
+from glint.compiler.compose.pipeline import compose
 
 GLINT = [sys.executable, "-m", "glint.compiler.cli"]
 

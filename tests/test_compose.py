@@ -7,10 +7,10 @@ import re
 import numpy as np
 import pytest
 
-from glint.compiler.compose import compose, compose_scene, glint_version
+from glint.compiler.compose.pipeline import compose, compose_scene, glint_version
+from glint.compiler.compose.scene import parse_scene
 from glint.compiler.errors import InputError
-from glint.compiler.glslang import validate
-from glint.compiler.scene import parse_scene
+from glint.compiler.target.glslang import validate
 
 SCENES = "tests/scenes"
 

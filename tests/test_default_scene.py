@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from glint.compiler.bench.scenes import TEMPLATE_MODELS, template_source
-from glint.compiler.compose import compose
+from glint.compiler.compose.pipeline import compose
 from glint.compiler.render import flip_error, image_stats, render
 
 pytestmark = pytest.mark.render

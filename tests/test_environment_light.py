@@ -7,22 +7,22 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from glint.compiler.catalog import glsl_value, load_catalog
-from glint.compiler.evaluator import evaluate_snippet
-from glint.compiler.probes import run_probe
-from glint.compiler.references import environment
-from glint.compiler.references.environment import (
-    dfg_split_sum,
-    gradient_environment,
-    irradiance_over_pi,
-)
-from glint.compiler.spherical_harmonics import (
+from glint.compiler.catalog.loader import glsl_value, load_catalog
+from glint.compiler.compose.spherical_harmonics import (
     PARAM_NAMES,
     project_sh9,
     sh9_basis,
     sh9_irradiance,
     snippet_environment,
 )
+from glint.compiler.verify.probes import run_probe
+from glint.compiler.verify.references import environment
+from glint.compiler.verify.references.environment import (
+    dfg_split_sum,
+    gradient_environment,
+    irradiance_over_pi,
+)
+from glint.compiler.verify.snippets import evaluate_snippet
 
 CATALOG = load_catalog()
 RNG = np.random.default_rng(3)

@@ -7,10 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.compose import compose
-from glint.compiler.glslang import validate
+from glint.compiler.compose.pipeline import compose
+from glint.compiler.compose.scene import default_scene_path
 from glint.compiler.render import image_stats, render
-from glint.compiler.scene import default_scene_path
+from glint.compiler.target.glslang import validate
 
 SCENES = sorted(default_scene_path().parent.glob("*.toml"))
 
@@ -59,8 +59,8 @@ SCENE_OF_SLOT = {
 
 
 def _swappable() -> list[str]:
-    from glint.compiler.catalog import load_catalog
-    from glint.compiler.slots import SLOTS
+    from glint.compiler.catalog.loader import load_catalog
+    from glint.compiler.catalog.slots import SLOTS
 
     return sorted(
         s.id

@@ -7,15 +7,15 @@ import subprocess
 
 import pytest
 
-from glint.compiler import glslang
 from glint.compiler.errors import EnvironmentProblem, UsageError
-from glint.compiler.glslang import (
+from glint.compiler.target import glslang
+from glint.compiler.target.glslang import (
     find_validator,
     spirv_instruction_count,
     validate,
     validate_many,
 )
-from glint.compiler.sourcemap import Origin, build_line_map
+from glint.compiler.target.sourcemap import Origin, build_line_map
 
 needs_glslang = pytest.mark.skipif(
     shutil.which("glslangValidator") is None, reason="glslangValidator is not installed"

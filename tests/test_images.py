@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from glint.compiler.errors import EnvironmentProblem, InputError
-from glint.compiler.images import flip_error, image_stats, load_png, save_png
+from glint.compiler.render.images import flip_error, image_stats, load_png, save_png
 
 
 def gradient(width: int = 48, height: int = 32) -> np.ndarray:

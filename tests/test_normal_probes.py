@@ -22,10 +22,10 @@ from glint.compiler.bench.flat_normal import (
     render_flat,
 )
 from glint.compiler.bench.normals import normal_set, point_inputs, tap_reach
-from glint.compiler.catalog import load_catalog
-from glint.compiler.glslang import validate
-from glint.compiler.probes import run_probe
-from glint.compiler.references.normals import SCENES, angle_deg, box_edge_points
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.target.glslang import validate
+from glint.compiler.verify.probes import run_probe
+from glint.compiler.verify.references.normals import SCENES, angle_deg, box_edge_points
 
 pytestmark = pytest.mark.render
 

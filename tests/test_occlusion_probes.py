@@ -1,6 +1,6 @@
 """AO and shadow variants, run on the GPU over reference SDF scenes, against many-ray float64
-ground truth (compiler/references/occlusion.py): within the error budget of their front matter,
-more steps never worse, and finite and within [0, 1] where inputs are at their extremes."""
+ground truth (compiler/verify/references/occlusion.py): within the error budget of their front
+matter, more steps never worse, and finite and within [0, 1] where inputs are at their extremes."""
 
 from __future__ import annotations
 
@@ -9,7 +9,6 @@ from functools import cache
 import numpy as np
 import pytest
 
-from glint.compiler import shadertoy
 from glint.compiler.bench.errors import set_errors
 from glint.compiler.bench.occlusion import (
     TMAX,
@@ -19,12 +18,13 @@ from glint.compiler.bench.occlusion import (
     shadow_inputs,
     shadow_sets,
 )
-from glint.compiler.catalog import Snippet, load_catalog
-from glint.compiler.probes import PROBE_PRELUDE, run_probe
-from glint.compiler.references.occlusion_cases import shadow_cases
-from glint.compiler.references.scenes import SCENES
-from glint.compiler.references.scenes import scene as reference_scene
+from glint.compiler.catalog.loader import Snippet, load_catalog
 from glint.compiler.render import render
+from glint.compiler.target import shadertoy
+from glint.compiler.verify.probes import PROBE_PRELUDE, run_probe
+from glint.compiler.verify.references.occlusion_cases import shadow_cases
+from glint.compiler.verify.references.scenes import SCENES
+from glint.compiler.verify.references.scenes import scene as reference_scene
 
 pytestmark = pytest.mark.render
 

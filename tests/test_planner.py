@@ -11,13 +11,13 @@ from typing import Any
 
 import pytest
 
-from glint.compiler.catalog import load_catalog
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.cli import main
-from glint.compiler.compose import compose_scene
-from glint.compiler.explain import explain
-from glint.compiler.planner import TIERS, plan
-from glint.compiler.scene import Scene, load_scene
-from glint.compiler.slots import SLOTS
+from glint.compiler.compose.explain import explain
+from glint.compiler.compose.pipeline import compose_scene
+from glint.compiler.compose.planner import TIERS, plan
+from glint.compiler.compose.scene import Scene, load_scene
 
 CATALOG = load_catalog()
 EXAMPLES = sorted(Path("snippets/scenes").glob("*.toml"))

@@ -16,8 +16,8 @@ from glint.compiler.bench.samples import (
     lobe_inputs,
     scalar_names,
 )
-from glint.compiler.catalog import Snippet, load_catalog
-from glint.compiler.probes import run_probe
+from glint.compiler.catalog.loader import Snippet, load_catalog
+from glint.compiler.verify.probes import run_probe
 
 pytestmark = pytest.mark.render
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from glint.compiler.catalog import load_catalog
+from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.errors import InputError
-from glint.compiler.probes import entry_function, probe_inputs, probe_shader, run_probe
+from glint.compiler.verify.probes import entry_function, probe_inputs, probe_shader, run_probe
 
 pytestmark = pytest.mark.render
 

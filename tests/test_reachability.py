@@ -10,16 +10,16 @@ from pathlib import Path
 import pytest
 from lark import Token, Tree
 
-from glint.compiler.catalog import load_catalog
-from glint.compiler.compose import compose, compose_scene
-from glint.compiler.emitter import emit
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.compose.emitter import emit
+from glint.compiler.compose.pipeline import compose, compose_scene
+from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.reachability import prune_unreachable
+from glint.compiler.compose.scene import default_scene_path, parse_scene
+from glint.compiler.compose.units import GENERATED, Unit, generated
 from glint.compiler.glsl import parse_source
-from glint.compiler.glslang import validate
-from glint.compiler.planner import Plan
-from glint.compiler.reachability import prune_unreachable
-from glint.compiler.scene import default_scene_path, parse_scene
-from glint.compiler.sourcemap import build_line_map
-from glint.compiler.units import GENERATED, Unit, generated
+from glint.compiler.target.glslang import validate
+from glint.compiler.target.sourcemap import build_line_map
 
 ROOT = Path(__file__).parent.parent
 SCENES = sorted(default_scene_path().parent.glob("*.toml"))

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.compose import compose
-from glint.compiler.images import flip_error, load_png
+from glint.compiler.compose.pipeline import compose
 from glint.compiler.render import render
+from glint.compiler.render.images import flip_error, load_png
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
-from glint.compiler.catalog import Catalog, load_catalog, parse_snippet
+from glint.compiler.catalog.loader import Catalog, load_catalog, parse_snippet
+from glint.compiler.compose.resolver import resolve
+from glint.compiler.compose.units import generated
 from glint.compiler.errors import InputError
-from glint.compiler.resolver import resolve
-from glint.compiler.units import generated
 
 
 def snippet(slot: str, variant: str, provides: list[str], requires: list[str], body: str = ""):
@@ -120,7 +120,7 @@ def test_slot_requirement_without_a_choice() -> None:
 
 def test_real_catalog_resolves_every_requirement_of_every_snippet() -> None:
     """Each snippet's requirements resolve with the balanced choices (no dangling names)."""
-    from glint.compiler.planner import tier_table
+    from glint.compiler.compose.planner import tier_table
 
     catalog = load_catalog()
     choices = {slot: f"{slot}.{v}" for slot, v in tier_table()["balanced"].items()}

@@ -9,10 +9,10 @@ import pytest
 
 from glint.compiler.bench import subsurface
 from glint.compiler.bench.errors import set_errors
-from glint.compiler.catalog import load_catalog
-from glint.compiler.probes import run_probe
-from glint.compiler.references import scattering
-from glint.compiler.references.scattering import phase_henyey_greenstein
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.verify.probes import run_probe
+from glint.compiler.verify.references import scattering
+from glint.compiler.verify.references.scattering import phase_henyey_greenstein
 
 CATALOG = load_catalog()
 PHASES = sorted(s.id for s in CATALOG.in_slot("phase"))

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from glint.compiler.bench.samples import camera_rays
-from glint.compiler.catalog import load_catalog
-from glint.compiler.probes import run_probe
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.verify.probes import run_probe
 
 pytestmark = pytest.mark.render
 

@@ -6,8 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..references.normals import angle_deg
-from .samples import SIGNIFICANT, ProbeSet
+from glint.compiler.bench.samples import SIGNIFICANT, ProbeSet
+from glint.compiler.verify.references.normals import angle_deg
 
 
 @dataclass(frozen=True)

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..catalog import Catalog
-from ..references.normals import BOX_HALF, angle_deg
-from ..render import render
-from ..standalone import standalone_source
+from glint.compiler.catalog.loader import Catalog
+from glint.compiler.compose.standalone import standalone_source
+from glint.compiler.render import render
+from glint.compiler.verify.references.normals import BOX_HALF, angle_deg
 
 FLAT_ID = "normal.derivative_flat"
 WIDTH, HEIGHT = 160, 120

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..catalog import Snippet
-from ..references.normals import SCENES, box_edge_points, box_surface
-from .samples import ProbeSet
+from glint.compiler.bench.samples import ProbeSet
+from glint.compiler.catalog.loader import Snippet
+from glint.compiler.verify.references.normals import SCENES, box_edge_points, box_surface
 
 SAMPLES = 400  # points per scene
 SEED = 17

@@ -11,10 +11,10 @@ from functools import cache
 
 import numpy as np
 
-from ..references import reference
-from ..references.occlusion_cases import ao_cases, shadow_cases
-from ..references.scenes import scene as reference_scene
-from .samples import ProbeSet
+from glint.compiler.bench.samples import ProbeSet
+from glint.compiler.verify.references import reference
+from glint.compiler.verify.references.occlusion_cases import ao_cases, shadow_cases
+from glint.compiler.verify.references.scenes import scene as reference_scene
 
 # The default scene's shadow ray starts 0.02 off the surface; every occluder of the reference
 # scenes is within 20, so no variant is cut short by tmax, only by its own step count.

@@ -19,14 +19,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..catalog import Catalog, Snippet
-from ..probes import entry_function, probe_inputs
-from ..references.normals import SCENES as NORMAL_SCENES
-from .flat_normal import flat_normal_errors, render_flat
-from .normals import normal_set
-from .occlusion import ao_sets, shadow_sets
-from .samples import ProbeSet, camera_rays, domain_set, free_inputs
-from .subsurface import subsurface_sets
+from glint.compiler.bench.flat_normal import flat_normal_errors, render_flat
+from glint.compiler.bench.normals import normal_set
+from glint.compiler.bench.occlusion import ao_sets, shadow_sets
+from glint.compiler.bench.samples import ProbeSet, camera_rays, domain_set, free_inputs
+from glint.compiler.bench.subsurface import subsurface_sets
+from glint.compiler.catalog.loader import Catalog, Snippet
+from glint.compiler.verify.probes import entry_function, probe_inputs
+from glint.compiler.verify.references.normals import SCENES as NORMAL_SCENES
 
 # The disc light every shadow variant is measured against: angular radius atan(1/8) ≈ 7.1°,
 # the light that the soft variants' default SHADOW_K = 8 stands for.

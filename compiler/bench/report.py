@@ -9,10 +9,10 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..measurements import measurements_path
-from ..outputs import write_atomic
-from .scenes import Goal, TierMeasure
-from .variants import VariantMeasure
+from glint.compiler.bench.scenes import Goal, TierMeasure
+from glint.compiler.bench.variants import VariantMeasure
+from glint.compiler.catalog.measurements import measurements_path
+from glint.compiler.outputs import write_atomic
 
 
 @dataclass

@@ -9,11 +9,8 @@ from collections.abc import Callable, Sequence
 from contextlib import AbstractContextManager
 from dataclasses import dataclass
 
-from ..catalog import load_catalog
-from ..errors import UsageError
-from ..slots import SLOTS
-from .report import BenchResult
-from .scenes import (
+from glint.compiler.bench.report import BenchResult
+from glint.compiler.bench.scenes import (
     DEFAULT_SIZE,
     TEMPLATE_SCENE,
     TIERS,
@@ -21,7 +18,10 @@ from .scenes import (
     measure_scenes,
     template_goals,
 )
-from .variants import is_cpu_renderer, measurable_ids, measure_variants
+from glint.compiler.bench.variants import is_cpu_renderer, measurable_ids, measure_variants
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.errors import UsageError
 
 # A progress bar: given a label and a total, a context manager whose value is called once per
 # finished item (the CLI passes tqdm; tests pass nothing).
@@ -72,7 +72,7 @@ def run_bench(options: BenchOptions, progress: ProgressFactory | None = None) ->
 
 
 def machine_info(renderer: str) -> dict[str, object]:
-    from ..compose import glint_version
+    from glint.compiler.compose.pipeline import glint_version
 
     return {
         "renderer": renderer,

@@ -14,11 +14,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..catalog import Snippet
-from ..probes import entry_function, probe_inputs
-from ..references import reference
-from ..references.geometry import dots
-from ..standalone import SCENE_STUB
+from glint.compiler.catalog.loader import Snippet
+from glint.compiler.compose.standalone import SCENE_STUB
+from glint.compiler.verify.probes import entry_function, probe_inputs
+from glint.compiler.verify.references import reference
+from glint.compiler.verify.references.geometry import dots
 
 # The lobes take a Surface and Dots; their domains are the geometry (NoL signed, NoV, phi) and
 # the roughness, from which the probe's Dots are derived as `lightDots` derives them.

@@ -45,14 +45,13 @@ from pathlib import Path
 
 import numpy as np
 
-from glint.compiler.compose import compose_scene
+from glint.compiler.bench.variants import is_cpu_renderer
+from glint.compiler.compose.pipeline import compose_scene
+from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import EnvironmentProblem, InputError
-from glint.compiler.glslang import spirv_instruction_count
-from glint.compiler.images import flip_error
 from glint.compiler.render import render_full
-from glint.compiler.scene import load_scene
-
-from .variants import is_cpu_renderer
+from glint.compiler.render.images import flip_error
+from glint.compiler.target.glslang import spirv_instruction_count
 
 TEMPLATE = "template.glsl"
 TIERS = ("fast", "balanced", "reference")
@@ -147,9 +146,10 @@ float penumbra(vec3 origin, vec3 dir, float near, float far) {
 
 TRUTH_ENVIRONMENT = """\
 // Ground truth: the key light's specular BRDF (GGX, height-correlated Smith, Schlick) integrated
-// over the gradient sky by the rule of compiler/references/environment.py: half vectors through
-// GGX's inverse CDF, only over the u and the azimuth arc that reflect v above the horizon, both
-// by Gauss-Legendre (kNodes, kWeights on [0, 1]); a half vector weighs F V 4 (n.l)(v.h) / (n.h).
+// over the gradient sky by the rule of compiler/verify/references/environment.py: half vectors
+// through GGX's inverse CDF, only over the u and the azimuth arc that reflect v above the
+// horizon, both by Gauss-Legendre (kNodes, kWeights on [0, 1]); a half vector weighs
+// F V 4 (n.l)(v.h) / (n.h).
 GAUSS_LEGENDRE
 vec3 specularEnvironment(vec3 n, vec3 v, vec3 r0, float alpha) {
     float alpha2 = alpha * alpha;

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..references.scattering import subsurface_sphere
-from .samples import ProbeSet
+from glint.compiler.bench.samples import ProbeSet
+from glint.compiler.verify.references.scattering import subsurface_sphere
 
 # From thin parts (a twentieth of a unit) to a body much thicker than the probe reaches.
 RADII = [0.05, 0.1, 0.2, 0.5, 1.0, 3.0]

@@ -17,10 +17,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..catalog import Catalog, Snippet, load_catalog
-from ..errors import InputError
-from ..glslang import spirv_instruction_count
-from ..probes import (
+from glint.compiler.bench.errors import set_errors, summarize
+from glint.compiler.bench.plans import Plan, plan_for
+from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.errors import InputError
+from glint.compiler.target.glslang import spirv_instruction_count
+from glint.compiler.verify.probes import (
     entry_function,
     probe_channels,
     probe_inputs,
@@ -28,9 +31,6 @@ from ..probes import (
     run_empty_probe,
     run_probe_timed,
 )
-from ..slots import SLOTS
-from .errors import set_errors, summarize
-from .plans import Plan, plan_for
 
 CPU_RENDERERS = ("llvmpipe", "softpipe", "swrast", "lavapipe")
 EMPTY_PASSES = 3

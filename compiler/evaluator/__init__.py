@@ -6,12 +6,10 @@ It runs a snippet's own code (parsed by the project's front end) lane-wise, so f
 
 from __future__ import annotations
 
-from .api import FLOAT_DTYPES, evaluate
-from .errors import EvaluationError, UnsupportedError
-from .interpreter import MAX_ITERATIONS, Interpreter
-from .precision import precision_report, survey
-from .snippets import evaluate_snippet, snippet_source
-from .values import StructValue, Value
+from glint.compiler.evaluator.api import FLOAT_DTYPES, evaluate
+from glint.compiler.evaluator.errors import EvaluationError, UnsupportedError
+from glint.compiler.evaluator.interpreter import MAX_ITERATIONS, Interpreter
+from glint.compiler.evaluator.values import StructValue, Value
 
 __all__ = [
     "FLOAT_DTYPES",
@@ -22,8 +20,4 @@ __all__ = [
     "UnsupportedError",
     "Value",
     "evaluate",
-    "evaluate_snippet",
-    "precision_report",
-    "snippet_source",
-    "survey",
 ]

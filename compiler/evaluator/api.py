@@ -7,8 +7,8 @@ from typing import Any
 
 import numpy as np
 
-from .interpreter import Interpreter
-from .values import AnyValue, lanes, to_numpy
+from glint.compiler.evaluator.interpreter import Interpreter
+from glint.compiler.evaluator.values import AnyValue, lanes, to_numpy
 
 FLOAT_DTYPES = (np.float16, np.float32, np.float64)
 

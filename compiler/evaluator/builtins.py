@@ -11,8 +11,8 @@ from typing import Any
 
 import numpy as np
 
-from .ops import TypeMismatch, align, dot_arrays
-from .values import Value, base_of, vec_size, vector_type
+from glint.compiler.evaluator.ops import TypeMismatch, align, dot_arrays
+from glint.compiler.evaluator.values import Value, base_of, vec_size, vector_type
 
 Builtin = Callable[[list[Value], Any], Value]
 

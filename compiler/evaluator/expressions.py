@@ -12,10 +12,9 @@ from typing import Any
 import numpy as np
 from lark import Token, Tree
 
-from ..glsl.preprocessor import Preprocessed
-from .errors import EvaluationError, UnsupportedError
-from .ops import TypeMismatch, arithmetic, compare, convert, equal, negate
-from .values import (
+from glint.compiler.evaluator.errors import EvaluationError, UnsupportedError
+from glint.compiler.evaluator.ops import TypeMismatch, arithmetic, compare, convert, equal, negate
+from glint.compiler.evaluator.values import (
     AnyValue,
     StructValue,
     Value,
@@ -33,6 +32,7 @@ from .values import (
     vec_size,
     vector_type,
 )
+from glint.compiler.glsl.preprocessor import Preprocessed
 
 Step = tuple[str, Any]  # ("field", name) or ("index", Value)
 _ARITH = {"+", "-", "*", "/", "%"}

@@ -15,11 +15,10 @@ from typing import Any
 import numpy as np
 from lark import Token, Tree
 
-from ..glsl.parser import parse_source
-from ..slots import SCENE_SYMBOLS
-from .builtins import UNSUPPORTED, call_builtin
-from .expressions import ExpressionEvaluator, Frame, Loop
-from .values import (
+from glint.compiler.catalog.slots import SCENE_SYMBOLS
+from glint.compiler.evaluator.builtins import UNSUPPORTED, call_builtin
+from glint.compiler.evaluator.expressions import ExpressionEvaluator, Frame, Loop
+from glint.compiler.evaluator.values import (
     AnyValue,
     StructValue,
     Value,
@@ -32,6 +31,7 @@ from .values import (
     to_numpy,
     vec_size,
 )
+from glint.compiler.glsl.parser import parse_source
 
 MAX_ITERATIONS = 10_000  # a loop still running after this many iterations is an error
 _DIRECTIONS = {"in", "out", "inout"}

@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from .values import (
+from glint.compiler.evaluator.values import (
     AnyValue,
     StructValue,
     Value,

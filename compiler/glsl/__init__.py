@@ -5,9 +5,22 @@ preprocess (with a line map) -> parse (lark LALR, positions on every node) -> sy
 
 from __future__ import annotations
 
-from .parser import GLSLSyntaxError, parse, parse_source
-from .preprocessor import Macro, Preprocessed, PreprocessorError, SourceLocation, preprocess
-from .symbols import FunctionDef, ModuleSymbols, Param, analyze, reachable, symbols_of
+from glint.compiler.glsl.parser import GLSLSyntaxError, parse, parse_source
+from glint.compiler.glsl.preprocessor import (
+    Macro,
+    Preprocessed,
+    PreprocessorError,
+    SourceLocation,
+    preprocess,
+)
+from glint.compiler.glsl.symbols import (
+    FunctionDef,
+    ModuleSymbols,
+    Param,
+    analyze,
+    reachable,
+    symbols_of,
+)
 
 __all__ = [
     "FunctionDef",

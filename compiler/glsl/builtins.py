@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from ..shadertoy import UNIFORM_NAMES
-from .keywords import BUILTIN_TYPES, QUALIFIER_GROUPS, words
+from glint.compiler.glsl.keywords import BUILTIN_TYPES, QUALIFIER_GROUPS, words
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 # Section 8 of the GLSL ES 3.00 spec, in its order: angle/trig, exponential, common,
 # floating-point packing, geometric, matrix, vector relational, texture, derivatives.

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from .pptokens import Tok, strip_ws, tokenize
+from glint.compiler.glsl.pptokens import Tok, strip_ws, tokenize
 
 
 @dataclass(frozen=True)

@@ -17,9 +17,9 @@ from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 from lark.lark import PostLex
 
-from ..errors import InputError
-from .keywords import BUILTIN_TYPES, QUALIFIER_GROUPS, RESERVED_WORDS, words
-from .preprocessor import Preprocessed, preprocess
+from glint.compiler.errors import InputError
+from glint.compiler.glsl.keywords import BUILTIN_TYPES, QUALIFIER_GROUPS, RESERVED_WORDS, words
+from glint.compiler.glsl.preprocessor import Preprocessed, preprocess
 
 _GRAMMAR = Path(__file__).with_name("glsl.lark")
 

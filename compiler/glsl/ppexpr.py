@@ -13,7 +13,7 @@ an unevaluated operand is an error but bad syntax: a division by zero there is n
 
 from __future__ import annotations
 
-from .pptokens import Tok
+from glint.compiler.glsl.pptokens import Tok
 
 
 class ExprError(Exception):

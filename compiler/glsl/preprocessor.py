@@ -11,10 +11,10 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from ..errors import InputError
-from .macros import Expander, Macro, MacroCallError, NeedMoreInput
-from .ppexpr import ExprError, evaluate
-from .pptokens import Tok, join, significant, tokenize
+from glint.compiler.errors import InputError
+from glint.compiler.glsl.macros import Expander, Macro, MacroCallError, NeedMoreInput
+from glint.compiler.glsl.ppexpr import ExprError, evaluate
+from glint.compiler.glsl.pptokens import Tok, join, significant, tokenize
 
 __all__ = ["Macro", "Preprocessed", "PreprocessorError", "SourceLocation", "preprocess"]
 

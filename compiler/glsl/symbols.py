@@ -13,10 +13,10 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
-from .builtins import BUILTIN_FUNCTIONS, is_builtin
-from .parser import parse_source
-from .pptokens import significant, tokenize
-from .preprocessor import Macro, Preprocessed
+from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS, is_builtin
+from glint.compiler.glsl.parser import parse_source
+from glint.compiler.glsl.pptokens import significant, tokenize
+from glint.compiler.glsl.preprocessor import Macro, Preprocessed
 
 
 @dataclass(frozen=True)

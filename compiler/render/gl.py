@@ -12,8 +12,8 @@ from typing import Any
 
 import numpy as np
 
-from glint.compiler import shadertoy
-from glint.compiler.glslang import wrap_for_target
+from glint.compiler.target import shadertoy
+from glint.compiler.target.glslang import wrap_for_target
 
 # Debian packages that provide headless EGL with Mesa's software rasteriser.
 EGL_PACKAGES = "libegl1 libegl-mesa0 libgl1-mesa-dri"

@@ -22,7 +22,7 @@ import numpy as np
 
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
 from glint.compiler.render import gl
-from glint.compiler.sourcemap import split_lines
+from glint.compiler.target.sourcemap import split_lines
 
 DEFAULT_TIMEOUT_S = 60.0
 DEFAULT_DATE = (2026.0, 0.0, 1.0, 0.0)  # ShaderToy's iDate: year, month from 0, day, seconds

@@ -7,7 +7,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from glint.compiler.glsl.keywords import words
-from glint.compiler.shadertoy import UNIFORMS
+from glint.compiler.target.shadertoy import UNIFORMS
 
 Type = str | None
 

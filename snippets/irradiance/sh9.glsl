@@ -13,7 +13,7 @@ sources = [
     "Sloan 2008, Stupid Spherical Harmonics Tricks (basis constants)",
 ]
 # SH_C0..SH_C8: radiance coefficients L00, L1-1 (y), L10 (z), L11 (x), L2-2 (xy), L2-1 (yz),
-# L20 (3z²−1), L21 (xz), L22 (x²−y²), from compiler/spherical_harmonics.project_sh9. The
+# L20 (3z²−1), L21 (xz), L22 (x²−y²), from compiler/compose/spherical_harmonics.project_sh9. The
 # defaults are env.gradient's default sky; tests/test_environment_light.py re-projects it.
 [params.SH_C0]
 type = "vec3"

@@ -17,7 +17,7 @@ sources = ["Inigo Quilez, normals for an SDF (tetrahedron technique)"]
 // The price of the two taps saved: the corners' third moments do not cancel (Σ kx·ky·k = 4·ẑ,
 // …), so the mixed second derivatives of map leak in and the error grows with NORMAL_EPS times
 // the curvature (first order), where central differences cancel it to second order. Measured on
-// the reference scenes of compiler/references/normals.py: 0.02° on a unit sphere, 0.16° on a
+// the reference scenes of compiler/verify/references/normals.py: 0.02° on a unit sphere, 0.16° on a
 // smooth union with a 0.1 rounding (central differences: 0.004° and 0.07°).
 vec3 calcNormal(vec3 p) {
     const vec2 k = vec2(1.0, -1.0);

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from glint.compiler.catalog import load_catalog
-from glint.compiler.evaluator.precision import default_grid, precision_report, survey
-from glint.compiler.evaluator.snippets import evaluate_snippet
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.verify.precision import default_grid, precision_report, survey
+from glint.compiler.verify.snippets import evaluate_snippet
 
 
 def ggx(noh: np.ndarray, a: float, dtype: object) -> np.ndarray:

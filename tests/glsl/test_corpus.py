@@ -14,7 +14,7 @@ import pytest
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl.parser import parse_source
-from glint.compiler.shadertoy import wrap
+from glint.compiler.target.shadertoy import wrap
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
 VALID = sorted((CORPUS / "valid").glob("*.glsl"))

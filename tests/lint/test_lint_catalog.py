@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.compose import compose
-from glint.compiler.scene import default_scene_path
+from glint.compiler.compose.pipeline import compose
+from glint.compiler.compose.scene import default_scene_path
 from glint.lint.options import Options
 from glint.lint.runner import lint_source
 

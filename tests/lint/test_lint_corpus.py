@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.glslang import validate
+from glint.compiler.target.glslang import validate
 
 ROOT = Path(__file__).resolve().parents[2]
 CORPUS = sorted((ROOT / "tests" / "corpus" / "lint").glob("*.glsl"))

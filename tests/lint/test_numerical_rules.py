@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.glslang import validate
+from glint.compiler.target.glslang import validate
 from glint.lint.finding import Finding
 from glint.lint.options import Options
 from glint.lint.rules import all_rules, rule_doc

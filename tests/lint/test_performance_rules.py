@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.glslang import validate
+from glint.compiler.target.glslang import validate
 from glint.lint.options import Options
 from glint.lint.rules import all_rules, rule_doc
 from glint.lint.runner import lint_source, lint_text

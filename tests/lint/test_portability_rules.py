@@ -319,7 +319,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord)
 
 @needs_glslang
 def test_fixed_shader_validates_with_glslang() -> None:
-    from glint.compiler.glslang import validate
+    from glint.compiler.target.glslang import validate
 
     assert validate(OLD_SHADER, "x.glsl")  # broken as written
     result = lint_text(OLD_SHADER, "x.glsl", FAST, fix=True)

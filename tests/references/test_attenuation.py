@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from glint.compiler.references.attenuation import (
+from glint.compiler.verify.references.attenuation import (
     inverse_square,
     inverse_square_windowed,
     quadratic,

@@ -7,10 +7,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from glint.compiler.catalog import load_catalog
-from glint.compiler.evaluator import evaluate_snippet
-from glint.compiler.references import REFERENCES
-from glint.compiler.references.geometry import Lobe, directional_albedo, dots
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.verify.references import REFERENCES
+from glint.compiler.verify.references.geometry import Lobe, directional_albedo, dots
+from glint.compiler.verify.snippets import evaluate_snippet
 
 CATALOG = load_catalog()
 LOBES = sorted(s.id for s in CATALOG.snippets.values() if s.slot in ("diffuse", "specular"))

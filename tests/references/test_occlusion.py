@@ -9,8 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from glint.compiler.references import REFERENCES
-from glint.compiler.references.occlusion import (
+from glint.compiler.verify.references import REFERENCES
+from glint.compiler.verify.references.occlusion import (
     AO_MAX_DISTANCE,
     ao_cosine_visibility,
     cone_directions,
@@ -19,8 +19,8 @@ from glint.compiler.references.occlusion import (
     shadow_ray,
     stratified_disc,
 )
-from glint.compiler.references.occlusion_cases import ao_cases, shadow_cases
-from glint.compiler.references.scenes import SCENES, scene
+from glint.compiler.verify.references.occlusion_cases import ao_cases, shadow_cases
+from glint.compiler.verify.references.scenes import SCENES, scene
 
 
 def test_registered() -> None:

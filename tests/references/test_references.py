@@ -9,10 +9,14 @@ import inspect
 import numpy as np
 import pytest
 
-from glint.compiler.catalog import load_catalog
-from glint.compiler.references import REFERENCES, reference
-from glint.compiler.references.fresnel import F_dielectric, f0_from_ior, fresnel_dielectric_ior
-from glint.compiler.references.visibility import G1_smith_beckmann, G1_smith_ggx
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.verify.references import REFERENCES, reference
+from glint.compiler.verify.references.fresnel import (
+    F_dielectric,
+    f0_from_ior,
+    fresnel_dielectric_ior,
+)
+from glint.compiler.verify.references.visibility import G1_smith_beckmann, G1_smith_ggx
 
 # Quadrature in θ on geometric panels, so that lobes as narrow as a = 0.02 are resolved.
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(24)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from glint.compiler.shadertoy import is_complete
+from glint.compiler.target.shadertoy import is_complete
 
 from ...analysis.flow import parameter_parts, prototype_parts
 from ...context import LintContext

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from lark import Token, Tree
 
-from glint.compiler.shadertoy import UNIFORM_NAMES
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 from ...context import LintContext, walk
 from ...finding import Finding

@@ -1,0 +1,82 @@
+"""The emitter: resolved units to one self-contained shader source for a target.
+
+The ShaderToy target is exactly what pastes into the Image tab: a header naming the snippets,
+the parameter block, then every unit once, each behind a `// source: FILE:LINE` marker that lets
+`glint validate` map an error back to the snippet it came from (a unit that pruning cut into
+pieces carries a marker of its own before each later piece). Nothing varies between runs: the
+same scene gives the same bytes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from glint.compiler.catalog.loader import Catalog, glsl_value
+from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.units import GENERATED, Unit
+from glint.compiler.target import shadertoy
+
+TARGETS = shadertoy.TARGETS
+
+
+@dataclass
+class Shader:
+    text: str
+    units: list[Unit]
+    plan: Plan
+
+
+def parameter_block(units: list[Unit], catalog: Catalog, plan: Plan, lights: dict[str, str]) -> str:
+    """`#define` lines for the scene's lights and every parameter of the units taken."""
+    lines = ["// Scene constants (light directions point toward the light)."]
+    lines += [f"#define {name} {value}" for name, value in lights.items()]
+    knobs: dict[str, str] = {}
+    for unit in units:
+        snippet = catalog.snippets.get(unit.id)
+        if snippet is None:
+            continue
+        for name, param in snippet.params.items():
+            knobs.setdefault(name, plan.params.get(name, glsl_value(param.default, param.type)))
+    if knobs:
+        lines.append("// Parameters of the snippets below.")
+        lines += [f"#define {name} {value}" for name, value in knobs.items()]
+    return "\n".join(lines) + "\n"
+
+
+def header(scene_name: str, plan: Plan, units: list[Unit], target: str, version: str) -> str:
+    snippets = [u for u in units if u.origin != GENERATED]
+    width = max((len(u.id) for u in snippets), default=0)
+    lines = [
+        f"// glint {version} - scene '{scene_name}', tier {plan.tier}, target {target}",
+        "// Paste into the Image tab of https://www.shadertoy.com/new as it is."
+        if target == "shadertoy"
+        else f"// A complete {target} fragment shader.",
+        "// Snippets, in order:",
+    ]
+    lines += [f"//   {u.id.ljust(width)}  {u.summary}" for u in snippets]
+    return "\n".join(lines) + "\n"
+
+
+def emit(
+    scene_name: str,
+    plan: Plan,
+    units: list[Unit],
+    target: str,
+    version: str,
+) -> str:
+    parts = [header(scene_name, plan, units, target, version)]
+    for unit in units:
+        body = unit.body.strip("\n")
+        line = unit.line + _leading_blank_lines(unit.body)
+        parts.append(f"{source_marker(unit.origin, line)}\n{body}\n")
+    text = "\n".join(parts)
+    return shadertoy.wrap_for(target, text)
+
+
+def source_marker(origin: str, line: int) -> str:
+    """The comment saying that the next line is line `line` of `origin` (see sourcemap.py)."""
+    return f"// source: {origin}:{line}"
+
+
+def _leading_blank_lines(body: str) -> int:
+    return len(body) - len(body.lstrip("\n"))

@@ -1,0 +1,193 @@
+"""The planner: which slots the scene exercises, which variant fills each, and why; and the
+parameter values the scene sets.
+
+Which slots are in follows from the scene's content (`scene_slots.py`): no shadow without a
+shadow-casting light, no attenuation without a point light, and so on. Slots the content decides
+(camera, background, tone map, output transfer) follow the scene; the quality slots follow the
+tier table in `snippets/tiers.toml`, then what the content asks for (a rough-diffuse model for
+materials with a diffuse roughness, no specular occlusion without AO), then the scene's
+`[quality.variants]`, then the command line. Only slots in use get a variant, so the resolver
+fails loudly if the generated code reaches a slot the planner did not expect.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from importlib import resources
+
+from glint.compiler.catalog.loader import Catalog, glsl_value
+from glint.compiler.catalog.measurements import VariantCost, load_measurements
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.compose.budget import (
+    calls_per_pixel,
+    candidates_for,
+    estimated_cost,
+    within_budget,
+)
+from glint.compiler.compose.scene import LookAtCamera, OrbitCamera, Scene
+from glint.compiler.compose.scene_slots import SlotUse, slot_uses
+from glint.compiler.errors import InputError
+
+TIERS = ("fast", "balanced", "reference")
+
+
+@dataclass
+class Plan:
+    tier: str
+    choices: dict[str, str] = field(default_factory=dict)  # slot in use -> snippet id
+    reasons: dict[str, str] = field(default_factory=dict)  # slot -> why that variant
+    params: dict[str, str] = field(default_factory=dict)  # #define name -> GLSL value
+    uses: dict[str, SlotUse] = field(default_factory=dict)  # every slot: in or out, and why
+
+
+def tier_table() -> dict[str, dict[str, str]]:
+    text = (resources.files("glint.snippets") / "tiers.toml").read_text(encoding="utf-8")
+    return tomllib.loads(text)
+
+
+def plan(
+    scene: Scene,
+    catalog: Catalog,
+    tier: str | None = None,
+    overrides: dict[str, str] | None = None,
+    budget: float | None = None,
+) -> Plan:
+    """The plan of `scene` at `tier`; with `budget` (ns per pixel) the quality slots take the
+    most accurate measured variants within it instead of the tier's (see budget.py)."""
+    tier = tier or scene.quality.tier
+    tiers = tier_table()
+    result = Plan(tier=tier)
+
+    def choose(slot: str, variant: str, why: str) -> None:
+        result.choices[slot] = f"{slot}.{variant}"
+        result.reasons[slot] = why
+
+    own = tiers.get(tier, {})
+    for slot, variant in tiers["balanced"].items():
+        choose(slot, variant, f"{tier} tier" if slot in own else f"{tier} tier (as balanced)")
+    for slot, variant in own.items():
+        choose(slot, variant, f"{tier} tier")
+    choose("camera", scene.camera.type, f"camera.type = {scene.camera.type!r}")
+    choose("tonemap", scene.post.tonemap, f"post.tonemap = {scene.post.tonemap!r}")
+    choose("output", scene.post.output, f"post.output = {scene.post.output!r}")
+    has_sun = any(light.type == "directional" for light in scene.lights)
+    if scene.background.sun and has_sun:
+        choose("background", "gradient_sun", "background.sun with a directional light")
+    else:
+        choose("background", "gradient", "no sun to draw in the background")
+    fixed = {"camera", "tonemap", "output", "background"}  # what the budget may not change
+    rough = _rough_materials(scene)
+    if rough:
+        fixed.add("diffuse")
+        why = f"material {rough[0]!r} has diffuse_roughness; the {tier} tier's rough diffuse"
+        choose("diffuse", tiers["rough_diffuse"][tier], why)
+    if not scene.effects.ao:
+        fixed.add("specocc")
+        choose("specocc", "none", "effects.ao = false: no occlusion to derive it from")
+    for source, table in (
+        ("quality.variants", scene.quality.variants),
+        ("--variant", overrides or {}),
+    ):
+        for slot, variant in table.items():
+            _check_override(catalog, source, slot, variant)
+            choose(slot, variant, f"{source} {slot} = {variant!r}")
+            fixed.add(slot)
+
+    result.uses = slot_uses(scene, catalog, result.choices)
+    if budget is not None:
+        _spend(result, scene, fixed, budget, choose)
+        result.uses = slot_uses(scene, catalog, result.choices)
+    for slot, use in result.uses.items():
+        if not use.used:
+            result.choices.pop(slot, None)
+            result.reasons.pop(slot, None)
+    result.params = scene_params(scene)
+    if result.choices.get("irradiance") == "irradiance.sh9" and _has_environment_light(scene):
+        result.params |= _sh9_params(result.choices["env"], result.params)
+    return result
+
+
+def _spend(
+    result: Plan,
+    scene: Scene,
+    fixed: set[str],
+    budget_ns: float,
+    choose: Callable[[str, str, str], None],
+) -> None:
+    """Replace the tier's variants of the slots in use by the most accurate within the budget."""
+    measurements = load_measurements()
+    calls = calls_per_pixel(scene, result.uses)
+    candidates: dict[str, list[VariantCost]] = {}
+    for slot in calls:
+        options = (
+            None if slot in fixed else candidates_for(slot, result.choices[slot], measurements)
+        )
+        if options:
+            candidates[slot] = options
+    rest = {
+        slot: v for slot, v in result.choices.items() if slot in calls and slot not in candidates
+    }
+    fixed_ns = estimated_cost(rest, calls, measurements)
+    for slot, pick in within_budget(candidates, calls, fixed_ns, budget_ns).items():
+        choose(slot, pick.variant.id.split(".", 1)[1], pick.why)
+
+
+def _rough_materials(scene: Scene) -> list[str]:
+    """Materials in use whose diffuse is rougher than Lambert's."""
+    return [
+        m for m in scene.used_materials() if (scene.materials[m].diffuse_roughness or 0.0) > 0.0
+    ]
+
+
+def _has_environment_light(scene: Scene) -> bool:
+    return any(light.type == "environment" for light in scene.lights)
+
+
+def _sh9_params(env_id: str, params: dict[str, str]) -> dict[str, str]:
+    """SH_C0..SH_C8 of the scene's environment: the env snippet, with the scene's parameter
+    values, run on the CPU and projected onto nine spherical harmonics."""
+    from glint.compiler.compose.spherical_harmonics import (
+        project_sh9,
+        sh9_params,
+        snippet_environment,
+    )
+
+    coefficients = project_sh9(snippet_environment(env_id, params))
+    return {name: glsl_value(row, "vec3") for name, row in sh9_params(coefficients).items()}
+
+
+def _check_override(catalog: Catalog, source: str, slot: str, variant: str) -> None:
+    if slot not in SLOTS or SLOTS[slot].many:
+        one_variant = [name for name, s in SLOTS.items() if not s.many]
+        raise InputError(f"{source}.{slot}: unknown slot; slots: {', '.join(one_variant)}")
+    variants = sorted(s.variant for s in catalog.in_slot(slot))
+    if variant not in variants:
+        raise InputError(
+            f"{source}.{slot}: unknown variant {variant!r}; variants of {slot}: "
+            + ", ".join(variants)
+        )
+
+
+def scene_params(scene: Scene) -> dict[str, str]:
+    """Values of snippet parameters that the scene sets; snippets' defaults cover the rest."""
+    params: dict[str, str] = {}
+    camera = scene.camera
+    if isinstance(camera, OrbitCamera):
+        params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
+        params["CAMERA_RADIUS"] = glsl_value(camera.radius, "float")
+        params["CAMERA_HEIGHT"] = glsl_value(camera.height, "float")
+        params["CAMERA_SPEED"] = glsl_value(camera.speed, "float")
+        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+    elif isinstance(camera, LookAtCamera):
+        params["CAMERA_POSITION"] = glsl_value(camera.position, "vec3")
+        params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
+        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+    if scene.environment is not None:
+        params["ENV_TOP"] = glsl_value(scene.environment.top, "vec3")
+        params["ENV_BOTTOM"] = glsl_value(scene.environment.bottom, "vec3")
+    if scene.medium is not None:
+        params["MEDIUM_EXTINCTION"] = glsl_value(scene.medium.extinction, "vec3")
+        params["MEDIUM_INSCATTER"] = glsl_value(scene.medium.inscatter, "vec3")
+    return params

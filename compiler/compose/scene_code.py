@@ -1,0 +1,360 @@
+"""GLSL generated from the scene itself: its constants, its distance field, its materials, the
+shading of a hit point and `mainImage`. Everything reusable lives in snippets; this is only the
+scene-specific glue, and it calls slots only through their entry functions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from glint.compiler.catalog.loader import glsl_float, glsl_value
+from glint.compiler.compose.scene import (
+    BackLight,
+    BounceLight,
+    Box,
+    DirectionalLight,
+    EnvironmentLight,
+    Material,
+    Plane,
+    PointLight,
+    Scene,
+    SkyLight,
+    Sphere,
+)
+from glint.compiler.compose.units import Unit, generated
+from glint.compiler.errors import InputError
+
+
+@dataclass
+class SceneCode:
+    defines: dict[str, str]  # light constants: name -> GLSL expression
+    units: list[Unit]  # map, materials, shading, mainImage
+
+
+@dataclass
+class LightCode:
+    defines: dict[str, str]  # name -> GLSL expression
+    calls: list[str]  # one term of `shade` per light
+    requires: list[str]  # the functions those terms call
+    directional: list[str]  # the identifier of each directional light (SUN, LIGHT1, ...)
+
+
+def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
+    """The scene's own code. `normal_in_uniform_flow` computes the normal outside the hit
+    branch, for normal variants built on screen-space derivatives."""
+    lights = _lights(scene)
+    materials = scene.used_materials()
+    units = [_map_unit(scene)]
+    if len(materials) > 1:
+        units.append(_material_index_unit(scene, materials))
+    units.append(_surface_unit(scene, materials))
+    # Translucency is lit by directional lights only; without one it has nothing to show.
+    translucent = bool(lights.directional) and any(
+        scene.materials[m].subsurface is not None for m in materials
+    )
+    if translucent:
+        units.append(_subsurface_unit(scene, materials))
+    units.append(_shade_unit(scene, lights, translucent))
+    path = None  # how far the light from the hit point travels through the medium
+    if scene.medium is not None:
+        path = "t"
+        if scene.medium.level is not None:
+            units.append(_submerged_unit(scene.medium.level))
+            path = "submerged(ro, rd, t)"
+    units.append(_main_unit(normal_in_uniform_flow, path))
+    return SceneCode(defines=lights.defines, units=units)
+
+
+def _vec3(v: list[float]) -> str:
+    return glsl_value(v, "vec3")
+
+
+def _scaled(color: list[float], intensity: float) -> str:
+    return _vec3(color) if intensity == 1.0 else f"({_vec3(color)} * {glsl_float(intensity)})"
+
+
+def _lights(scene: Scene) -> LightCode:
+    """Constants for each light and the line of `shade` that adds it."""
+    defines: dict[str, str] = {}
+    calls: list[str] = []
+    requires: list[str] = []
+    directional: list[str] = []
+    counts: dict[str, int] = {}
+
+    def name(base: str) -> str:
+        n = counts.get(base, 0)
+        counts[base] = n + 1
+        return base if n == 0 else f"{base}{n}"
+
+    def fill_direction(i: int, ident: str, direction: list[float] | None) -> None:
+        if direction is not None:
+            defines[f"{ident}_DIR"] = f"normalize({_vec3(direction)})"
+        elif "SUN" in counts:
+            # Opposite the sun, horizontal: light bounced back from behind the viewer's side.
+            defines[f"{ident}_DIR"] = "normalize(vec3(-SUN_DIR.x, 0.0, -SUN_DIR.z))"
+        else:
+            raise InputError(
+                f"lights[{i}].direction: a {scene.lights[i].type} light needs a direction when "
+                "the scene has no directional light before it"
+            )
+
+    for i, light in enumerate(scene.lights):
+        if isinstance(light, DirectionalLight):
+            ident = name("SUN") if "SUN" not in counts else name("LIGHT")
+            directional.append(ident)
+            defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            visibility = "vec3(1.0)"
+            if light.shadow:
+                dist = glsl_float(light.shadow_distance)
+                cast = f"vec3(shadow(s.P, {ident}_DIR, 0.02, {dist}))"
+                visibility = cast
+                requires.append("shadow")
+                if light.penumbra is not None:
+                    defines[f"{ident}_PENUMBRA"] = _vec3(light.penumbra)
+                    visibility = f"pow({cast}, {ident}_PENUMBRA)"
+            calls.append(f"directionalLight(s, {ident}_DIR, {ident}_COLOR, {visibility})")
+            requires.append("directionalLight")
+        elif isinstance(light, PointLight):
+            ident = name("POINT")
+            defines[f"{ident}_POS"] = _vec3(light.position)
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            defines[f"{ident}_RANGE"] = glsl_float(light.range)
+            visibility = "vec3(1.0)"
+            if light.shadow:
+                toward = f"normalize({ident}_POS - s.P)"
+                visibility = f"vec3(shadow(s.P, {toward}, 0.02, distance({ident}_POS, s.P)))"
+                requires.append("shadow")
+            calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
+            requires.append("pointLight")
+        elif isinstance(light, SkyLight):
+            ident = name("SKY")
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            calls.append(f"skyLight(s, {ident}_COLOR, occlusion)")
+            requires.append("skyLight")
+        elif isinstance(light, BackLight | BounceLight):
+            ident = name(light.type.upper())
+            fill_direction(i, ident, light.direction)
+            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            function = f"{light.type}Light"
+            calls.append(f"{function}(s, {ident}_DIR, {ident}_COLOR, occlusion)")
+            requires.append(function)
+        elif isinstance(light, EnvironmentLight):
+            ident = name("ENV_LIGHT")
+            defines[f"{ident}_SCALE"] = glsl_float(light.intensity)
+            calls.append(f"irradianceLight(s, {ident}_SCALE, occlusion)")
+            requires.append("irradianceLight")
+    return LightCode(defines, calls, requires, directional)
+
+
+def _distance(obj: Sphere | Plane | Box) -> tuple[str, str]:
+    """GLSL distance expression of one object at point `p`, and the primitive it calls."""
+    if isinstance(obj, Sphere):
+        return f"sdSphere({_offset(obj.center)}, {glsl_float(obj.radius)})", "sdSphere"
+    if isinstance(obj, Box):
+        return f"sdBox({_offset(obj.center)}, {_vec3(obj.size)})", "sdBox"
+    length = sum(c * c for c in obj.normal) ** 0.5
+    normal = [c / length for c in obj.normal]
+    return f"sdPlane(p, {_vec3(normal)}, {glsl_float(obj.offset / length)})", "sdPlane"
+
+
+def _offset(center: list[float]) -> str:
+    return "p" if not any(center) else f"p - {_vec3(center)}"
+
+
+def _map_unit(scene: Scene) -> Unit:
+    lines = ["// The scene's signed distance: the union of its objects.", "float map(vec3 p) {"]
+    requires = []
+    for i, obj in enumerate(scene.objects):
+        expr, prim = _distance(obj)
+        requires.append(prim)
+        lines.append(f"    float d = {expr};" if i == 0 else f"    d = min(d, {expr});")
+    lines += ["    return d;", "}"]
+    return generated("scene.map", ["map"], requires, "\n".join(lines) + "\n")
+
+
+def _material_index_unit(scene: Scene, materials: list[str]) -> Unit:
+    lines = [
+        "// Index of the material of the object nearest to p.",
+        "int materialAt(vec3 p) {",
+    ]
+    requires = []
+    for i, obj in enumerate(scene.objects):
+        expr, prim = _distance(obj)
+        requires.append(prim)
+        index = materials.index(obj.material)
+        if i == 0:
+            lines += [f"    float best = {expr};", f"    int id = {index};"]
+        else:
+            lines += [
+                f"    float d{i} = {expr};",
+                f"    if (d{i} < best) {{ best = d{i}; id = {index}; }}",
+            ]
+    lines += ["    return id;", "}"]
+    return generated("scene.materials", ["materialAt"], requires, "\n".join(lines) + "\n")
+
+
+def _albedo(material: Material) -> tuple[str, list[str]]:
+    if material.pattern == "checker":
+        assert material.pattern_albedo is not None  # the scene model checks this
+        mixed = f"mix({_vec3(material.albedo)}, {_vec3(material.pattern_albedo)}, checker(P))"
+        return mixed, ["checker"]
+    return _vec3(material.albedo), []
+
+
+def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
+    """Function-body lines that run `bodies[i]` for material i (the last one as the default)
+    and what they require: one material needs no lookup, more branch on `materialAt`."""
+    if len(bodies) == 1:
+        return [f"    {line}" for line in bodies[0]], []
+    lines = ["    int id = materialAt(P);"]
+    for index in range(len(bodies) - 1, 0, -1):
+        lines += [f"    if (id == {index}) {{", *[f"        {x}" for x in bodies[index]], "    }"]
+    return lines + [f"    {line}" for line in bodies[0]], ["materialAt"]
+
+
+def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
+    requires = ["Surface", "makeSurface"]
+    bodies = []
+    for name in materials:
+        material = scene.materials[name]
+        albedo, needs = _albedo(material)
+        requires += needs
+        body, extra = _material_body(material, albedo)
+        requires += extra
+        bodies.append(body)
+    branches, lookup = _by_material(bodies)
+    lines = ["// The material at a hit point.", "Surface surfaceAt(vec3 P, vec3 N, vec3 V) {"]
+    lines += [*branches, "}"]
+    return generated("scene.surface", ["surfaceAt"], requires + lookup, "\n".join(lines) + "\n")
+
+
+def _material_body(material: Material, albedo: str) -> tuple[list[str], list[str]]:
+    """The lines that build one material's Surface, and what they require beyond makeSurface:
+    the metallic path and the diffuse roughness appear only for materials that have them."""
+    metal = material.metallic > 0.0
+    prelude = []
+    if metal and albedo.startswith("mix("):  # a pattern: evaluate it once for both uses
+        prelude, albedo = [f"vec3 albedo = {albedo};"], "albedo"
+    call = f"makeSurface(P, N, V, {albedo}, {glsl_float(material.roughness)})"
+    if not metal and material.diffuse_roughness is None:
+        return [f"return {call};"], []
+    lines = [*prelude, f"Surface s = {call};"]
+    if metal:
+        lines.append(f"applyMetallic(s, {albedo}, {glsl_float(material.metallic)});")
+    if material.diffuse_roughness is not None:
+        lines.append(f"s.diffuseRoughness = {glsl_float(material.diffuse_roughness)};")
+    return [*lines, "return s;"], ["applyMetallic"] if metal else []
+
+
+def _subsurface_unit(scene: Scene, materials: list[str]) -> Unit:
+    """`subsurfaceAt(P)`: the scattering colour and phase asymmetry g of the material at P;
+    zero colour for opaque materials."""
+    bodies = []
+    for name in materials:
+        material = scene.materials[name]
+        color = _vec3(material.subsurface or [0.0, 0.0, 0.0])
+        bodies.append([f"return vec4({color}, {glsl_float(material.subsurface_g)});"])
+    branches, lookup = _by_material(bodies)
+    lines = [
+        "// Subsurface scattering colour (rgb) and phase asymmetry g (w) of the material at P.",
+        "vec4 subsurfaceAt(vec3 P) {",
+        *branches,
+        "}",
+    ]
+    return generated("scene.subsurface", ["subsurfaceAt"], lookup, "\n".join(lines) + "\n")
+
+
+def _translucency(ident: str) -> str:
+    """Light of one directional light that crosses the body and scatters toward the eye:
+    colour × radiance × transmittance toward L × phase(cos θ), θ between the light's direction
+    of travel (−L) and the way to the eye (V), so a back-lit body glows for g > 0."""
+    return (
+        f"sss.rgb * {ident}_COLOR * subsurface(s.P, {ident}_DIR)"
+        f" * phase(-dot({ident}_DIR, s.V), sss.w)"
+    )
+
+
+def _shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
+    lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
+    requires = ["Surface", *lights.requires]
+    light_calls = lights.calls
+    uses_occlusion = any("occlusion" in call for call in light_calls)
+    reflection = scene.environment is not None and scene.environment.reflection
+    occlusion = "1.0"
+    if scene.effects.ao and (uses_occlusion or reflection):
+        lines.append("    float occlusion = ambientOcclusion(s.P, s.N);")
+        requires.append("ambientOcclusion")
+        occlusion = "occlusion"
+    lines.append("    vec3 color = vec3(0.0);")
+    for call in light_calls:
+        lines.append(f"    color += {call.replace('occlusion', occlusion)};")
+    if translucent:
+        lines.append("    vec4 sss = subsurfaceAt(s.P);")
+        lines += [f"    color += {_translucency(ident)};" for ident in lights.directional]
+        requires += ["subsurfaceAt", "subsurface", "phase"]
+    if reflection:
+        lines.append(f"    color += environmentLight(s, {occlusion});")
+        requires.append("environmentLight")
+    lines += ["    return color;", "}"]
+    return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n")
+
+
+def _submerged_unit(level: float) -> Unit:
+    """`submerged(ro, rd, t)`: how much of the ray's first t units lies below the water."""
+    y = glsl_float(level)
+    body = f"""// Length of the ray ro + u·rd, 0 <= u <= t, below the water level y = {y}.
+float submerged(vec3 ro, vec3 rd, float t) {{
+    float start = ro.y - {y};
+    float end = start + t * rd.y;
+    if (start >= 0.0 && end >= 0.0) return 0.0;
+    if (start < 0.0 && end < 0.0) return t;
+    // The ray crosses the level once, at u = −start / rd.y (rd.y is not 0: the ends differ).
+    float crossing = -start / rd.y;
+    return start < 0.0 ? crossing : t - crossing;
+}}
+"""
+    return generated("scene.submerged", ["submerged"], [], body)
+
+
+def _main_unit(normal_in_uniform_flow: bool, medium_path: str | None = None) -> Unit:
+    requires = [
+        "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
+        "outputTransfer", "tonemap",
+    ]  # fmt: skip
+    # The medium lies between the eye and the surfaces; the background is outside it.
+    through = ""
+    if medium_path is not None:
+        requires.append("medium")
+        requires += ["submerged"] if "submerged" in medium_path else []
+        through = f"        color = medium(color, {medium_path});\n"
+    if not normal_in_uniform_flow:
+        hit = f"""    if (t > 0.0) {{
+        vec3 P = ro + t * rd;
+        color = shade(surfaceAt(P, calcNormal(P), -rd));
+{through}    }}
+"""
+    else:
+        # Screen-space derivatives are undefined inside a branch that neighbouring pixels may
+        # not take, so a derivative normal is computed by every pixel: rays that miss use a
+        # far point, which keeps the 2×2 blocks at the horizon from mixing in the eye.
+        # MARCH_FAR is the raymarch variant's parameter (written by the parameter block).
+        hit = f"""    vec3 P = ro + (t > 0.0 ? t : MARCH_FAR) * rd;
+    vec3 N = calcNormal(P);
+    if (t > 0.0) {{
+        color = shade(surfaceAt(P, N, -rd));
+{through}    }}
+"""
+    body = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    vec3 ro;\n"
+        "    vec3 rd;\n"
+        "    cameraRay(fragCoord, ro, rd);\n"
+        "    vec3 color = background(rd);\n"
+        "    float t = raymarch(ro, rd);\n"
+        f"{hit}"
+        "    color = outputTransfer(tonemap(color));\n"
+        "    fragColor = vec4(color, 1.0);\n"
+        "}\n"
+    )
+    return generated("scene.main", ["mainImage"], requires, body)

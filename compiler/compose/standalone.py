@@ -1,0 +1,52 @@
+"""One snippet as a complete ShaderToy shader: the snippet, everything it requires, stand-ins
+for what a scene would generate, and a `mainImage`. The catalog check compiles it; probes run it.
+"""
+
+from __future__ import annotations
+
+from glint.compiler.catalog.loader import Catalog, Snippet
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.compose.emitter import emit, parameter_block
+from glint.compiler.compose.planner import Plan, tier_table
+from glint.compiler.compose.resolver import resolve
+from glint.compiler.compose.units import generated
+
+# Stand-ins for what the composer generates from a scene, so that a snippet that needs the
+# scene (`map`, the key light) compiles on its own: the default scene's sphere and ground.
+SCENE_STUB = """float map(vec3 p) { return min(length(p) - 1.0, p.y + 1.0); }
+int materialAt(vec3 p) { return 0; }
+"""
+SCENE_DEFINES = {"SUN_DIR": "normalize(vec3(0.6, 0.8, -0.5))", "SUN_COLOR": "vec3(2.0)"}
+# Choices for the slots a scene's content decides, when a snippet needs one of them.
+CONTENT_CHOICES = {
+    "camera": "camera.orbit",
+    "background": "background.gradient",
+    "tonemap": "tonemap.none",
+    "output": "output.gamma22",
+}
+EMPTY_MAIN = "void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(0.0); }\n"
+
+
+def standalone_choices(snippet: Snippet) -> dict[str, str]:
+    """Balanced-tier variants for every slot, with the snippet itself filling its own slot."""
+    choices = {slot: f"{slot}.{v}" for slot, v in tier_table()["balanced"].items()}
+    choices |= CONTENT_CHOICES
+    if not SLOTS[snippet.slot].many:
+        choices[snippet.slot] = snippet.id
+    return choices
+
+
+def standalone_source(
+    snippet: Snippet, catalog: Catalog, main: str = EMPTY_MAIN, scene_stub: str = SCENE_STUB
+) -> str:
+    """The snippet and its dependencies (balanced-tier choices for other slots) with `main`.
+    `scene_stub` stands in for the scene: it defines `map` and `materialAt`."""
+    choices = standalone_choices(snippet)
+    scene = generated("scene.stub", ["map", "materialAt"], [], scene_stub)
+    constants = generated("scene.constants", list(SCENE_DEFINES), [], "", rank=-1)
+    entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)
+    units = resolve([constants, scene, entry], catalog, choices)
+    plan = Plan(tier="balanced", choices=choices)
+    block = parameter_block(units, catalog, plan, SCENE_DEFINES)
+    units = [u if u.id != constants.id else generated(u.id, [], [], block, -1) for u in units]
+    return emit(snippet.id, plan, units, "shadertoy", "standalone")

@@ -1,0 +1,300 @@
+"""Validate a ShaderToy shader with glslangValidator and report errors where the user wrote them.
+
+The user's code is wrapped exactly as the target wraps it (ShaderToy's prelude and `main`), compiled
+by the Khronos reference compiler, and every error line is mapped back through the prelude and the
+`// source:` markers to the user's file, or to the snippet the line was copied from.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from glint.compiler.errors import EnvironmentProblem, UsageError
+from glint.compiler.target import shadertoy
+from glint.compiler.target.sourcemap import Origin, build_line_map, split_lines
+
+TARGETS = shadertoy.TARGETS
+TIMEOUT_S = 30.0
+# validate_many: files per glslangValidator process, and the time each file adds to its limit.
+BATCH_FILES = 64
+BATCH_FILE_TIMEOUT_S = 2.0
+SPIRV_OPT = "/usr/bin/spirv-opt"
+MAIN_IMAGE_SIGNATURE = "void mainImage(out vec4 fragColor, in vec2 fragCoord)"
+
+# `ERROR: 0:12: 'foo' : undeclared identifier`; the `0:12: ` part is absent for link errors.
+# Some modes print the file name instead of the source-string number 0.
+_LINE = re.compile(r"^(ERROR|WARNING): (?:[^\s:]+:(\d+): )?(.*?)\s*$")
+_TOKEN = re.compile(r"^'(.*?)' :\s*(.*)$")
+# Lines that summarise or follow up real errors and tell the user nothing more.
+_NOISE = re.compile(r"compilation errors?\.|No code generated|compilation terminated")
+# glslang names the unexpected token in syntax errors by its grammar name.
+_GRAMMAR_TOKENS = {
+    "SEMICOLON": ";", "COMMA": ",", "LEFT_BRACE": "{", "RIGHT_BRACE": "}",
+    "LEFT_PAREN": "(", "RIGHT_PAREN": ")", "LEFT_BRACKET": "[", "RIGHT_BRACKET": "]",
+    "DOT": ".", "EQUAL": "=",
+}
+_UNEXPECTED = re.compile(r"unexpected ([A-Z_]+)")
+
+
+@dataclass
+class Diagnostic:
+    """One message from the compiler, located in the user's file (1-based line and column)."""
+
+    file: str
+    line: int
+    column: int
+    severity: str  # "error" or "warning"
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}:{self.column}: {self.severity}: {self.message}"
+
+
+def find_validator() -> str:
+    """Return the path of glslangValidator, or say how to install it."""
+    path = shutil.which("glslangValidator")
+    if path is None:
+        raise EnvironmentProblem(
+            "glslangValidator not found; install it with `apt-get install glslang-tools` "
+            "(Debian) or run `make setup`"
+        )
+    return path
+
+
+def wrap_for_target(source: str, target: str) -> tuple[str, int]:
+    """Return the complete fragment shader for `target` and how many prelude lines precede the
+    user's first line. A source that already opens with `#version` is complete as it is."""
+    if target not in TARGETS:
+        raise UsageError(f"unknown target {target!r}; expected one of: {', '.join(TARGETS)}")
+    if shadertoy.is_complete(source):
+        return source, 0
+    wrap_as = "webgl2" if target == "shadertoy" else target
+    return shadertoy.wrap_for(wrap_as, source), shadertoy.prelude_lines(wrap_as)
+
+
+def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess[str]:
+    try:
+        return subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired as exc:
+        raise EnvironmentProblem(
+            f"{os.path.basename(args[0])} did not finish within {timeout:.0f} s"
+        ) from exc
+    except OSError as exc:
+        raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
+
+
+def _compile(wrapped: str, workdir: str, extra_args: list[str]) -> subprocess.CompletedProcess[str]:
+    """Compile `wrapped` from a .frag file in `workdir` (the suffix tells glslang the stage)."""
+    validator = find_validator()
+    shader = os.path.join(workdir, "shader.frag")
+    with open(shader, "w", encoding="utf-8") as handle:
+        handle.write(wrapped)
+    return _run([validator, *extra_args, shader])
+
+
+def _column(line_text: str, token: str, message: str) -> int:
+    """glslang reports no column: find the quoted token (or the unexpected one) on the line."""
+    if not token:
+        unexpected = _UNEXPECTED.search(message)
+        token = _GRAMMAR_TOKENS.get(unexpected.group(1), "") if unexpected else ""
+    if not token:
+        return 1
+    if re.fullmatch(r"\w+", token):
+        found = re.search(rf"\b{re.escape(token)}\b", line_text)
+        return found.start() + 1 if found else 1
+    index = line_text.find(token)
+    return index + 1 if index >= 0 else 1
+
+
+def _definition(source: str, filename: str, name: str) -> tuple[Origin, int] | None:
+    """Where `name(` first appears in the user's code: its origin and 1-based column."""
+    origins = build_line_map(source, filename)
+    for index, line in enumerate(split_lines(source)):
+        found = re.search(rf"\b{name}\s*\(", line)
+        if found:
+            return Origin(origins[index].file, origins[index].line), found.start() + 1
+    return None
+
+
+def _epilogue_diagnostic(
+    source: str, filename: str, token: str, message: str, severity: str
+) -> Diagnostic:
+    """Explain an error in the `main` that the target appends: the user's entry point is wrong.
+
+    It is reported at the user's definition when there is one, else at the last line.
+    """
+    if token == "mainImage":
+        found = _definition(source, filename, "mainImage")
+        what = "has the wrong signature" if found else "is not defined"
+        text = f"mainImage {what}: ShaderToy calls `{MAIN_IMAGE_SIGNATURE}`"
+    elif token == "main":
+        found = _definition(source, filename, "main")
+        text = "do not define `main`: ShaderToy defines it and calls `mainImage`"
+    else:
+        found = None
+        text = f"{message} (in the `main` that ShaderToy appends, which calls mainImage)"
+    if found:
+        origin, column = found
+        return Diagnostic(origin.file, origin.line, column, severity, text)
+    origins = build_line_map(source, filename)
+    last = origins[-1] if origins else Origin(filename, 1)
+    return Diagnostic(last.file, last.line, 1, severity, text)
+
+
+def parse_output(output: str, source: str, filename: str, prelude_lines: int) -> list[Diagnostic]:
+    """Turn glslangValidator's output on a wrapped `source` into diagnostics on the user's files."""
+    origins = build_line_map(source, filename)
+    user_lines = split_lines(source)
+    diagnostics: list[Diagnostic] = []
+    for raw in output.splitlines():
+        match = _LINE.match(raw.strip())
+        if not match or _NOISE.search(match.group(3)):
+            continue
+        severity = "error" if match.group(1) == "ERROR" else "warning"
+        token_match = _TOKEN.match(match.group(3))
+        token, message = token_match.groups() if token_match else ("", match.group(3))
+        message = message.strip() or match.group(3)
+        if token and token_match:
+            message = f"'{token}': {message}"
+        if match.group(2) is None:
+            # Link-stage errors name no line; the whole file is at fault.
+            diagnostics.append(Diagnostic(filename, 1, 1, severity, message))
+            continue
+        user_line = int(match.group(2)) - prelude_lines
+        if user_line < 1:
+            diagnostics.append(Diagnostic(filename, 1, 1, severity, f"in the prelude: {message}"))
+        elif user_line > len(origins):
+            diagnostics.append(_epilogue_diagnostic(source, filename, token, message, severity))
+        else:
+            origin = origins[user_line - 1]
+            column = _column(user_lines[user_line - 1], token, message)
+            diagnostics.append(Diagnostic(origin.file, origin.line, column, severity, message))
+    return _unique(diagnostics)
+
+
+def _unique(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    seen: set[str] = set()
+    kept = []
+    for diagnostic in diagnostics:
+        if str(diagnostic) not in seen:
+            seen.add(str(diagnostic))
+            kept.append(diagnostic)
+    return kept
+
+
+def validate(source: str, filename: str = "<input>", target: str = "shadertoy") -> list[Diagnostic]:
+    """Compile `source` as `target` would and return its diagnostics (empty when it is clean)."""
+    wrapped, prelude_lines = wrap_for_target(source, target)
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        result = _compile(wrapped, workdir, [])
+    output = result.stdout + result.stderr
+    return _diagnostics(output, result.returncode, source, filename, prelude_lines)
+
+
+def _diagnostics(
+    output: str, returncode: int, source: str, filename: str, prelude_lines: int
+) -> list[Diagnostic]:
+    diagnostics = parse_output(output, source, filename, prelude_lines)
+    if returncode != 0 and not any(d.severity == "error" for d in diagnostics):
+        # A failure we could not parse must not pass silently.
+        detail = output.strip() or f"exit status {returncode}"
+        diagnostics.append(Diagnostic(filename, 1, 1, "error", f"glslangValidator: {detail}"))
+    return diagnostics
+
+
+def validate_many(
+    sources: Sequence[tuple[str, str]], target: str = "shadertoy"
+) -> list[list[Diagnostic]]:
+    """`validate` for many (source, filename) pairs with one glslangValidator process per
+    BATCH_FILES files instead of one per file; the diagnostics of each, in the given order.
+
+    Each source is wrapped as `validate` wraps it and written to a file of its own; glslang
+    compiles the files given on one command line separately (no linking between them) and
+    prints each file's name on a line of its own before that file's messages. The output is
+    cut at those names and each part parsed against its own source, with the same line
+    mapping as `validate`. Where the output cannot be cut that way (a crash, a message on
+    stderr, a name missing), the batch is validated again one file at a time: the results are
+    always those of `validate`, only faster."""
+    results: list[list[Diagnostic]] = []
+    for start in range(0, len(sources), BATCH_FILES):
+        batch = sources[start : start + BATCH_FILES]
+        results += _validate_batch(batch, target) or [validate(s, f, target) for s, f in batch]
+    return results
+
+
+def _validate_batch(
+    batch: Sequence[tuple[str, str]], target: str
+) -> list[list[Diagnostic]] | None:
+    """One glslangValidator process for the batch, or None when its output cannot be split."""
+    wrapped = [wrap_for_target(source, target) for source, _ in batch]
+    validator = find_validator()
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        paths = []
+        for index, (text, _) in enumerate(wrapped):
+            path = os.path.join(workdir, f"{index:05d}.frag")  # .frag: the fragment stage
+            with open(path, "w", encoding="utf-8") as handle:
+                handle.write(text)
+            paths.append(path)
+        timeout = TIMEOUT_S + BATCH_FILE_TIMEOUT_S * len(paths)
+        result = _run([validator, *paths], timeout)
+    sections = _split_by_file(result.stdout, paths)
+    if sections is None or result.stderr.strip() or result.returncode < 0:
+        return None
+    # glslang's exit status covers the whole batch; a file failed if its part has an ERROR.
+    failed = [any(line.startswith("ERROR") for line in part.splitlines()) for part in sections]
+    if result.returncode != 0 and not any(failed):
+        return None  # it failed, and no file says why: let `validate` find out which
+    return [
+        _diagnostics(part, result.returncode if bad else 0, source, filename, prelude)
+        for (source, filename), (_, prelude), part, bad in zip(
+            batch, wrapped, sections, failed, strict=True
+        )
+    ]
+
+
+def _split_by_file(output: str, paths: list[str]) -> list[str] | None:
+    """glslang's output cut into each file's part: every file's name comes on a line of its
+    own, in the order given, before its messages. None if the output is not like that."""
+    parts: list[list[str]] = []
+    for line in output.splitlines():
+        if len(parts) < len(paths) and line.strip() == paths[len(parts)]:
+            parts.append([])
+        elif parts:
+            parts[-1].append(line)
+        elif line.strip():
+            return None  # a message before the first file's name
+    if len(parts) != len(paths):
+        return None
+    return ["\n".join(part) for part in parts]
+
+
+def spirv_instruction_count(source: str, target: str = "shadertoy") -> int | None:
+    """Static cost: SPIR-V instructions after `spirv-opt -O`, or None if it does not compile.
+
+    Deterministic, so CI can compare it; without spirv-opt the unoptimised count is returned.
+    """
+    wrapped, _ = wrap_for_target(source, target)
+    # SPIR-V needs ES 3.10; ShaderToy code is valid there, and the count is what matters.
+    wrapped = wrapped.replace("#version 300 es", "#version 310 es", 1)
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        spirv = os.path.join(workdir, "shader.spv")
+        # OpenGL-flavoured SPIR-V (-G); loose uniforms need locations and bindings assigned.
+        flags = ["-G", "--auto-map-bindings", "--auto-map-locations", "-o", spirv]
+        result = _compile(wrapped, workdir, flags)
+        if result.returncode != 0 or not os.path.exists(spirv):
+            return None
+        if os.path.exists(SPIRV_OPT):
+            optimised = os.path.join(workdir, "shader.opt.spv")
+            if _run([SPIRV_OPT, "-O", spirv, "-o", optimised]).returncode == 0:
+                spirv = optimised
+        disassembler = shutil.which("spirv-dis")
+        if disassembler is None:
+            return None
+        listing = _run([disassembler, "--no-header", spirv]).stdout
+        return sum(1 for line in listing.splitlines() if line.strip())
