@@ -124,6 +124,8 @@ class Value:
 # The largest framebuffer or texture side a GPU offers: a resolution is finite, so a positive
 # constant over it (2.0 / iResolution.y, a pixel's width) is strictly positive.
 MAX_RESOLUTION = 16384.0
+
+
 def _common_facts(a: tuple, b: tuple) -> tuple:  # type: ignore[type-arg]
     """The facts that hold on both paths (the same fact about the very same value)."""
     if not a or not b:
@@ -736,7 +738,7 @@ def _related(env: Env, a: Node, op: str, b: Node) -> bool:
         holder = env.get(mine[1])
         if holder is None:
             continue
-        part = mine[0][len(mine[1]):]
+        part = mine[0][len(mine[1]) :]
         for rel_part, rel_op, name, target in holder.rel:
             if (rel_part == part and rel_op in wanted and name == other[0]
                     and env.get(other[1]) is target):  # fmt: skip
@@ -1166,8 +1168,9 @@ class Evaluator:
         x = self._sub(atom)
         n = T.size(ty)
         if n > 1 and comps is not None and T.size(x.type) == n:
-            tight = tuple(c.meet(poly_range(coeffs, p)) for c, p in zip(comps, x.parts(n),
-                                                                          strict=True))
+            tight = tuple(
+                c.meet(poly_range(coeffs, p)) for c, p in zip(comps, x.parts(n), strict=True)
+            )
             return hull_all(tight), tight
         if n == 1 and T.size(x.type) == 1:
             return rng.meet(poly_range(coeffs, x.range)), comps

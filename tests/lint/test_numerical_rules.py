@@ -247,8 +247,9 @@ SHADE = "fragColor = vec4(shade(N, V, L, clamp(sin(iTime), 0.05, 1.0)), 1.0);"
 
 def test_division_by_a_cosine_passed_to_a_visibility_function() -> None:
     # an unclamped N·V reaches the denominators through a parameter, two calls deep
-    src = shader(SHADE, VISIBILITY.replace("NOV", "dot(n, v)").replace("NOL",
-                                                                       "max(dot(n, l), 1e-4)"))
+    src = shader(
+        SHADE, VISIBILITY.replace("NOV", "dot(n, v)").replace("NOL", "max(dot(n, l), 1e-4)")
+    )
     found = [f for f in lint(src) if f.code == "N005"]
     assert [f.line for f in found] == [4, 6, 7]
     for f in found:

@@ -490,19 +490,24 @@ def test_a_strict_comparison_keeps_the_length_away_from_zero() -> None:
 
 def test_guards_relate_two_variables() -> None:
     # inside `if (c < rq)`: rq - c > 0 however both vary
-    body = "float rq = sin(iTime);\nfloat c = cos(iTime);\n" \
-        "if (c < rq) { float l = sqrt(rq - c); }"
+    body = "float rq = sin(iTime);\nfloat c = cos(iTime);\nif (c < rq) { float l = sqrt(rq - c); }"
     assert rng(body, "rq - c").lo > 0
     # after `if (r2 > sr2) return;`: sr2 - r2 >= 0
-    body = "float sr2 = sin(iTime);\nfloat r2 = cos(iTime);\n" \
+    body = (
+        "float sr2 = sin(iTime);\nfloat r2 = cos(iTime);\n"
         "if (r2 > sr2) return;\nfloat e = sr2 - r2;"
+    )
     assert rng(body, "sr2 - r2").lo == 0
     # 0 <= y < s.w: s.w*s.w - y*y >= 0; and y / s.w in [0, 1]
-    body = ("vec4 s = vec4(sin(iTime));\nfloat y = length(fragCoord);\n"
-            "if (y < s.w) { float x = s.w*s.w - y*y; float r = y / s.w; }")
+    body = (
+        "vec4 s = vec4(sin(iTime));\nfloat y = length(fragCoord);\n"
+        "if (y < s.w) { float x = s.w*s.w - y*y; float r = y / s.w; }"
+    )
     assert rng(body, "s.w*s.w - y*y").lo == 0
     assert rng(body, "y / s.w") == Interval(0.0, 1.0)
     # a reassignment after the guard ends the relation
-    body = "float a = sin(iTime);\nfloat b = cos(iTime);\n" \
+    body = (
+        "float a = sin(iTime);\nfloat b = cos(iTime);\n"
         "if (b < a) { b = 2.0 * iTime; float d = a - b; }"
+    )
     assert rng(body, "a - b").lo < 0

@@ -396,8 +396,10 @@ def _palette(ctx: LintContext, node: Node, fn: Function, depth: int = 10) -> boo
         if sub.data == "declarator" and str(sub.children[0]) == local and len(sub.children) > 1:
             values.append(sub.children[-1])
         elif sub.data == "assignment" and root_var(sub.children[0]) == local:
-            if str(sub.children[1]) != "=" or not isinstance(sub.children[0], Tree) or (
-                sub.children[0].data != "variable"
+            if (
+                str(sub.children[1]) != "="
+                or not isinstance(sub.children[0], Tree)
+                or (sub.children[0].data != "variable")
             ):
                 return False
             values.append(sub.children[2])

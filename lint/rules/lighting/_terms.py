@@ -630,8 +630,11 @@ def _light_like(node: Node, fn: Function) -> bool:
     base: Node = node
     while isinstance(base, Tree) and (base.data in ("field", "index") or call_name(base) ==
                                       "normalize" or base.data == "unary"):  # fmt: skip
-        base = call_args(base)[0] if call_name(base) == "normalize" else (
-            base.children[1] if base.data == "unary" else base.children[0])
+        base = (
+            call_args(base)[0]
+            if call_name(base) == "normalize"
+            else (base.children[1] if base.data == "unary" else base.children[0])
+        )
     name = var_name(base)
     if name is None:
         return False
@@ -657,9 +660,33 @@ def lights_surface(ctx: LintContext) -> bool:
 # --- compile-time constants ------------------------------------------------------------------
 
 _FOLDABLE_CALLS = {
-    "normalize", "length", "sqrt", "inversesqrt", "pow", "exp", "exp2", "log", "log2", "sin",
-    "cos", "tan", "radians", "degrees", "abs", "min", "max", "clamp", "mix", "dot", "cross",
-    "floor", "fract", "mod", "sign", "step", "smoothstep",
+    "normalize",
+    "length",
+    "sqrt",
+    "inversesqrt",
+    "pow",
+    "exp",
+    "exp2",
+    "log",
+    "log2",
+    "sin",
+    "cos",
+    "tan",
+    "radians",
+    "degrees",
+    "abs",
+    "min",
+    "max",
+    "clamp",
+    "mix",
+    "dot",
+    "cross",
+    "floor",
+    "fract",
+    "mod",
+    "sign",
+    "step",
+    "smoothstep",
 }
 
 

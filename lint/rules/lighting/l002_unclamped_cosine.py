@@ -119,8 +119,10 @@ class UnclampedCosine(Rule):
         projection (v - n * dot(n, v) is v's tangent part), which must stay signed."""
         for f in factors:
             role = vector_role(f, fn)
-            if role is not None and cosine_of(f, fn) is None and (
-                role == "N" or is_unit(self._ctx, f)
+            if (
+                role is not None
+                and cosine_of(f, fn) is None
+                and (role == "N" or is_unit(self._ctx, f))
             ):  # a colour may be named `light`; a unit vector is a direction
                 return True
         return False
