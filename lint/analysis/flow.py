@@ -36,7 +36,8 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node
 from ..context import tokens as tokens_of
-from .model import Model, condition_truth, same_expression, semantic_model
+from .model import Model, condition_truth, semantic_model
+from .syntax import same_expression
 
 State = dict[int, int]  # id of a Var -> mask of written components
 SWIZZLE_SETS = ("xyzw", "rgba", "stpq")

@@ -55,6 +55,18 @@ from .ranges import (
     step_range,
     tan_range,
 )
+from .syntax import (
+    array_text,
+    call_args,
+    callee_name,
+    int_value,
+    is_tree,
+    root_variable,
+    same_expression,
+    spec_text,
+    swizzle_index,
+    var_key,
+)
 
 Node = Tree | Token
 Env = Mapping[str, "Value"]
@@ -196,79 +208,6 @@ _RANGE_3: dict[str, Callable[[Interval, Interval, Interval], Interval]] = {
     "mix": mix_range,
     "smoothstep": lambda a, b, x: ZERO_ONE,
 }
-
-
-# --- tree helpers -------------------------------------------------------------------------
-
-
-def is_tree(node: object, *kinds: str) -> bool:
-    return isinstance(node, Tree) and (not kinds or node.data in kinds)
-
-
-def callee_name(call: Tree) -> str | None:
-    """`f` for a call `f(...)`; None for a method call such as `v.length()`."""
-    head = call.children[0]
-    return str(head.children[0]) if is_tree(head, "variable") else None
-
-
-def call_args(call: Tree) -> list[Node]:
-    """The argument expressions of a call or constructor."""
-    for child in call.children[1:]:
-        if is_tree(child, "arguments"):
-            return list(child.children)
-    return []
-
-
-def root_variable(node: Node) -> str | None:
-    """`v` for `v`, `v.x`, `v[i].y`: the variable an lvalue writes."""
-    while is_tree(node, "field", "index"):
-        node = node.children[0]  # type: ignore[union-attr]
-    return str(node.children[0]) if is_tree(node, "variable") else None  # type: ignore[union-attr]
-
-
-def spec_text(spec: Tree) -> str:
-    """`vec3`, `float[3]` or a struct name for a type_specifier."""
-    head = spec.children[0]
-    if is_tree(head, "struct_specifier"):
-        name = next((str(c) for c in head.children if isinstance(c, Token)), "struct")
-    else:
-        name = str(head)
-    arrays = [c for c in spec.children[1:] if is_tree(c, "array_specifier")]
-    return name + "".join(_array_text(a) for a in arrays)
-
-
-def _array_text(spec: Tree) -> str:
-    sizes = [_literal_text(c) for c in spec.children]
-    return "".join(f"[{s}]" for s in sizes) if sizes else "[]"
-
-
-def _literal_text(node: Node) -> str:
-    if is_tree(node, "int_literal"):
-        return str(node.children[0])  # type: ignore[union-attr]
-    return ""
-
-
-def same_expression(a: Node, b: Node) -> bool:
-    """Whether two expressions are written alike and have no side effects (so x*x >= 0)."""
-    if a != b:
-        return False
-    return not any(
-        t.data in ("assignment", "prefix", "postfix") or (t.data == "call" and
-                                                         callee_name(t) not in BUILTIN_FUNCTIONS)
-        for t in walk(a)
-    )  # fmt: skip
-
-
-def int_value(text: str) -> int | None:
-    text = text.rstrip("uU")
-    try:
-        if text.lower().startswith("0x"):
-            return int(text, 16)
-        if len(text) > 1 and text.startswith("0"):
-            return int(text, 8)
-        return int(text)
-    except ValueError:
-        return None
 
 
 # --- the model ----------------------------------------------------------------------------
@@ -503,7 +442,7 @@ class Model:
                 spec = next(c for c in member.children if is_tree(c, "type_specifier"))
                 for decl in member.children:
                     if is_tree(decl, "struct_declarator"):
-                        arrays = [_array_text(a) for a in decl.children[1:]]
+                        arrays = [array_text(a) for a in decl.children[1:]]
                         members[str(decl.children[0])] = spec_text(spec) + "".join(arrays)
             if name:
                 self.structs[name] = members
@@ -558,7 +497,7 @@ class Model:
             if not is_tree(decl, "declarator"):
                 continue
             name = str(decl.children[0])
-            arrays = [_array_text(c) for c in decl.children[1:] if is_tree(c, "array_specifier")]
+            arrays = [array_text(c) for c in decl.children[1:] if is_tree(c, "array_specifier")]
             dtype = base + "".join(arrays)
             init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
             value = Value(dtype)
@@ -656,7 +595,7 @@ class Model:
             letter = str(target.children[1])  # type: ignore[union-attr]
             if len(letter) != 1:
                 return env
-            component, target = _swizzle_index(letter), target.children[0]  # type: ignore
+            component, target = swizzle_index(letter), target.children[0]  # type: ignore
             target_field = letter
         if not is_tree(target, "variable"):
             return env
@@ -681,7 +620,7 @@ class Model:
             parts = old.parts(n)
             parts[component] = parts[component].meet(bound)
             narrowed = replace(old, comps=tuple(parts))
-        key = _var_key(other)
+        key = var_key(other)
         if key is not None and key[1] in env and key[1] != name:
             # x < y: y - x > 0 however y varies (while y keeps this value)
             narrowed = replace(narrowed, rel=(*narrowed.rel, (part, op, key[0], env[key[1]])))
@@ -713,23 +652,10 @@ def _passed(value: Value, arg: Node) -> Value:
     return value
 
 
-def _var_key(node: Node) -> tuple[str, str] | None:
-    """("y", "y") for a variable, ("s.w", "s") for one component of one: what a relation
-    names, and the variable whose value it is about."""
-    if is_tree(node, "variable"):
-        name = str(node.children[0])  # type: ignore[union-attr]
-        return name, name
-    if is_tree(node, "field") and is_tree(node.children[0], "variable"):  # type: ignore
-        letter = str(node.children[1])  # type: ignore[union-attr]
-        base = str(node.children[0].children[0])  # type: ignore[union-attr]
-        return (f"{base}.{letter}", base) if len(letter) == 1 else None
-    return None
-
-
 def _related(env: Env, a: Node, op: str, b: Node) -> bool:
     """Whether the environment records `a op b` (op "<" or "<="; "<" implies "<="), from
     a relation on either side, while both still hold the values the relation was made with."""
-    ka, kb = _var_key(a), _var_key(b)
+    ka, kb = var_key(a), var_key(b)
     if ka is None or kb is None:
         return False
     ops = ("<",) if op == "<" else ("<", "<=")
@@ -759,7 +685,7 @@ def _param(node: Tree) -> tuple[str, str, str]:
     )
     spec = next(c for c in node.children if is_tree(c, "type_specifier"))
     name = next((str(c) for c in node.children if isinstance(c, Token)), "")
-    arrays = [_array_text(c) for c in node.children if is_tree(c, "array_specifier")]
+    arrays = [array_text(c) for c in node.children if is_tree(c, "array_specifier")]
     return qualifier, spec_text(spec) + "".join(arrays), name  # type: ignore[arg-type]
 
 
@@ -1211,7 +1137,7 @@ class Evaluator:
         if swizzled is not None:
             unit = base.unit and len(name) == T.size(base.type) and len(set(name)) == len(name)
             parts = base.parts(T.size(base.type))
-            indices = [_swizzle_index(c) for c in name]
+            indices = [swizzle_index(c) for c in name]
             if max(indices) >= len(parts):  # `v2.z`: invalid, glslang reports it
                 return Value(swizzled)
             picked = tuple(parts[i] for i in indices)
@@ -1483,13 +1409,6 @@ def _as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
     if coeffs is None or len(atoms) < 2:
         return None
     return atoms[0], coeffs
-
-
-def _swizzle_index(letter: str) -> int:
-    for names in ("xyzw", "rgba", "stpq"):
-        if letter in names:
-            return names.index(letter)
-    return 0
 
 
 def _constructor_parts(ty: str, args: list[Value]) -> tuple[Interval, ...] | None:

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from lark import Tree
 
 from ...analysis.flow import function_flows, mask_names
-from ...analysis.model import call_args, root_variable
+from ...analysis.syntax import call_args, root_variable
 from ...context import LintContext, walk
 from ...finding import Finding
 from .. import Rule, register

@@ -23,7 +23,8 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
-from ...analysis.model import call_args, callee_name, is_tree, semantic_model
+from ...analysis.model import semantic_model
+from ...analysis.syntax import call_args, callee_name, is_tree
 from ...context import LintContext, Node, walk
 
 # --- tree shapes -----------------------------------------------------------------------------

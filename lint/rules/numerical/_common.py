@@ -10,8 +10,9 @@ from collections.abc import Iterator
 
 from lark import Token, Tree
 
-from ...analysis.model import Model, Value, callee_name
+from ...analysis.model import Model, Value
 from ...analysis.ranges import Interval
+from ...analysis.syntax import callee_name
 from ...context import LintContext
 from ...finding import Finding, Fix, Severity
 from .. import Rule

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.model import call_args, semantic_model
+from ...analysis.model import semantic_model
+from ...analysis.syntax import call_args
 from ...context import LintContext
 from ...finding import Finding
 from .. import register

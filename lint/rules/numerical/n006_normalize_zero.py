@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.model import call_args, semantic_model
+from ...analysis.model import semantic_model
 from ...analysis.ranges import Interval
+from ...analysis.syntax import call_args
 from ...analysis.types import size
 from ...context import LintContext
 from ...finding import Finding

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.model import Value, call_args, semantic_model
+from ...analysis.model import Value, semantic_model
 from ...analysis.ranges import Interval
+from ...analysis.syntax import call_args
 from ...context import LintContext
 from ...finding import Finding
 from .. import register

@@ -6,8 +6,9 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from ...analysis.model import Model, call_args, semantic_model
+from ...analysis.model import Model, semantic_model
 from ...analysis.ranges import Interval
+from ...analysis.syntax import call_args
 from ...context import LintContext
 from ...finding import Finding, Fix
 from .. import register

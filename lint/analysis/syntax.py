@@ -1,0 +1,102 @@
+"""Shapes of the parse tree that the analyses and the rules read: calls and their arguments,
+the variable an lvalue writes, type names, and whether two expressions are written alike."""
+
+from __future__ import annotations
+
+from lark import Token, Tree
+
+from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+from ..context import Node, walk
+
+# --- tree helpers -------------------------------------------------------------------------
+
+
+def is_tree(node: object, *kinds: str) -> bool:
+    return isinstance(node, Tree) and (not kinds or node.data in kinds)
+
+
+def callee_name(call: Tree) -> str | None:
+    """`f` for a call `f(...)`; None for a method call such as `v.length()`."""
+    head = call.children[0]
+    return str(head.children[0]) if is_tree(head, "variable") else None
+
+
+def call_args(call: Tree) -> list[Node]:
+    """The argument expressions of a call or constructor."""
+    for child in call.children[1:]:
+        if is_tree(child, "arguments"):
+            return list(child.children)
+    return []
+
+
+def root_variable(node: Node) -> str | None:
+    """`v` for `v`, `v.x`, `v[i].y`: the variable an lvalue writes."""
+    while is_tree(node, "field", "index"):
+        node = node.children[0]  # type: ignore[union-attr]
+    return str(node.children[0]) if is_tree(node, "variable") else None  # type: ignore[union-attr]
+
+
+def spec_text(spec: Tree) -> str:
+    """`vec3`, `float[3]` or a struct name for a type_specifier."""
+    head = spec.children[0]
+    if is_tree(head, "struct_specifier"):
+        name = next((str(c) for c in head.children if isinstance(c, Token)), "struct")
+    else:
+        name = str(head)
+    arrays = [c for c in spec.children[1:] if is_tree(c, "array_specifier")]
+    return name + "".join(array_text(a) for a in arrays)
+
+
+def array_text(spec: Tree) -> str:
+    sizes = [_literal_text(c) for c in spec.children]
+    return "".join(f"[{s}]" for s in sizes) if sizes else "[]"
+
+
+def _literal_text(node: Node) -> str:
+    if is_tree(node, "int_literal"):
+        return str(node.children[0])  # type: ignore[union-attr]
+    return ""
+
+
+def same_expression(a: Node, b: Node) -> bool:
+    """Whether two expressions are written alike and have no side effects (so x*x >= 0)."""
+    if a != b:
+        return False
+    return not any(
+        t.data in ("assignment", "prefix", "postfix") or (t.data == "call" and
+                                                         callee_name(t) not in BUILTIN_FUNCTIONS)
+        for t in walk(a)
+    )  # fmt: skip
+
+
+def int_value(text: str) -> int | None:
+    text = text.rstrip("uU")
+    try:
+        if text.lower().startswith("0x"):
+            return int(text, 16)
+        if len(text) > 1 and text.startswith("0"):
+            return int(text, 8)
+        return int(text)
+    except ValueError:
+        return None
+
+
+def var_key(node: Node) -> tuple[str, str] | None:
+    """("y", "y") for a variable, ("s.w", "s") for one component of one: what a relation
+    names, and the variable whose value it is about."""
+    if is_tree(node, "variable"):
+        name = str(node.children[0])  # type: ignore[union-attr]
+        return name, name
+    if is_tree(node, "field") and is_tree(node.children[0], "variable"):  # type: ignore
+        letter = str(node.children[1])  # type: ignore[union-attr]
+        base = str(node.children[0].children[0])  # type: ignore[union-attr]
+        return (f"{base}.{letter}", base) if len(letter) == 1 else None
+    return None
+
+
+def swizzle_index(letter: str) -> int:
+    for names in ("xyzw", "rgba", "stpq"):
+        if letter in names:
+            return names.index(letter)
+    return 0
