@@ -370,7 +370,7 @@ def cmd_catalog(args: argparse.Namespace) -> int:
 
 
 def cmd_catalog_show(args: argparse.Namespace) -> int:
-    from glint.compiler.catalog.show import show_source
+    from glint.compiler.compose.catalog_show import show_source
 
     sys.stdout.write(show_source(args.id))
     return 0

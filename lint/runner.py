@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import parse, preprocess, symbols_of
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 from .context import MAX_NESTING, LintContext
 from .finding import Finding
@@ -64,7 +65,7 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
         return ctx
     try:
         ctx.tree = parse(ctx.pre.text, file)
-        ctx.symbols = symbols_of(ctx.tree, ctx.pre)
+        ctx.symbols = symbols_of(ctx.tree, ctx.pre, provided=UNIFORM_NAMES)
     except InputError as exc:
         ctx.front_end_error = exc
     except RecursionError:

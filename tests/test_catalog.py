@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import pytest
 
-from glint.compiler.catalog.check import check_front_matter, compile_alone, snippet_symbols
 from glint.compiler.catalog.info import catalog_entries
 from glint.compiler.catalog.loader import Catalog, load_catalog, parse_snippet, snippets_root
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.errors import InputError
+from glint.compiler.verify.catalog_check import check_front_matter, compile_alone, snippet_symbols
 
 CATALOG = load_catalog()
 IDS = sorted(CATALOG.snippets)
@@ -92,9 +92,11 @@ def test_undeclared_call_is_caught() -> None:
 
 
 def test_entry_must_have_the_slot_prototype() -> None:
-    body = GGX_BODY.replace("float NoH, float a", "float NoH, float roughness").replace(
-        "a * a", "roughness * roughness"
-    ).replace("(a2 - 1.0)", "(a2 - 1.0)")
+    body = (
+        GGX_BODY.replace("float NoH, float a", "float NoH, float roughness")
+        .replace("a * a", "roughness * roughness")
+        .replace("(a2 - 1.0)", "(a2 - 1.0)")
+    )
     problems = messages(front('["distribution"]', '["PI"]') + body)
     assert problems == [
         "entry `float distribution(float NoH, float roughness)` must have the slot's "
@@ -140,7 +142,7 @@ def test_symbols_keep_the_file_lines() -> None:
         ("/* ---\nid = 'D.test'\n--- */\n", "front matter lacks"),
         (front("[]", "[]", "colour = 1\n"), "unknown front-matter key ['colour']"),
         (front("[]", "[]").replace('id = "D.test"', 'id = "D.other"'), "the folder is the slot"),
-        (front("[]", "[]", 'params = { K = { default = 1 } }\n'), "param 'K' needs a type"),
+        (front("[]", "[]", "params = { K = { default = 1 } }\n"), "param 'K' needs a type"),
     ],
 )
 def test_bad_front_matter(text: str, expected: str) -> None:

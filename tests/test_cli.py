@@ -49,8 +49,10 @@ def test_compose_to_unwritable_path_fails_cleanly(tmp_path: Path) -> None:
 
 def test_bad_scene_exit_1_names_the_key(tmp_path: Path) -> None:
     scene = tmp_path / "bad.toml"
-    scene.write_text('[[objects]]\nshape = "sphere"\nradius = "big"\nmaterial = "m"\n'
-                     '[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n')
+    scene.write_text(
+        '[[objects]]\nshape = "sphere"\nradius = "big"\nmaterial = "m"\n'
+        "[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n"
+    )
     result = run("compose", str(scene))
     assert result.returncode == 1
     assert_one_clear_line(result)
@@ -105,8 +107,17 @@ def test_validate_missing_file() -> None:
 @pytest.mark.render
 def test_render_scene_writes_png_and_json(tmp_path: Path) -> None:
     out = tmp_path / "default.png"
-    result = run("render", "snippets/scenes/default.toml", "-o", str(out), "--size", "96x54",
-                 "--time", "1", "--json")
+    result = run(
+        "render",
+        "snippets/scenes/default.toml",
+        "-o",
+        str(out),
+        "--size",
+        "96x54",
+        "--time",
+        "1",
+        "--json",
+    )
     assert result.returncode == 0, result.stderr
     report = json.loads(result.stdout)
     assert report["nan"] == 0 and report["inf"] == 0
@@ -135,8 +146,9 @@ def test_render_endless_loop_times_out(tmp_path: Path) -> None:
         f"    for (int i = 0; i >= 0; i += int(iTime + 1.0)) {{ {body} }}\n"
         "    c = vec4(x);\n}\n"
     )
-    result = run("render", str(shader), "-o", str(tmp_path / "loop.png"), "--timeout", "3",
-                 "--size", "64x64")
+    result = run(
+        "render", str(shader), "-o", str(tmp_path / "loop.png"), "--timeout", "3", "--size", "64x64"
+    )
     assert result.returncode == 1
     assert_one_clear_line(result)
     assert "did not finish within" in result.stderr

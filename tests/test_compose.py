@@ -96,7 +96,9 @@ def test_scene_code_emits_only_what_the_scene_uses() -> None:
 
 
 def test_several_lights_get_distinct_names() -> None:
-    text = BARE.replace("[effects]", """
+    text = BARE.replace(
+        "[effects]",
+        """
 [[lights]]
 type = "directional"
 direction = [1.0, 1.0, 0.0]
@@ -111,7 +113,8 @@ type = "sky"
 [[lights]]
 type = "sky"
 intensity = 0.5
-[effects]""")
+[effects]""",
+    )
     shader = compose_scene(parse_scene(text))
     for name in ("SUN_DIR", "LIGHT_DIR", "BACK_DIR", "SKY_COLOR", "SKY1_COLOR"):
         assert f"#define {name} " in shader.text
@@ -120,7 +123,7 @@ intensity = 0.5
 
 
 def test_back_light_without_a_sun_needs_a_direction() -> None:
-    text = BARE.replace("[effects]", "[[lights]]\ntype = \"back\"\n[effects]")
+    text = BARE.replace("[effects]", '[[lights]]\ntype = "back"\n[effects]')
     with pytest.raises(InputError, match=r"lights\[0\]\.direction: a back light needs"):
         compose_scene(parse_scene(text))
 

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from glint.compiler.catalog.loader import glsl_value, load_catalog
+from glint.compiler.compose.snippet_evaluation import evaluate_snippet
 from glint.compiler.compose.spherical_harmonics import (
     PARAM_NAMES,
     project_sh9,
@@ -22,7 +23,6 @@ from glint.compiler.verify.references.environment import (
     gradient_environment,
     irradiance_over_pi,
 )
-from glint.compiler.verify.snippets import evaluate_snippet
 
 CATALOG = load_catalog()
 RNG = np.random.default_rng(3)

@@ -13,10 +13,11 @@ import pytest
 
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.cli import main
 from glint.compiler.compose.explain import explain
 from glint.compiler.compose.pipeline import compose_scene
-from glint.compiler.compose.planner import TIERS, plan
+from glint.compiler.compose.planner import plan
 from glint.compiler.compose.scene import Scene, load_scene
 
 CATALOG = load_catalog()

@@ -130,9 +130,7 @@ def test_real_catalog_resolves_every_requirement_of_every_snippet() -> None:
         "tonemap": "tonemap.none",
         "output": "output.srgb",
     }
-    scene_symbols = generated(
-        "scene.stub", ["map", "SUN_DIR", "SUN_COLOR", "materialAt"], [], ""
-    )
+    scene_symbols = generated("scene.stub", ["map", "SUN_DIR", "SUN_COLOR", "materialAt"], [], "")
     for snip in catalog.snippets.values():
         choices_here = dict(choices)
         if snip.slot in choices_here:

@@ -46,6 +46,7 @@ from pathlib import Path
 import numpy as np
 
 from glint.compiler.bench.variants import is_cpu_renderer
+from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.compose.pipeline import compose_scene
 from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import EnvironmentProblem, InputError
@@ -54,7 +55,6 @@ from glint.compiler.render.images import flip_error
 from glint.compiler.target.glslang import spirv_instruction_count
 
 TEMPLATE = "template.glsl"
-TIERS = ("fast", "balanced", "reference")
 REFERENCE_TIER = "reference"
 TEMPLATE_ROW = "template"
 TEMPLATE_SCENE = "default"  # the example scene that the template renders

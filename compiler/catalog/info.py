@@ -6,11 +6,14 @@ from typing import Any
 
 from glint.compiler.catalog.loader import Snippet, load_catalog
 from glint.compiler.glsl.symbols import analyze
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 
 def signatures(snippet: Snippet) -> list[str]:
     """GLSL prototypes of the functions a snippet provides, as its parsed body defines them."""
-    symbols = analyze(snippet.body, snippet.relpath, predefined=_param_defaults(snippet))
+    symbols = analyze(
+        snippet.body, snippet.relpath, predefined=_param_defaults(snippet), provided=UNIFORM_NAMES
+    )
     provided = set(snippet.provides)
     return [f.prototype for f in symbols.functions if f.name in provided]
 

@@ -15,6 +15,7 @@ from glint.compiler.catalog.loader import Catalog, glsl_value
 from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.units import GENERATED, Unit
 from glint.compiler.target import shadertoy
+from glint.compiler.target.sourcemap import source_marker
 
 TARGETS = shadertoy.TARGETS
 
@@ -71,11 +72,6 @@ def emit(
         parts.append(f"{source_marker(unit.origin, line)}\n{body}\n")
     text = "\n".join(parts)
     return shadertoy.wrap_for(target, text)
-
-
-def source_marker(origin: str, line: int) -> str:
-    """The comment saying that the next line is line `line` of `origin` (see sourcemap.py)."""
-    return f"// source: {origin}:{line}"
 
 
 def _leading_blank_lines(body: str) -> int:

@@ -8,6 +8,7 @@ from importlib.metadata import version as package_version
 from pathlib import Path
 
 from glint.compiler.catalog.loader import Snippet, load_catalog
+from glint.compiler.compose.bake import bake
 from glint.compiler.compose.emitter import Shader, emit, parameter_block
 from glint.compiler.compose.planner import plan
 from glint.compiler.compose.reachability import prune_unreachable
@@ -38,6 +39,7 @@ def compose_scene(
     """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements."""
     catalog = load_catalog()
     the_plan = plan(scene, catalog, tier, overrides, budget)
+    the_plan = replace(the_plan, params=bake(scene, the_plan))
     normal = catalog.get(the_plan.choices["normal"])
     code = generate(scene, normal_in_uniform_flow=uses_derivatives(normal))
     # The constants come first and provide the light names that snippets may require (SUN_DIR);

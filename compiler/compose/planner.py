@@ -12,25 +12,22 @@ fails loudly if the generated code reaches a slot the planner did not expect.
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from importlib import resources
 
-from glint.compiler.catalog.loader import Catalog, glsl_value
+from glint.compiler.catalog.loader import Catalog
 from glint.compiler.catalog.measurements import VariantCost, load_measurements
 from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.catalog.tiers import tier_table
 from glint.compiler.compose.budget import (
     calls_per_pixel,
     candidates_for,
     estimated_cost,
     within_budget,
 )
-from glint.compiler.compose.scene import LookAtCamera, OrbitCamera, Scene
+from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.scene_slots import SlotUse, slot_uses
 from glint.compiler.errors import InputError
-
-TIERS = ("fast", "balanced", "reference")
 
 
 @dataclass
@@ -40,11 +37,6 @@ class Plan:
     reasons: dict[str, str] = field(default_factory=dict)  # slot -> why that variant
     params: dict[str, str] = field(default_factory=dict)  # #define name -> GLSL value
     uses: dict[str, SlotUse] = field(default_factory=dict)  # every slot: in or out, and why
-
-
-def tier_table() -> dict[str, dict[str, str]]:
-    text = (resources.files("glint.snippets") / "tiers.toml").read_text(encoding="utf-8")
-    return tomllib.loads(text)
 
 
 def plan(
@@ -103,9 +95,6 @@ def plan(
         if not use.used:
             result.choices.pop(slot, None)
             result.reasons.pop(slot, None)
-    result.params = scene_params(scene)
-    if result.choices.get("irradiance") == "irradiance.sh9" and _has_environment_light(scene):
-        result.params |= _sh9_params(result.choices["env"], result.params)
     return result
 
 
@@ -141,23 +130,6 @@ def _rough_materials(scene: Scene) -> list[str]:
     ]
 
 
-def _has_environment_light(scene: Scene) -> bool:
-    return any(light.type == "environment" for light in scene.lights)
-
-
-def _sh9_params(env_id: str, params: dict[str, str]) -> dict[str, str]:
-    """SH_C0..SH_C8 of the scene's environment: the env snippet, with the scene's parameter
-    values, run on the CPU and projected onto nine spherical harmonics."""
-    from glint.compiler.compose.spherical_harmonics import (
-        project_sh9,
-        sh9_params,
-        snippet_environment,
-    )
-
-    coefficients = project_sh9(snippet_environment(env_id, params))
-    return {name: glsl_value(row, "vec3") for name, row in sh9_params(coefficients).items()}
-
-
 def _check_override(catalog: Catalog, source: str, slot: str, variant: str) -> None:
     if slot not in SLOTS or SLOTS[slot].many:
         one_variant = [name for name, s in SLOTS.items() if not s.many]
@@ -168,26 +140,3 @@ def _check_override(catalog: Catalog, source: str, slot: str, variant: str) -> N
             f"{source}.{slot}: unknown variant {variant!r}; variants of {slot}: "
             + ", ".join(variants)
         )
-
-
-def scene_params(scene: Scene) -> dict[str, str]:
-    """Values of snippet parameters that the scene sets; snippets' defaults cover the rest."""
-    params: dict[str, str] = {}
-    camera = scene.camera
-    if isinstance(camera, OrbitCamera):
-        params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
-        params["CAMERA_RADIUS"] = glsl_value(camera.radius, "float")
-        params["CAMERA_HEIGHT"] = glsl_value(camera.height, "float")
-        params["CAMERA_SPEED"] = glsl_value(camera.speed, "float")
-        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
-    elif isinstance(camera, LookAtCamera):
-        params["CAMERA_POSITION"] = glsl_value(camera.position, "vec3")
-        params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
-        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
-    if scene.environment is not None:
-        params["ENV_TOP"] = glsl_value(scene.environment.top, "vec3")
-        params["ENV_BOTTOM"] = glsl_value(scene.environment.bottom, "vec3")
-    if scene.medium is not None:
-        params["MEDIUM_EXTINCTION"] = glsl_value(scene.medium.extinction, "vec3")
-        params["MEDIUM_INSCATTER"] = glsl_value(scene.medium.inscatter, "vec3")
-    return params

@@ -20,9 +20,10 @@ from dataclasses import dataclass, replace
 
 from lark import Token, Tree
 
-from glint.compiler.compose.emitter import source_marker
 from glint.compiler.compose.units import GENERATED, Unit
 from glint.compiler.glsl import parse_source, reachable, symbols_of
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
+from glint.compiler.target.sourcemap import source_marker
 
 ROOTS = frozenset({"mainImage"})
 
@@ -53,7 +54,8 @@ def prune_unreachable(units: list[Unit], roots: frozenset[str] = ROOTS) -> list[
         lines += unit.body.split("\n")
     # One program, so that a name used in one unit and defined in another is seen as such.
     tree, pre = parse_source("\n".join(lines), "<composed>")
-    keep = reachable(symbols_of(tree, pre), set(roots) | _conditional_names(lines))
+    symbols = symbols_of(tree, pre, provided=UNIFORM_NAMES)
+    keep = reachable(symbols, set(roots) | _conditional_names(lines))
     # The preprocessor blanks comments and directives, keeping one line per line.
     code = pre.text.split("\n")
     comments = {

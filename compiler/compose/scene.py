@@ -22,8 +22,6 @@ NonNegative = Annotated[float, Field(strict=True, ge=0.0, allow_inf_nan=False)]
 Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
 Color = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
 
-TIERS = ("fast", "balanced", "reference")
-
 
 class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True)

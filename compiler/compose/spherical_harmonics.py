@@ -18,6 +18,8 @@ from functools import cache
 
 import numpy as np
 
+from glint.compiler.compose.snippet_evaluation import evaluate_snippet
+
 Environment = Callable[[np.ndarray], np.ndarray]
 
 # Real SH basis constants (Sloan 2008, "Stupid Spherical Harmonics Tricks", appendix A2),
@@ -96,7 +98,6 @@ def snippet_environment(
 ) -> Environment:
     """A catalog `env` snippet as a numpy environment, evaluated by compiler/evaluator at float64;
     `params` overrides its parameters as GLSL text, e.g. {"ENV_TOP": "vec3(1.0)"}."""
-    from glint.compiler.verify.snippets import evaluate_snippet
 
     def radiance(dirs: np.ndarray) -> np.ndarray:
         out = evaluate_snippet(snippet_id, args=[dirs], dtype=np.float64, params=params)

@@ -6,8 +6,9 @@ from __future__ import annotations
 
 from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.catalog.tiers import tier_table
 from glint.compiler.compose.emitter import emit, parameter_block
-from glint.compiler.compose.planner import Plan, tier_table
+from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.units import generated
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -21,8 +21,11 @@ def evaluate(
     predefined: dict[str, str] | None = None,
     filename: str = "<input>",
     externals: dict[str, Any] | None = None,
+    external_types: Mapping[str, str] | None = None,
 ) -> Any:
     """Call `function` of `source` with `args` (by parameter name or position), vectorised.
+    `externals` give what the source uses and does not define (values or functions),
+    `external_types` their GLSL types where the source does not declare them.
 
     A float is an array of lanes (any shape); a vecK an array (..., K) or a sequence of K lane
     arrays; a struct a dict of its fields. The result comes back the same way, broadcast to
@@ -31,7 +34,7 @@ def evaluate(
     """
     if np.dtype(dtype).type not in FLOAT_DTYPES:
         raise ValueError(f"dtype must be float16, float32 or float64, not {dtype}")
-    module = Interpreter(source, filename, predefined, dtype, externals)
+    module = Interpreter(source, filename, predefined, dtype, externals, external_types)
     fn = module.functions.get(function)
     if not fn:
         raise KeyError(f"{filename}: no function '{function}'")

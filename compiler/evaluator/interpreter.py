@@ -8,14 +8,13 @@ lane is active, so uniform control flow costs what it would on the GPU.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from lark import Token, Tree
 
-from glint.compiler.catalog.slots import SCENE_SYMBOLS
 from glint.compiler.evaluator.builtins import UNSUPPORTED, call_builtin
 from glint.compiler.evaluator.expressions import ExpressionEvaluator, Frame, Loop
 from glint.compiler.evaluator.values import (
@@ -55,8 +54,12 @@ class Interpreter(ExpressionEvaluator):
         predefined: dict[str, str] | None = None,
         dtype: Any = np.float32,
         externals: dict[str, Any] | None = None,
+        external_types: Mapping[str, str] | None = None,
     ) -> None:
         tree, self.pre = parse_source(source, filename, predefined)
+        # GLSL types of externals the module declares nowhere (a scene's `map`, `SUN_DIR`); an
+        # external without one is typed by the shape of what it gives back
+        self.external_types = dict(external_types or {})
         self.text = self.pre.text
         self.ft = np.dtype(dtype).type
         self.structs = {}
@@ -195,7 +198,7 @@ class Interpreter(ExpressionEvaluator):
 
     def _call_external(self, name: str, args: list[AnyValue], node: Tree) -> AnyValue:
         result = self.externals[name](*[to_numpy(a) for a in args])
-        type_ = self.prototypes.get(name) or _scene_type(name)
+        type_ = self.prototypes.get(name) or self.external_types.get(name)
         if type_ is None:  # guess: one more axis than the lanes is a vector
             arr = np.asarray(result)
             lane_dims = max(
@@ -212,7 +215,7 @@ class Interpreter(ExpressionEvaluator):
     def _external_value(self, name: str, value: Any) -> AnyValue:
         if isinstance(value, Value | StructValue):
             return value
-        type_ = _scene_type(name)
+        type_ = self.external_types.get(name)
         arr = np.asarray(value)
         if type_ is None:
             type_ = f"vec{arr.shape[-1]}" if arr.ndim == 1 and 2 <= arr.shape[0] <= 4 else "float"
@@ -391,12 +394,3 @@ def _qualifiers(node: Tree) -> set[str]:
         (c for c in node.children if isinstance(c, Tree) and c.data == "type_qualifier"), None
     )
     return {str(t) for t in quals.children if isinstance(t, Token)} if quals is not None else set()
-
-
-def _scene_type(name: str) -> str | None:
-    """Types of the scene's symbols, from their descriptions in slots.SCENE_SYMBOLS."""
-    text = SCENE_SYMBOLS.get(name)
-    if text is None:
-        return None
-    first = text.split()[0]
-    return first if first in ("float", "int", "vec3", "vec2", "vec4", "bool") else None

@@ -1,9 +1,9 @@
-"""Names GLSL ES 3.00 and ShaderToy provide, which a module therefore never has to define."""
+"""Names GLSL ES 3.00 provides, which a module therefore never has to define. What a target adds
+(ShaderToy's uniforms) is the target's to say: see `symbols_of(..., provided=...)`."""
 
 from __future__ import annotations
 
 from glint.compiler.glsl.keywords import BUILTIN_TYPES, QUALIFIER_GROUPS, words
-from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 # Section 8 of the GLSL ES 3.00 spec, in its order: angle/trig, exponential, common,
 # floating-point packing, geometric, matrix, vector relational, texture, derivatives.
@@ -49,12 +49,11 @@ LANGUAGE_WORDS: frozenset[str] = (
 
 
 def is_builtin(name: str) -> bool:
-    """Whether `name` is provided by GLSL ES 3.00 or ShaderToy rather than by user code."""
+    """Whether `name` is provided by GLSL ES 3.00 rather than by user code."""
     return (
         name in BUILTIN_FUNCTIONS
         or name in BUILTIN_VARIABLES
         or name in LANGUAGE_WORDS
-        or name in UNIFORM_NAMES
         or name.startswith("gl_")
         or name in ("__LINE__", "__FILE__", "__VERSION__", "GL_ES", "GL_FRAGMENT_PRECISION_HIGH")
     )

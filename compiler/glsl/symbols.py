@@ -8,7 +8,7 @@ while a macro defined in *another* snippet stays an identifier and so becomes `f
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from lark import Token, Tree
@@ -51,16 +51,21 @@ class ModuleSymbols:
 
 
 def analyze(
-    source: str, filename: str = "<input>", predefined: dict[str, str] | None = None
+    source: str,
+    filename: str = "<input>",
+    predefined: dict[str, str] | None = None,
+    provided: Collection[str] = (),
 ) -> ModuleSymbols:
-    """Symbols of one module (a snippet or a whole shader)."""
+    """Symbols of one module (a snippet or a whole shader). `provided`: names the target
+    defines (ShaderToy's uniforms), which are then never free."""
     tree, pre = parse_source(source, filename, predefined)
-    return symbols_of(tree, pre)
+    return symbols_of(tree, pre, provided)
 
 
-def symbols_of(tree: Tree, pre: Preprocessed) -> ModuleSymbols:
-    """Symbols of a tree already parsed from `pre`."""
-    return _Collector(pre).module(tree)
+def symbols_of(tree: Tree, pre: Preprocessed, provided: Collection[str] = ()) -> ModuleSymbols:
+    """Symbols of a tree already parsed from `pre`. The front end knows GLSL's own names
+    only; what a target adds comes in `provided`."""
+    return _Collector(pre, frozenset(provided)).module(tree)
 
 
 def reachable(symbols: ModuleSymbols, roots: set[str]) -> set[str]:
@@ -78,14 +83,14 @@ def reachable(symbols: ModuleSymbols, roots: set[str]) -> set[str]:
 class _Scope:
     """Names declared in nested blocks of a function body."""
 
-    def __init__(self) -> None:
-        self.frames: list[set[str]] = [set()]
+    def __init__(self, provided: frozenset[str] = frozenset()) -> None:
+        self.frames: list[set[str] | frozenset[str]] = [provided, set()]
 
     def __contains__(self, name: str) -> bool:
         return any(name in frame for frame in self.frames)
 
     def declare(self, name: str) -> None:
-        self.frames[-1].add(name)
+        self.frames[-1].add(name)  # type: ignore[union-attr]
 
 
 @dataclass
@@ -95,8 +100,9 @@ class _Refs:
 
 
 class _Collector:
-    def __init__(self, pre: Preprocessed) -> None:
+    def __init__(self, pre: Preprocessed, provided: frozenset[str]) -> None:
         self.pre = pre
+        self.provided = provided
         self.functions: list[FunctionDef] = []
         self.structs: list[str] = []
         self.globals: list[str] = []
@@ -118,7 +124,7 @@ class _Collector:
         defined |= set(macros)
         calls = set(global_refs.calls).union(*(f.calls for f in self.functions))
         needed = set(calls).union(*self.deps.values())
-        free = {name for name in needed - defined if not is_builtin(name)}
+        free = {name for name in needed - defined - self.provided if not is_builtin(name)}
         return ModuleSymbols(
             functions=self.functions,
             structs=self.structs,
@@ -135,7 +141,7 @@ class _Collector:
     def _function(self, node: Tree) -> None:
         proto, body = node.children
         ret_spec, name, params = _prototype_parts(proto)
-        scope = _Scope()
+        scope = _Scope(self.provided)
         refs = _Refs()
         _walk(ret_spec, scope, refs)
         param_list = [_param(p) for p in params]
@@ -166,17 +172,17 @@ class _Collector:
         struct = _inline_struct(node.children[0])
         if struct is not None:
             struct_name = _first_token(struct, "IDENTIFIER")
-            _walk(struct, _Scope(), type_refs)
+            _walk(struct, _Scope(self.provided), type_refs)
             if struct_name is not None:
                 self.structs.append(struct_name)
                 self.deps[struct_name] = set(type_refs.uses)
                 type_refs = _Refs(uses={struct_name})
         else:
-            _walk(node.children[0], _Scope(), type_refs)
+            _walk(node.children[0], _Scope(self.provided), type_refs)
         for decl in _children(node, "declarator"):
             refs = _Refs(set(type_refs.calls), set(type_refs.uses))
             for part in decl.children[1:]:
-                _walk(part, _Scope(), refs)
+                _walk(part, _Scope(self.provided), refs)
             refs.uses |= self._expanded(decl)
             name = str(decl.children[0])
             self.globals.append(name)
@@ -196,7 +202,7 @@ class _Collector:
     def _macros(self) -> list[str]:
         own = [m for m in self.pre.defines.values() if m.file != "<predefined>"]
         for macro in own:
-            self.deps[macro.name] = _macro_refs(macro)
+            self.deps[macro.name] = _macro_refs(macro) - self.provided
         return [m.name for m in own]
 
     def _expanded(self, node: Tree) -> set[str]:

@@ -15,6 +15,11 @@ MARKER = re.compile(r"^// source: (\S+):(\d+)\s*$")
 GENERATED = "<generated>"
 
 
+def source_marker(origin: str, line: int) -> str:
+    """The comment saying that the next line is line `line` of `origin` (MARKER reads it)."""
+    return f"// source: {origin}:{line}"
+
+
 @dataclass(frozen=True)
 class Origin:
     """Where one line of a composed shader came from (1-based line)."""

@@ -11,9 +11,9 @@ from typing import Any
 import numpy as np
 
 from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.compose.snippet_evaluation import entry_of, evaluate_snippet, snippet_source
 from glint.compiler.evaluator.errors import UnsupportedError
 from glint.compiler.evaluator.interpreter import Interpreter
-from glint.compiler.verify.snippets import entry_of, evaluate_snippet, snippet_source
 
 DTYPES: dict[str, Any] = {"float16": np.float16, "float32": np.float32, "float64": np.float64}
 _DIRECTIONS = {"dir", "rd", "n", "N", "L", "V"}

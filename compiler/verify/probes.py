@@ -21,6 +21,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.glsl.symbols import FunctionDef, analyze
 from glint.compiler.render import render, render_full
 from glint.compiler.target import shadertoy
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 PROBE_PRELUDE = (
     "#version 300 es\n"
@@ -69,7 +70,7 @@ class Argument:
 def snippet_function(snippet: Snippet, name: str) -> FunctionDef:
     """The function `name` as defined in the snippet's own body. Only its own: a function it
     gets from a required snippet belongs to that snippet and is probed there."""
-    functions = analyze(snippet.body, snippet.relpath).functions
+    functions = analyze(snippet.body, snippet.relpath, provided=UNIFORM_NAMES).functions
     found = next((f for f in functions if f.name == name), None)
     if found is None:
         defined = ", ".join(f.name for f in functions) or "none"

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.compose.snippet_evaluation import evaluate_snippet
 from glint.compiler.verify.precision import default_grid, precision_report, survey
-from glint.compiler.verify.snippets import evaluate_snippet
 
 
 def ggx(noh: np.ndarray, a: float, dtype: object) -> np.ndarray:

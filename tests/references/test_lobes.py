@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.compose.snippet_evaluation import evaluate_snippet
 from glint.compiler.verify.references import REFERENCES
 from glint.compiler.verify.references.geometry import Lobe, directional_albedo, dots
-from glint.compiler.verify.snippets import evaluate_snippet
 
 CATALOG = load_catalog()
 LOBES = sorted(s.id for s in CATALOG.snippets.values() if s.slot in ("diffuse", "specular"))

@@ -15,6 +15,7 @@ from glint.compiler.catalog.slots import SCENE_SYMBOLS, SLOTS
 from glint.compiler.compose.standalone import standalone_source
 from glint.compiler.glsl.symbols import ModuleSymbols, analyze
 from glint.compiler.target.glslang import Diagnostic, validate
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 
 @dataclass
@@ -29,7 +30,7 @@ class Problem:
 def snippet_symbols(snippet: Snippet) -> ModuleSymbols:
     """The parsed body, with line numbers of the snippet file."""
     source = f"#line {snippet.body_line}\n{snippet.body}"
-    return analyze(source, snippet.relpath)
+    return analyze(source, snippet.relpath, provided=UNIFORM_NAMES)
 
 
 def check_front_matter(snippet: Snippet, catalog: Catalog) -> list[Problem]:
@@ -87,4 +88,3 @@ def check_catalog(catalog: Catalog | None = None, compile: bool = True) -> list[
         if compile:
             problems += [str(d) for d in compile_alone(snippet, catalog) if d.severity == "error"]
     return problems
-

@@ -13,6 +13,14 @@ from glint.compiler.compose.standalone import standalone_choices
 from glint.compiler.compose.units import from_snippet, generated
 from glint.compiler.evaluator.api import evaluate
 
+# GLSL types of the scene's symbols, from their descriptions in slots.SCENE_SYMBOLS
+# ("vec3 unit direction towards the sun" -> vec3): externals standing in for them get these.
+SCENE_TYPES: dict[str, str] = {
+    name: text.split()[0]
+    for name, text in SCENE_SYMBOLS.items()
+    if text.split()[0] in ("float", "int", "vec3", "vec2", "vec4", "bool")
+}
+
 
 def snippet_units(snippet_id: str, catalog: Catalog | None = None) -> list[Snippet]:
     """The snippet and everything it requires, dependencies first, resolved as the composer
@@ -65,4 +73,5 @@ def evaluate_snippet(
         predefined=predefined,
         filename=f"<{snippet_id}>",
         externals=externals,
+        external_types=SCENE_TYPES,
     )
