@@ -3,7 +3,8 @@ value ranges of expressions) and data flow."""
 
 from __future__ import annotations
 
-from .model import Model, Value, semantic_model
+from .model import Model, semantic_model
 from .ranges import Interval
+from .values import Value
 
 __all__ = ["Interval", "Model", "Value", "semantic_model"]

@@ -15,17 +15,15 @@ follow makes it quieter, never noisier.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
-from itertools import compress
-from operator import is_not
 
 from lark import Token, Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 from glint.compiler.glsl.keywords import words
 
-from ..context import LintContext, tokens, walk
+from ..context import LintContext, walk
 from . import types as T
 from .ranges import (
     BOOL,
@@ -55,6 +53,7 @@ from .ranges import (
     step_range,
     tan_range,
 )
+from .scopes import Scopes, join_scopes, widen
 from .syntax import (
     array_text,
     call_args,
@@ -67,82 +66,14 @@ from .syntax import (
     swizzle_index,
     var_key,
 )
+from .values import Comps, Env, Value
 
 Node = Tree | Token
-Env = Mapping[str, "Value"]
-
-
-@dataclass(frozen=True)
-class Value:
-    """What the model knows about a value: GLSL type, range (hull of the components), whether
-    it is a unit vector, and its origin: the builtin that produced it ("dot", "length",
-    "cross" ...) or "sum"/"difference" of two unit vectors. `zero` says that 0 is reached on
-    evidence (a constant 0, max(x, 0.0), a length, a product with such a factor), not merely
-    inside a range widened by interval arithmetic: (0.5 - x) * x is in [0, inf) for x in
-    [0, 0.5] without being 0 anywhere the author cares about."""
-
-    type: str | None = None
-    range: Interval = UNKNOWN
-    unit: bool = False
-    origin: str | None = None
-    zero: bool = False
-    comps: tuple[Interval, ...] | None = None  # per component of a vector, when known
-    # Where the evidence of a 0 comes from, when it is far from the expression (a parameter
-    # given an unclamped dot product at a call site): for messages.
-    why: str | None = None
-    # Relations to other variables (`x < y` inside `if (x < y)`): (part, op, name, value)
-    # says self (or its component `part`, "" for the whole) op name, while the variable
-    # `name` names (or is the base of) still holds that very Value object.
-    rel: tuple[tuple[str, str, str, Value], ...] = ()
-    # The variables (name, value) this vector is known orthogonal to: a cross product's
-    # operands, and so normalize(cross(a, b)).
-    ortho: tuple[tuple[str, Value], ...] = ()
-
-    def __post_init__(self) -> None:
-        if self.comps is not None:  # the range is always the hull of the components
-            object.__setattr__(self, "range", hull_all(self.comps))
-
-    def parts(self, n: int) -> list[Interval]:
-        """n component ranges: the known ones, else the hull for each (a scalar broadcasts)."""
-        if self.comps is not None and len(self.comps) == n:
-            return list(self.comps)
-        return [self.range] * n
-
-    def join(self, other: Value) -> Value:
-        comps = None
-        if (
-            self.comps is not None
-            and other.comps is not None
-            and (len(self.comps) == len(other.comps))
-        ):
-            comps = tuple(a.hull(b) for a, b in zip(self.comps, other.comps, strict=True))
-        return Value(
-            self.type if self.type == other.type else None,
-            self.range.hull(other.range),
-            self.unit and other.unit,
-            self.origin if self.origin == other.origin else None,
-            self.zero or other.zero,
-            comps,
-            self.why or other.why,
-            _common_facts(self.rel, other.rel),
-            _common_facts(self.ortho, other.ortho),
-        )
-
-    def unknown(self) -> Value:
-        """The same variable, nothing known about its value."""
-        return Value(self.type)
 
 
 # The largest framebuffer or texture side a GPU offers: a resolution is finite, so a positive
 # constant over it (2.0 / iResolution.y, a pixel's width) is strictly positive.
 MAX_RESOLUTION = 16384.0
-
-
-def _common_facts(a: tuple, b: tuple) -> tuple:  # type: ignore[type-arg]
-    """The facts that hold on both paths (the same fact about the very same value)."""
-    if not a or not b:
-        return ()
-    return tuple(f for f in a if any(f[:-1] == g[:-1] and f[-1] is g[-1] for g in b))
 
 
 # ShaderToy's uniforms: times and counts never go below zero, a resolution is at least a pixel.
@@ -227,128 +158,6 @@ class _Loop:
     switch: bool = False  # a switch takes `break` but not `continue`
     breaks: list[Scopes] = field(default_factory=list)
     continues: list[Scopes] = field(default_factory=list)
-
-
-class Scopes:
-    """Variables in scope during the forward pass: a stack of frames, and whether the code
-    here is reachable (after return/break/continue/discard it is not)."""
-
-    def __init__(self, frames: list[dict[str, Value]] | None = None, dead: bool = False):
-        self.frames = frames if frames is not None else [{}]
-        self.dead = dead
-
-    def copy(self) -> Scopes:
-        return Scopes([dict(f) for f in self.frames], self.dead)
-
-    def flat(self) -> dict[str, Value]:
-        out: dict[str, Value] = {}
-        for frame in self.frames:
-            out.update(frame)
-        return out
-
-    def env_for(self, expr: Node) -> dict[str, Value]:
-        """The variables in scope that `expr` names: all an evaluation of it can read.
-
-        The model keeps each expression's environment for later queries (`record`). A copy of
-        every variable in scope (`flat`) per expression made the analysis quadratic in time
-        and memory on long functions (a chain of 1000 declarations kept 1000 copies of up to
-        1000 variables); the names an expression contains are few."""
-        wanted = {str(token) for token in tokens(expr)}
-        env: dict[str, Value] = {}
-        for frame in reversed(self.frames):  # the innermost declaration of a name wins
-            if wanted.isdisjoint(frame):
-                continue
-            found = wanted & frame.keys()
-            for name in found:
-                env[name] = frame[name]
-            wanted -= found
-            if not wanted:
-                break
-        return env
-
-    def push(self) -> None:
-        self.frames.append({})
-
-    def pop(self) -> None:
-        self.frames.pop()
-
-    def lookup(self, name: str) -> Value | None:
-        for frame in reversed(self.frames):
-            if name in frame:
-                return frame[name]
-        return None
-
-    def declare(self, name: str, value: Value) -> None:
-        self.frames[-1][name] = value
-
-    def assign(self, name: str, value: Value) -> None:
-        for frame in reversed(self.frames):
-            if name in frame:
-                frame[name] = value
-                return
-
-    def become(self, other: Scopes) -> None:
-        self.frames, self.dead = other.frames, other.dead
-
-
-def join_scopes(items: Sequence[Scopes]) -> Scopes:
-    """The state after control flow merges: per variable, the join of every live path. Frames
-    deeper than the shallowest path (blocks left by `break`) are out of scope there."""
-    live = [s for s in items if not s.dead]
-    if not live:
-        out = items[0].copy()
-        out.dead = True
-        return out
-    depth = min(len(s.frames) for s in live)
-    frames: list[dict[str, Value]] = []
-    for i in range(depth):
-        first = live[0].frames[i]
-        if not first:  # a block that declares nothing (a name must be on every path)
-            frames.append({})
-            continue
-        others = [s.frames[i] for s in live[1:]]
-        names = list(first)
-        if all(list(other) == names for other in others):
-            # The paths are copies of one state: the same names, and mostly the very same
-            # Value objects (a branch assigns a few variables). Find the names whose objects
-            # differ with C-level iteration and join only those; a Python-level pass over every
-            # variable in scope at each merge was quadratic in long code.
-            changed: dict[str, list[Value]] = {}
-            for other in others:
-                for name in compress(names, map(is_not, first.values(), other.values())):
-                    changed.setdefault(name, [first[name]]).append(other[name])
-            frame = dict(first)
-            for name, values in changed.items():
-                frame[name] = _join_values(values)
-        else:
-            frame = {}
-            for name in names:
-                values = [other.get(name) for other in others]
-                if None not in values:
-                    frame[name] = _join_values([first[name], *values])  # type: ignore[list-item]
-        frames.append(frame)
-    return Scopes(frames)
-
-
-def _join_values(values: list[Value]) -> Value:
-    """The join of the values, each distinct object once (the join is idempotent)."""
-    joined, seen = values[0], {id(values[0])}
-    for value in values[1:]:
-        if id(value) not in seen:
-            seen.add(id(value))
-            joined = joined.join(value)
-    return joined
-
-
-def widen(scopes: Scopes, names: set[str], keep_flags: bool = True) -> Scopes:
-    """The variables `names` with unknown ranges; unit and origin kept unless told not to
-    (a loop's later passes take them away where the body breaks them)."""
-    out = scopes.copy()
-    for frame in out.frames:
-        for name in names & frame.keys():
-            v = frame[name]
-            frame[name] = Value(v.type, UNKNOWN, v.unit, v.origin) if keep_flags else Value(v.type)
-    return out
 
 
 class Model:
@@ -1432,9 +1241,6 @@ def _sum_of(term: Interval, n: int) -> Interval:
     if n:
         return term.scale(float(n))
     return hull_all([term.scale(float(k)) for k in range(1, 5)])
-
-
-Comps = tuple[Interval, ...] | None
 
 
 def _builtin(

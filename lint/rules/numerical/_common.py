@@ -10,9 +10,10 @@ from collections.abc import Iterator
 
 from lark import Token, Tree
 
-from ...analysis.model import Model, Value
+from ...analysis.model import Model
 from ...analysis.ranges import Interval
 from ...analysis.syntax import callee_name
+from ...analysis.values import Value
 from ...context import LintContext
 from ...finding import Finding, Fix, Severity
 from .. import Rule

@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.model import Value, semantic_model
+from ...analysis.model import semantic_model
 from ...analysis.ranges import Interval
 from ...analysis.syntax import call_args
+from ...analysis.values import Value
 from ...context import LintContext
 from ...finding import Finding
 from .. import register
