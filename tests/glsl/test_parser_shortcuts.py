@@ -2,7 +2,7 @@
 
 - Binary operators are parsed as one flat chain and nested by precedence in a callback
   (parser._Shape); the tree must be the one a rule per precedence level gives, positions
-  included.
+  included (test_parser.py checks the nesting of every precedence level).
 - Unit rules hand their child on without lark's tree-building wrappers
   (parser._pass_unit_rules_through); the tree must not change at all.
 """
@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
 from lark import Token, Tree
 
 from glint.compiler.glsl import parse
@@ -35,37 +34,6 @@ def _same(a: Tree | Token, b: Tree | Token) -> bool:
 def _expression(source: str) -> Tree:
     tree = parse(f"float f() {{ return {source}; }}")
     return next(tree.find_data("jump_statement")).children[1]  # type: ignore[return-value]
-
-
-def _shape(node: Tree | Token) -> str:
-    """The expression with every binary node parenthesised."""
-    if isinstance(node, Token):
-        return str(node)
-    if node.data == "binary":
-        left, op, right = node.children
-        return f"({_shape(left)} {op} {_shape(right)})"
-    return "".join(_shape(c) for c in node.children)
-
-
-@pytest.mark.parametrize(
-    ("source", "nested"),
-    [
-        ("a - b - c", "((a - b) - c)"),  # left-associative
-        ("a + b * c", "(a + (b * c))"),
-        ("a * b + c", "((a * b) + c)"),
-        ("a || b && c", "(a || (b && c))"),
-        ("a && b ^^ c", "((a && b) ^^ c)"),
-        ("a | b ^ c & d", "(a | (b ^ (c & d)))"),
-        ("a == b < c", "(a == (b < c))"),
-        ("a < b << c + d % e", "(a < (b << (c + (d % e))))"),
-        ("a * b / c % d", "(((a * b) / c) % d)"),
-        ("(a + b) * c", "((a + b) * c)"),
-        ("-a * b", "(-a * b)"),
-        ("a / b * c + d - e < f", "(((((a / b) * c) + d) - e) < f)"),
-    ],
-)
-def test_binary_operators_nest_by_precedence(source: str, nested: str) -> None:
-    assert _shape(_expression(source)) == nested
 
 
 def test_a_parenthesised_operand_widens_its_parent_to_the_parenthesis() -> None:
