@@ -1,11 +1,14 @@
 """What the semantic model knows about one value (`Value`): its GLSL type, range, whether it
 is a unit vector, where it comes from and the evidence of a 0; and the join of two values where
-control flow merges (the hull of the ranges, the facts that hold on both paths)."""
+control flow merges (the hull of the ranges, the facts that hold on both paths); and what it
+knows about a function of the file (`Function`), which the expressions that call it read."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+
+from lark import Tree
 
 from .ranges import UNKNOWN, Interval, hull_all
 
@@ -81,3 +84,15 @@ def _common_facts(a: tuple, b: tuple) -> tuple:  # type: ignore[type-arg]
 
 
 Comps = tuple[Interval, ...] | None
+
+
+@dataclass
+class Function:
+    """A function of the file as the model knows it: its signature, and once the forward pass
+    has run its body, the join of what it returns."""
+
+    name: str
+    node: Tree
+    return_type: str
+    params: list[tuple[str, str, str]]  # (qualifier, type, name)
+    result: Value | None = None  # the join of what its return statements give

@@ -1,0 +1,514 @@
+"""The semantic model's expression evaluator: the Value of an expression in an environment of
+variables (literals, operators, swizzles and indexing, constructors, calls of builtins and of
+the file's functions), with tighter rules where interval arithmetic alone is loose: a
+polynomial in one variable, and relations between variables that a guard on the path records
+(`y - x > 0` inside `if (x < y)`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import replace
+from typing import Protocol
+
+from lark import Tree
+
+from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+from ..context import Node
+from . import types as T
+from .builtin_rules import REACH_ZERO, builtin_result, cross_facts, keeps_zero, sum_of
+from .ranges import (
+    BOOL,
+    INF,
+    NONNEG,
+    UNKNOWN,
+    ZERO_ONE,
+    Interval,
+    floor_like,
+    hull_all,
+    poly_range,
+)
+from .syntax import (
+    call_args,
+    callee_name,
+    int_value,
+    is_tree,
+    same_expression,
+    spec_text,
+    swizzle_index,
+    var_key,
+)
+from .values import Comps, Env, Function, Value
+
+
+class ModelView(Protocol):
+    """What the evaluator asks of the semantic model (model.Model): its structs, the functions
+    of the file, the value of an expression where the model recorded it, and an environment
+    narrowed by a condition. A protocol, so that this module does not import the model, which
+    imports it."""
+
+    structs: dict[str, dict[str, str]]
+
+    def value_of(self, expr: Node) -> Value: ...
+
+    def function(self, name: str, arity: int) -> Function | None: ...
+
+    def refine(self, env: Env, cond: Node, truth: bool) -> Env: ...
+
+
+ASSIGN_OPS = {"+=": "+", "-=": "-", "*=": "*", "/=": "/"}
+
+
+class Evaluator:
+    """Evaluates an expression in an environment (plain recursion on expressions: the runner
+    turns a RecursionError on absurdly deep input into finding C006)."""
+
+    def __init__(self, model: ModelView, env: Env, memo: dict[int, Value] | None = None) -> None:
+        self.model = model
+        self.env = env
+        self.memo = memo
+
+    def eval(self, node: Node) -> Value:
+        if not isinstance(node, Tree):
+            return Value()
+        if self.memo is not None:
+            key = id(node)
+            if key in self.memo:
+                return self.memo[key]
+        handler = getattr(self, "_" + node.data, None)
+        value = handler(node) if handler is not None else Value()
+        if self.memo is not None:
+            self.memo[id(node)] = value
+        return value
+
+    def _sub(self, node: Node) -> Value:
+        """A child evaluated where the model recorded it (narrowed branches), if it did."""
+        if self.memo is not None and isinstance(node, Tree):
+            return self.model.value_of(node)
+        return self.eval(node)
+
+    # --- leaves ----------------------------------------------------------------------------
+
+    def _float_literal(self, node: Tree) -> Value:
+        text = str(node.children[0]).rstrip("fF")
+        x = float(text)
+        return Value("float", Interval.point(x), zero=x == 0)
+
+    def _int_literal(self, node: Tree) -> Value:
+        text = str(node.children[0])
+        n = int_value(text)
+        ty = "uint" if text[-1] in "uU" else "int"
+        return Value(ty, Interval.point(float(n)) if n is not None else UNKNOWN, zero=n == 0)
+
+    def _bool_literal(self, node: Tree) -> Value:
+        return Value("bool", Interval.point(1.0 if str(node.children[0]) == "true" else 0.0))
+
+    def _variable(self, node: Tree) -> Value:
+        return self.env.get(str(node.children[0])) or Value()
+
+    # --- operators -------------------------------------------------------------------------
+
+    def _unary(self, node: Tree) -> Value:
+        op, operand = str(node.children[0]), self._sub(node.children[1])
+        if op == "-":
+            comps = tuple(-c for c in operand.comps) if operand.comps is not None else None
+            return replace(operand, range=-operand.range, comps=comps)
+        if op == "+":
+            return operand
+        if op == "!":
+            return Value("bool", BOOL)
+        return Value(operand.type)
+
+    def _prefix(self, node: Tree) -> Value:
+        return Value(self._sub(node.children[1]).type)
+
+    def _postfix(self, node: Tree) -> Value:
+        return Value(self._sub(node.children[0]).type)
+
+    def _binary(self, node: Tree) -> Value:
+        left, op_token, right = node.children
+        op = str(op_token)
+        a, b = self._sub(left), self._sub(right)
+        ty = T.binary(op, a.type, b.type)
+        if ty == "bool":
+            return Value("bool", BOOL)
+        both_units = a.unit and b.unit and T.is_vector(a.type)
+        if op in _ARITH:
+            rng, comps = self._arith(op, a, b, ty, same_expression(left, right))
+            if op != "/":
+                rng, comps = self._polynomial(node, ty, rng, comps)
+            if comps is None:
+                rng = rng.meet(self._relation(op, left, right, a, b))
+            zero = _zero_of(op, a, b) and rng.may_be_zero
+            origin = {"+": "sum", "-": "difference"}.get(op) if both_units else None
+            why = ((a.zero and a.why) or (b.zero and b.why) or None) if zero else None
+            return Value(ty, rng, origin=origin, zero=zero, comps=comps, why=why)
+        if op == "%" and a.range.lo >= 0 and b.range.lo > 0:
+            return Value(ty, Interval(0.0, b.range.hi))
+        return Value(ty)
+
+    @staticmethod
+    def _arith(
+        op: str, a: Value, b: Value, ty: str | None, same: bool
+    ) -> tuple[Interval, tuple[Interval, ...] | None]:
+        """The range of a + - * / b, per component for vectors."""
+        lm, rm = T.matrix_shape(a.type), T.matrix_shape(b.type)
+        if op == "*" and (lm or rm) and not (T.is_scalar(a.type) or T.is_scalar(b.type)):
+            inner = lm[0] if lm else (rm[1] if rm else 0)  # type: ignore[index]
+            return sum_of(a.range * b.range, inner), None  # a row times a column
+        combine = _ARITH[op]
+        if op == "*" and same:
+            combine = _square_of
+        n = T.size(ty)
+        if n > 1 and not (lm or rm):
+            return UNKNOWN, tuple(map(combine, a.parts(n), b.parts(n)))
+        return combine(a.range, b.range), None
+
+    def _relation(self, op: str, left: Node, right: Node, a: Value, b: Value) -> Interval:
+        """What a guard `x < y` (or `<=`) on the path says of y - x, y*y - x*x and x / y."""
+        env = self.env
+        if op == "-":
+            if _related(env, right, "<", left):
+                return Interval(5e-324, INF)  # y > x: y - x is a positive float (no underflow)
+            if _related(env, right, "<=", left):
+                return NONNEG
+            squares = [_square_root_node(n) for n in (left, right)]
+            if None not in squares:
+                y, x = squares
+                lower = self._sub(x).range  # type: ignore[arg-type]
+                if lower.is_nonnegative and _related(env, x, "<=", y):  # type: ignore[arg-type]
+                    return NONNEG  # 0 <= x <= y: y*y - x*x >= 0
+        if op == "/" and a.range.is_nonnegative and _related(env, left, "<=", right):
+            return ZERO_ONE  # 0 <= x <= y (so y > 0 where x > 0): x / y in [0, 1]
+        return UNKNOWN
+
+    def _polynomial(
+        self, node: Tree, ty: str | None, rng: Interval, comps: Comps
+    ) -> tuple[Interval, Comps]:
+        """Tighter bounds for a polynomial in one variable (written more than once): interval
+        arithmetic treats each occurrence as independent, so t*t*(3.0 - 2.0*t), the Hermite
+        weight of value noise, comes out [0, 3] for t in [0, 1] instead of [0, 1]."""
+        found = _as_polynomial(node)
+        if found is None:
+            return rng, comps
+        atom, coeffs = found
+        x = self._sub(atom)
+        n = T.size(ty)
+        if n > 1 and comps is not None and T.size(x.type) == n:
+            tight = tuple(
+                c.meet(poly_range(coeffs, p)) for c, p in zip(comps, x.parts(n), strict=True)
+            )
+            return hull_all(tight), tight
+        if n == 1 and T.size(x.type) == 1:
+            return rng.meet(poly_range(coeffs, x.range)), comps
+        return rng, comps
+
+    def _ternary(self, node: Tree) -> Value:
+        cond, then, other = node.children
+        if self.memo is not None:
+            a, b = self._sub(then), self._sub(other)
+        else:
+            a = Evaluator(self.model, self.model.refine(self.env, cond, True)).eval(then)
+            b = Evaluator(self.model, self.model.refine(self.env, cond, False)).eval(other)
+        value = a.join(b)
+        return value if value.type else replace(value, type=a.type or b.type)
+
+    def _assignment(self, node: Tree) -> Value:
+        target, op_token, rhs = node.children
+        op = str(op_token)
+        old, new = self._sub(target), self._sub(rhs)
+        if op == "=":
+            return replace(new, type=old.type or new.type)
+        if op in ASSIGN_OPS:
+            arith = ASSIGN_OPS[op]
+            rng, comps = self._arith(arith, old, new, old.type, False)
+            return Value(old.type, rng, zero=_zero_of(arith, old, new), comps=comps)
+        return Value(old.type)
+
+    def _sequence(self, node: Tree) -> Value:
+        for child in node.children[:-1]:
+            self._sub(child)
+        return self._sub(node.children[-1])
+
+    # --- access ----------------------------------------------------------------------------
+
+    def _field(self, node: Tree) -> Value:
+        base, name = self._sub(node.children[0]), str(node.children[1])
+        swizzled = T.swizzle(base.type, name)
+        if swizzled is not None:
+            unit = base.unit and len(name) == T.size(base.type) and len(set(name)) == len(name)
+            parts = base.parts(T.size(base.type))
+            indices = [swizzle_index(c) for c in name]
+            if max(indices) >= len(parts):  # `v2.z`: invalid, glslang reports it
+                return Value(swizzled)
+            picked = tuple(parts[i] for i in indices)
+            if len(picked) == 1:  # the vector's evidence of a 0 may be another component's:
+                # eps.x of vec2(4.0 / iResolution.y, 0.0) is not 0 because eps.y is
+                zero = base.zero and picked[0].may_be_zero and not picked[0].is_unknown
+                origin = base.origin if base.origin in ("sin", "cos") else None
+                return Value(swizzled, picked[0], origin=origin, zero=zero, why=base.why)
+            return Value(swizzled, unit=unit, zero=base.zero, comps=picked)
+        member = self.model.structs.get(base.type or "", {}).get(name)
+        return Value(member)
+
+    def _index(self, node: Tree) -> Value:
+        base = self._sub(node.children[0])
+        index = self._sub(node.children[1]).range
+        element = T.element(base.type)
+        # a struct array element's range says nothing; a vector's component is in its hull
+        known = bool(T.components(element) or T.matrix_shape(element))
+        rng = base.range if known else UNKNOWN
+        n = T.size(base.type)
+        if n > 1 and index.is_point and 0 <= index.lo < n:
+            rng = base.parts(n)[int(index.lo)]
+        return Value(element, rng, zero=known and base.zero)
+
+    # --- calls and constructors ------------------------------------------------------------
+
+    def _constructor(self, node: Tree) -> Value:
+        ty = spec_text(node.children[0])  # type: ignore[arg-type]
+        args = [self._sub(a) for a in call_args(node)]
+        if not args:
+            return Value(ty)
+        if ty in self.model.structs:
+            return Value(ty)
+        ranges = [_converted(a, ty) for a in args]
+        rng = hull_all(ranges)
+        shape = T.matrix_shape(ty)
+        if shape and len(args) == 1 and T.is_scalar(args[0].type):
+            rng = rng.hull(Interval.point(0.0))  # mat3(s): s on the diagonal, 0 elsewhere
+        zero = any(a.zero or a.range == Interval.point(0.0) for a in args)
+        unit = self._unit_constructor(ty, args)
+        comps = _constructor_parts(ty, args)
+        origin = None
+        if not unit and _trig_axis(ty, call_args(node)):
+            unit, origin = True, "axis"  # sin² + cos² = 1: a chosen (rolled) axis
+        return Value(ty, rng, unit, origin, zero=zero, comps=comps)
+
+    @staticmethod
+    def _unit_constructor(ty: str, args: list[Value]) -> bool:
+        n = T.size(ty)
+        if n < 2 or T.components(ty)[0] != "float":  # type: ignore[index]
+            return False
+        if len(args) == 1 and args[0].type == ty:
+            return args[0].unit
+        if len(args) == n and all(a.range.is_point for a in args):
+            return abs(sum(a.range.lo**2 for a in args) - 1.0) < 1e-6
+        return False
+
+    def _call(self, node: Tree) -> Value:
+        head = node.children[0]
+        args = call_args(node)
+        values = [self._sub(a) for a in args]
+        if is_tree(head, "field") and str(head.children[1]) == "length":  # type: ignore
+            base = self._sub(head.children[0])  # type: ignore[union-attr]
+            n = T.size(base.type)
+            return Value("int", Interval.point(float(n)) if n > 1 else NONNEG)
+        name = callee_name(node)
+        if name is None:
+            return Value()
+        fn = self.model.function(name, len(args))
+        if fn is not None:
+            result = fn.result or Value(fn.return_type)
+            return replace(result, type=fn.return_type)
+        if name not in BUILTIN_FUNCTIONS:
+            return Value()
+        ty = T.builtin_return(name, [v.type for v in values])
+        rng, unit, comps = builtin_result(name, values, args, T.size(ty))
+        if comps is not None:
+            rng = hull_all(comps)
+        zero = rng.may_be_zero and (name in REACH_ZERO or keeps_zero(name, values))
+        why = next((v.why for v in values if v.zero and v.why), None) if zero else None
+        origin = name
+        ortho: tuple[tuple[str, Value], ...] = ()
+        if name == "cross" and len(values) == 2:
+            origin, unit, ortho = cross_facts(args, values, unit)
+        elif name == "normalize" and values:
+            ortho = values[0].ortho  # the same direction
+        return Value(ty, rng, unit, origin, zero, comps, why=why, ortho=ortho)
+
+
+_ARITH: dict[str, Callable[[Interval, Interval], Interval]] = {
+    "+": Interval.__add__,
+    "-": Interval.__sub__,
+    "*": Interval.__mul__,
+    "/": Interval.__truediv__,
+}
+
+
+def _square_of(a: Interval, b: Interval) -> Interval:
+    return a.square()
+
+
+def _zero_of(op: str, a: Value, b: Value) -> bool:
+    """Whether a op b reaches 0 on evidence (see Value.zero)."""
+    if op == "+":  # a sum is 0 on evidence where both terms are
+        # (N·L·X + N·V·Y, Smith's denominator, with N·V unclamped: it also changes sign)
+        if a.zero and b.zero:
+            return True
+        # or where a term that reaches 0 and changes sign (an unclamped N·V) can cancel the
+        # other: N·V·(1 - k) + k in Schlick-GGX's G1, N·L·X + N·V·Y in Smith's
+        total = a.range + b.range
+        return total.lo < 0 < total.hi and any(
+            x.zero and x.range.lo < 0 < x.range.hi and y.range.is_bounded
+            for x, y in ((a, b), (b, a))
+        )
+    if op in "+-" and b.range.is_point:  # x - c crosses 0 where x passes the constant c
+        c = b.range.lo if op == "-" else -b.range.lo
+        known = not a.range.is_unknown  # an unknown x passing c is no evidence
+        return (a.zero and c == 0) or (known and a.range.lo < c < a.range.hi)
+    if op == "-":
+        return a.zero and b.range == Interval.point(0.0)
+    if op == "*":
+        return a.zero or b.zero
+    return op == "/" and a.zero
+
+
+_POLY_SIZE = 64  # nodes: longer expressions are left to interval arithmetic
+
+
+_POLY_DEGREE = 8
+
+
+def _as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
+    """(x, coefficients) when `node` is a polynomial with constant coefficients in one
+    expression x that occurs at least twice (+, -, *, unary minus, division by a constant);
+    None otherwise."""
+    atoms: list[Node] = []
+    budget = [_POLY_SIZE]
+
+    def poly(n: Node) -> list[float] | None:
+        budget[0] -= 1
+        if budget[0] < 0 or not isinstance(n, Tree):
+            return None
+        if n.data in ("float_literal", "int_literal"):
+            text = str(n.children[0]).rstrip("fFuU")
+            try:
+                return [float(text) if n.data == "float_literal" else float(int_value(text) or 0)]
+            except ValueError:
+                return None
+        if n.data == "unary" and str(n.children[0]) in "+-":
+            inner = poly(n.children[1])
+            if inner is None:
+                return None
+            return inner if str(n.children[0]) == "+" else [-c for c in inner]
+        if n.data == "binary" and str(n.children[1]) in ("+", "-", "*", "/"):
+            op = str(n.children[1])
+            a, b = poly(n.children[0]), poly(n.children[2])
+            if a is None or b is None:
+                return None
+            if op == "/":
+                if len(b) != 1 or b[0] == 0:
+                    return None
+                return [c / b[0] for c in a]
+            if op == "*":
+                if len(a) + len(b) - 1 > _POLY_DEGREE + 1:
+                    return None
+                out = [0.0] * (len(a) + len(b) - 1)
+                for i, x in enumerate(a):
+                    for j, y in enumerate(b):
+                        out[i + j] += x * y
+                return out
+            sign = 1.0 if op == "+" else -1.0
+            out = [0.0] * max(len(a), len(b))
+            for i, x in enumerate(a):
+                out[i] += x
+            for i, y in enumerate(b):
+                out[i] += sign * y
+            return out
+        if n.data in ("variable", "field", "index", "call"):
+            if atoms and not same_expression(atoms[0], n):
+                return None
+            if not atoms and not same_expression(n, n):
+                return None  # a call with side effects is not one value
+            atoms.append(n)
+            return [0.0, 1.0]
+        return None
+
+    coeffs = poly(node)
+    if coeffs is None or len(atoms) < 2:
+        return None
+    return atoms[0], coeffs
+
+
+def _square_root_node(node: Node) -> Node | None:
+    """x for `x * x`."""
+    if is_tree(node, "binary") and str(node.children[1]) == "*":  # type: ignore[union-attr]
+        left, _, right = node.children  # type: ignore[union-attr]
+        if same_expression(left, right):
+            return left
+    return None
+
+
+def _related(env: Env, a: Node, op: str, b: Node) -> bool:
+    """Whether the environment records `a op b` (op "<" or "<="; "<" implies "<="), from
+    a relation on either side, while both still hold the values the relation was made with."""
+    ka, kb = var_key(a), var_key(b)
+    if ka is None or kb is None:
+        return False
+    ops = ("<",) if op == "<" else ("<", "<=")
+    flipped = {"<": ">", "<=": ">="}
+    for mine, other, wanted in ((ka, kb, ops), (kb, ka, tuple(flipped[o] for o in ops))):
+        holder = env.get(mine[1])
+        if holder is None:
+            continue
+        part = mine[0][len(mine[1]) :]
+        for rel_part, rel_op, name, target in holder.rel:
+            if (rel_part == part and rel_op in wanted and name == other[0]
+                    and env.get(other[1]) is target):  # fmt: skip
+                return True
+    return False
+
+
+def _trig_axis(ty: str, nodes: list[Node]) -> bool:
+    """vec2/vec3(sin(x), cos(x)) with zeros elsewhere, in any order: a unit vector."""
+    if ty not in ("vec2", "vec3") or len(nodes) != T.size(ty):
+        return False
+    trig = {}
+    for n in nodes:
+        if is_tree(n, "float_literal", "int_literal"):
+            text = str(n.children[0]).rstrip("fF")  # type: ignore[union-attr]
+            try:
+                if float(text) != 0:
+                    return False
+            except ValueError:
+                return False
+            continue
+        name = callee_name(n) if is_tree(n, "call") else None  # type: ignore[arg-type]
+        inner = call_args(n) if name in ("sin", "cos") else []  # type: ignore[arg-type]
+        if len(inner) != 1 or name in trig:
+            return False
+        trig[name] = inner[0]
+    return len(trig) == 2 and same_expression(trig["sin"], trig["cos"])
+
+
+def _converted(value: Value, ty: str) -> Interval:
+    """An argument's range once a constructor converts it to `ty`'s component type."""
+    comps = T.components(ty)
+    base = comps[0] if comps else "float"
+    r = value.range
+    if base == "bool":
+        return BOOL
+    if base in ("int", "uint") and T.components(value.type or "") and \
+            T.components(value.type or "")[0] == "float":  # type: ignore[index]  # fmt: skip
+        r = floor_like(math.trunc)(r)
+    if base == "uint" and r.may_be_negative:
+        return UNKNOWN  # negative values wrap around
+    return r
+
+
+def _constructor_parts(ty: str, args: list[Value]) -> tuple[Interval, ...] | None:
+    """Component ranges of vecN(...): the arguments' components in order, a scalar broadcast."""
+    n = T.size(ty)
+    if n < 2:
+        return None
+    parts: list[Interval] = []
+    for a in args:
+        k = T.size(a.type)
+        if k == 0:  # a matrix, or an argument of unknown type: sizes cannot be lined up
+            return None
+        parts += [_converted(Value(a.type, c), ty) for c in a.parts(k)]
+    if len(parts) == 1:
+        parts *= n
+    return tuple(parts[:n]) if len(parts) >= n else None
