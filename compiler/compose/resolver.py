@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import heapq
 
-from glint.compiler.catalog.loader import Catalog
+from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.compose.units import Unit, from_snippet
 from glint.compiler.errors import InputError
@@ -41,6 +41,18 @@ def resolve(roots: list[Unit], catalog: Catalog, choices: dict[str, str]) -> lis
     return [units[uid] for uid in _topological(order, edges, units)]
 
 
+def providers(
+    symbol: str, catalog: Catalog, choices: dict[str, str]
+) -> tuple[list[Snippet], list[Snippet]]:
+    """The catalog snippets that may provide `symbol` to a shader of this plan: library
+    snippets (of many-variant slots, all usable at once), and the chosen variants of one-variant
+    slots (the others are not in the shader)."""
+    candidates = catalog.providers(symbol)
+    library = [s for s in candidates if SLOTS[s.slot].many]
+    chosen = [s for s in candidates if not SLOTS[s.slot].many and choices.get(s.slot) == s.id]
+    return library, chosen
+
+
 def _provider(
     req: str, unit: Unit, taken: dict[str, Unit], catalog: Catalog, choices: dict[str, str]
 ) -> Unit:
@@ -51,14 +63,12 @@ def _provider(
     for other in taken.values():
         if req in other.provides:
             return other
-    candidates = catalog.providers(req)
-    library = [s for s in candidates if SLOTS[s.slot].many]
-    chosen = [s for s in candidates if not SLOTS[s.slot].many and choices.get(s.slot) == s.id]
+    library, chosen = providers(req, catalog, choices)
     found = library + chosen
     if len(found) == 1:
         return from_snippet(found[0])
     if not found:
-        unchosen = ", ".join(s.id for s in candidates)
+        unchosen = ", ".join(s.id for s in catalog.providers(req))
         hint = f" (provided by {unchosen}, which the plan did not choose)" if unchosen else ""
         raise InputError(f"{unit.id} requires '{req}', which no unit provides{hint}")
     names = " and ".join(s.id for s in found)

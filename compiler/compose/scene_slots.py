@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import Catalog
 from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.compose.resolver import providers
 from glint.compiler.compose.scene import (
     BackLight,
     BounceLight,
@@ -111,7 +112,7 @@ def slot_uses(scene: Scene, catalog: Catalog, choices: dict[str, str]) -> dict[s
             reached[slot] = f"{caller} calls it; {root}" if caller else root
             snippet = catalog.get(choices[slot])
         else:
-            library = [s for s in catalog.providers(symbol) if SLOTS[s.slot].many]
+            library, _ = providers(symbol, catalog, choices)
             if not library:
                 return  # a scene symbol (map) or a constant
             snippet = library[0]
@@ -135,10 +136,8 @@ def _slot_of(symbol: str, catalog: Catalog, choices: dict[str, str]) -> str | No
     """The one-variant slot a requirement names or whose chosen variant provides it."""
     if symbol in SLOTS and not SLOTS[symbol].many:
         return symbol
-    for snippet in catalog.providers(symbol):
-        if not SLOTS[snippet.slot].many and choices.get(snippet.slot) == snippet.id:
-            return snippet.slot
-    return None
+    _, chosen = providers(symbol, catalog, choices)
+    return chosen[0].slot if chosen else None
 
 
 def _out_reason(slot: str, scene: Scene) -> str:
