@@ -1,0 +1,309 @@
+"""The semantic model's forward pass over one function's statements: declarations and
+assignments update the variables in scope, branches are narrowed by their condition and joined,
+loops are run until the facts at their head stop changing, and the return statements are joined
+into what the function returns."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field, replace
+from typing import Protocol
+
+from lark import Tree
+
+from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+from ..context import Node, walk
+from .expressions import ASSIGN_OPS, Evaluator, ModelView
+from .scopes import Scopes, join_scopes, widen
+from .syntax import call_args, callee_name, is_tree, root_variable, spec_text
+from .values import Env, Function, Value
+
+
+class ModelForPass(ModelView, Protocol):
+    """What the forward pass asks of the semantic model (model.Model), besides what the
+    evaluator does: the functions analysed so far, to declare variables and to record where an
+    expression is evaluated. A protocol, so that this module does not import the model, which
+    imports it."""
+
+    functions: dict[str, list[Function]]
+
+    def declaration(self, node: Tree, scopes: Scopes, is_global: bool = False) -> None: ...
+
+    def record(self, expr: Node, env: Env) -> None: ...
+
+
+@dataclass
+class _Loop:
+    switch: bool = False  # a switch takes `break` but not `continue`
+    breaks: list[Scopes] = field(default_factory=list)
+    continues: list[Scopes] = field(default_factory=list)
+
+
+def written_targets(node: Tree, model: ModelForPass | None) -> Iterable[Node]:
+    """Lvalues one node writes: an assignment's target, `x++`, out arguments of a call."""
+    if node.data == "assignment" or node.data == "postfix":
+        yield node.children[0]
+    elif node.data == "prefix":
+        yield node.children[1]
+    elif node.data == "call":
+        yield from _out_arguments(node, model)
+
+
+def _out_arguments(call: Tree, model: ModelForPass | None) -> Iterable[Node]:
+    name = callee_name(call)
+    args = call_args(call)
+    if name == "modf" and len(args) == 2:
+        yield args[1]
+        return
+    if name is None or name in BUILTIN_FUNCTIONS:
+        return
+    fns = model.functions.get(name, []) if model is not None else []
+    if model is not None and not fns:
+        fns = []
+    if not fns:  # not analysed yet (or unknown): any argument may be written
+        yield from (a for a in args if root_variable(a) is not None)
+        return
+    for fn in fns:
+        if len(fn.params) != len(args):
+            continue
+        for (qualifier, _, _), arg in zip(fn.params, args, strict=True):
+            if "out" in qualifier.split() or "inout" in qualifier.split():
+                yield arg
+
+
+class ForwardPass:
+    """The forward pass over one function's statements."""
+
+    def __init__(self, model: ModelForPass, fn: Function) -> None:
+        self.model = model
+        self.fn = fn
+        self.loops: list[_Loop] = []
+        self.returns: list[Value] = []
+
+    # --- statements ------------------------------------------------------------------------
+
+    def block(self, statements: Iterable[Node], scopes: Scopes) -> None:
+        # iterative over the list: long functions must not deepen the stack
+        for stmt in statements:
+            self.statement(stmt, scopes)
+
+    def result(self) -> Value | None:
+        """What the function returns: the join of its return statements."""
+        if not self.returns:
+            return None
+        result = self.returns[0]
+        for r in self.returns[1:]:
+            result = result.join(r)
+        return replace(result, type=self.fn.return_type)
+
+    def statement(self, stmt: Node, scopes: Scopes) -> None:
+        if not isinstance(stmt, Tree):
+            return
+        handler = getattr(self, "_" + stmt.data, None)
+        if handler is not None:
+            handler(stmt, scopes)
+
+    def _compound_statement(self, node: Tree, scopes: Scopes) -> None:
+        scopes.push()
+        self.block(node.children, scopes)
+        scopes.pop()
+
+    def _declaration_statement(self, node: Tree, scopes: Scopes) -> None:
+        decl = node.children[0]
+        if is_tree(decl, "variable_declaration"):
+            self.model.declaration(decl, scopes)  # type: ignore[arg-type]
+            for d in decl.children[1:]:  # type: ignore[union-attr]
+                for init in d.children[1:] if is_tree(d, "declarator") else ():  # type: ignore
+                    self.effects(init, scopes, nested_only=True)
+
+    def _expression_statement(self, node: Tree, scopes: Scopes) -> None:
+        self.expression(node.children[0], scopes)
+
+    def _jump_statement(self, node: Tree, scopes: Scopes) -> None:
+        kind = str(node.children[0])
+        if kind == "return" and len(node.children) > 1:
+            expr = node.children[1]
+            self.expression(expr, scopes)
+            if not scopes.dead:
+                self.returns.append(Evaluator(self.model, scopes.env_for(expr)).eval(expr))
+        elif kind == "break" and self.loops:
+            self.loops[-1].breaks.append(scopes.copy())
+        elif kind == "continue":
+            loop = next((lp for lp in reversed(self.loops) if not lp.switch), None)
+            if loop is not None:
+                loop.continues.append(scopes.copy())
+        scopes.dead = True
+
+    def _if_statement(self, node: Tree, scopes: Scopes) -> None:
+        # `else if` is an if nested in the else branch. Following the chain here and joining
+        # all its branches once gives the same state as joining level by level (the join is a
+        # hull: associative and idempotent), without joining a variable assigned deep in a long
+        # chain again at every level on the way out (quadratic in the chain's length).
+        branches = []
+        current = scopes
+        while True:
+            cond, then = node.children[0], node.children[1]
+            other = node.children[2] if len(node.children) > 2 else None
+            self.expression(cond, current)
+            state = self.narrowed(current, cond, True)
+            self.statement(then, state)
+            branches.append(state)
+            state = self.narrowed(current, cond, False)
+            if is_tree(other, "if_statement"):
+                current, node = state, other  # type: ignore[assignment]
+                continue
+            if other is not None:
+                self.statement(other, state)
+            branches.append(state)
+            break
+        scopes.become(join_scopes(branches))
+
+    def _for_statement(self, node: Tree, scopes: Scopes) -> None:
+        init, *middle, body = node.children
+        cond = update = None
+        if len(middle) == 2:
+            cond, update = middle
+        elif len(middle) == 1:  # `for (;; i++)` or `for (; c;)`: positions do not say which
+            is_cond = is_tree(middle[0], "binary", "unary", "variable", "bool_literal", "call")
+            cond, update = (middle[0], None) if is_cond else (None, middle[0])
+        scopes.push()
+        self.statement(init, scopes)
+        self.loop(scopes, cond, update, body)
+        scopes.pop()
+
+    def _while_statement(self, node: Tree, scopes: Scopes) -> None:
+        cond, body = node.children
+        scopes.push()
+        if is_tree(cond, "condition_declaration"):
+            spec = next(c for c in cond.children[0].children if is_tree(c, "type_specifier"))
+            scopes.declare(str(cond.children[1]), Value(spec_text(spec)))
+            cond = None
+        self.loop(scopes, cond, None, body)
+        scopes.pop()
+
+    def _do_statement(self, node: Tree, scopes: Scopes) -> None:
+        body, cond = node.children
+        self.loop(scopes, cond, None, body, test_first=False)
+
+    def _switch_statement(self, node: Tree, scopes: Scopes) -> None:
+        selector, *body = node.children
+        self.expression(selector, scopes)
+        entry = scopes.copy()
+        entry.push()
+        current = entry.copy()
+        current.dead = True  # nothing before the first label runs
+        self.loops.append(_Loop(switch=True))
+        has_default = False
+        for stmt in body:
+            if is_tree(stmt, "case_label", "default_label"):
+                has_default |= stmt.data == "default_label"  # type: ignore[union-attr]
+                current = join_scopes([current, entry])  # jumped to, or fallen into
+                continue
+            self.statement(stmt, current)
+        exits = self.loops.pop()
+        out = join_scopes([current, *exits.breaks] + ([] if has_default else [entry]))
+        out.frames = out.frames[: len(scopes.frames)]
+        scopes.become(out)
+
+    def loop(self, scopes: Scopes, cond: Node | None, update: Node | None, body: Node,
+             test_first: bool = True) -> None:  # fmt: skip
+        """Widen what the loop assigns, run the body until its facts stop changing, then
+        leave with the condition false (or through a break)."""
+        assigned = {
+            name
+            for part in (cond, update, body)
+            if isinstance(part, Tree)
+            for n in walk(part)
+            for t in written_targets(n, self.model)
+            if (name := root_variable(t)) is not None
+        }
+        # Nested loops would multiply the passes: deep inside, one pass that knows nothing of
+        # what the loop assigns (sound at once, no fixpoint needed). Elsewhere the passes stop
+        # when the loop-head state is stable, and fall back to that one pass if it is not.
+        deep = sum(not lp.switch for lp in self.loops) >= 3
+        entry = widen(scopes, assigned)
+        state, converged = entry, False
+        for _ in range(0 if deep else 4):
+            inner, exits = self._pass(state, cond, update, body, test_first)
+            new_state = widen(join_scopes([entry, inner]), assigned)
+            converged = new_state.flat() == state.flat()
+            if converged:
+                break
+            state = new_state
+        if not converged:
+            state = widen(scopes, assigned, keep_flags=False)
+            _, exits = self._pass(state, cond, update, body, test_first)
+        leave = self.narrowed(state, cond, False) if cond is not None else state.copy()
+        if cond is None:
+            leave.dead = True  # `for (;;)` ends only through a break
+        scopes.become(join_scopes([leave, *exits.breaks]))
+
+    def _pass(self, state: Scopes, cond: Node | None, update: Node | None, body: Node,
+              test_first: bool) -> tuple[Scopes, _Loop]:  # fmt: skip
+        """One run of the loop from `state`: the state after it, and its breaks/continues."""
+        self.loops.append(_Loop())
+        inner = state.copy()
+        if cond is not None and test_first:
+            self.expression(cond, inner)
+            inner = self.narrowed(inner, cond, True)
+        self.statement(body, inner)
+        exits = self.loops.pop()
+        inner = join_scopes([inner, *exits.continues])
+        if update is not None:
+            self.expression(update, inner)
+        if cond is not None and not test_first:
+            self.expression(cond, inner)
+        return inner, exits
+
+    def narrowed(self, scopes: Scopes, cond: Node | None, truth: bool) -> Scopes:
+        out = scopes.copy()
+        if cond is None or out.dead:
+            return out
+        env = out.env_for(cond)
+        refined = self.model.refine(env, cond, truth)
+        if refined is not env:
+            for name, value in refined.items():
+                if env.get(name) is not value:
+                    out.assign(name, value)
+        return out
+
+    # --- expressions -----------------------------------------------------------------------
+
+    def expression(self, expr: Node, scopes: Scopes) -> None:
+        self.model.record(expr, scopes.env_for(expr))
+        self.effects(expr, scopes)
+
+    def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False) -> None:
+        """Apply what an expression writes: top-level assignments exactly (`x = e`, `x += e`,
+        a sequence of them), any other write makes its variable unknown."""
+        if not isinstance(expr, Tree):
+            return
+        if not nested_only and expr.data == "sequence":
+            for part in expr.children:
+                self.effects(part, scopes)
+            return
+        if not nested_only and expr.data == "assignment":
+            target, op, rhs = expr.children
+            self.effects(rhs, scopes)
+            self._assign(target, str(op), expr, scopes)
+            return
+        for node in walk(expr):
+            for target in written_targets(node, self.model):
+                name = root_variable(target)
+                old = scopes.lookup(name) if name else None
+                if name and old is not None:
+                    scopes.assign(name, old.unknown())
+
+    def _assign(self, target: Node, op: str, expr: Tree, scopes: Scopes) -> None:
+        name = root_variable(target)
+        old = scopes.lookup(name) if name else None
+        if name is None or old is None:
+            return
+        got = Evaluator(self.model, scopes.env_for(expr)).eval(expr)
+        if op not in ("=", *ASSIGN_OPS):
+            scopes.assign(name, old.unknown())
+        elif is_tree(target, "variable"):
+            scopes.assign(name, replace(got, type=old.type))
+        else:  # one component or element: each is now the old value or the new one
+            scopes.assign(name, Value(old.type, old.range.hull(got.range)))
