@@ -1,0 +1,177 @@
+"""`glint.render`: one frame of a shader, drawn as `glint render` draws it, as an `Image`."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from glint.compiler.errors import InputError, UsageError
+
+from ._shader import Shader, compose, is_source
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from glint.compiler.compose.scene import Scene
+
+MAX_SIZE = 8192  # as `glint render --size`
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Image:
+    """A rendered frame: `pixels` is float32 H x W x 3 (row 0 at the top) straight from the
+    float framebuffer, so it may hold values outside [0, 1], NaN and Inf.
+
+    `stats` is what `glint render --json` reports: `nan` and `inf` (pixels with such a channel),
+    `finite_min`, `finite_max`, `mean` and `std` (per RGB channel), `black_fraction`,
+    `white_fraction`, `width`, `height`. `np.asarray(image)` gives `pixels`.
+    """
+
+    pixels: np.ndarray
+    stats: dict[str, Any]
+    renderer: str  # GL_RENDERER and version, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (...)"
+    glsl_version: str  # "300 es", or "330" where the driver lacks ES 3.00 shaders
+    draw_seconds: float  # the draw call alone; on llvmpipe this is CPU time
+    time: float  # iTime
+    frame: int  # iFrame
+
+    @property
+    def width(self) -> int:
+        return int(self.pixels.shape[1])
+
+    @property
+    def height(self) -> int:
+        return int(self.pixels.shape[0])
+
+    @property
+    def finite(self) -> bool:
+        """No pixel is NaN or Inf (`glint render` exits 1 otherwise)."""
+        return self.stats["nan"] == 0 and self.stats["inf"] == 0
+
+    def to_png(self) -> bytes:
+        """The image as an 8-bit RGB PNG, as `glint render` writes it (clamped to [0, 1], NaN
+        shown magenta)."""
+        import io
+
+        from PIL import Image as PILImage
+
+        from glint.compiler.render.images import to_display
+
+        buffer = io.BytesIO()
+        pixels = (to_display(self.pixels) * 255.0).round().astype("uint8")
+        PILImage.fromarray(pixels, mode="RGB").save(buffer, format="PNG")
+        return buffer.getvalue()
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Write the PNG to `path` (atomically); returns the path."""
+        from glint.compiler.render.images import save_png
+
+        save_png(self.pixels, str(path))
+        return Path(path)
+
+    def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
+        if dtype is None or dtype == self.pixels.dtype:
+            return self.pixels.copy() if copy else self.pixels
+        return self.pixels.astype(dtype)
+
+    def _repr_png_(self) -> bytes:
+        return self.to_png()
+
+    def __repr__(self) -> str:
+        mean = ", ".join(f"{v:.4g}" for v in self.stats["mean"])
+        return (
+            f"<glint.Image {self.width}x{self.height}, iTime {self.time:g}, "
+            f"NaN pixels {self.stats['nan']}, Inf pixels {self.stats['inf']}, "
+            f"mean RGB {mean}, {self.renderer}>"
+        )
+
+
+def render(
+    shader: Shader | str | os.PathLike[str] | Mapping[str, Any] | Scene,
+    *,
+    size: tuple[int, int] = (640, 360),
+    time: float = 0.0,
+    frame: int = 0,
+    mouse: Sequence[float] = (0.0, 0.0, 0.0, 0.0),
+    timeout: float = 60.0,
+) -> Image:
+    """Draw one frame, as `glint render` does: in a child process killed after `timeout`
+    seconds, into a float framebuffer, with the statistics and NaN/Inf counts in `stats`.
+
+    `shader` is a `Shader` composed for the shadertoy target, ShaderToy Image-tab code (a str
+    holding a line break), the path of such a file, or a scene (the path of a `.toml` file, a
+    dict, a Scene) to compose first at its own tier. `size` is (width, height); `time`,
+    `frame` and `mouse` are iTime, iFrame and iMouse.
+
+    Raises InputError when the shader does not compile, does not finish in time or crashes the
+    driver, EnvironmentProblem when no OpenGL context can be made. NaN and Inf pixels do not
+    raise: see `Image.finite`.
+    """
+    from glint.compiler.render import image_stats, render_full
+
+    width, height = _size(size)
+    if len(mouse) != 4:
+        raise UsageError(f"mouse: expected four numbers x, y, z, w, got {tuple(mouse)!r}")
+    x, y, z, w = (float(v) for v in mouse)
+    source = _source(shader)
+    result = render_full(source, width, height, time, frame, (x, y, z, w), timeout=timeout)
+    return Image(
+        pixels=result.image[:, :, :3].copy(),
+        stats=image_stats(result.image),  # over RGBA, as `glint render` counts NaN and Inf
+        renderer=result.renderer,
+        glsl_version=result.glsl_version,
+        draw_seconds=result.draw_seconds,
+        time=time,
+        frame=frame,
+    )
+
+
+def _size(size: tuple[int, int]) -> tuple[int, int]:
+    try:
+        width, height = (int(v) for v in size)
+    except (TypeError, ValueError):
+        raise UsageError(f"size: expected (width, height), got {size!r}") from None
+    if not (1 <= width <= MAX_SIZE and 1 <= height <= MAX_SIZE):
+        raise UsageError(f"size: width and height must be 1..{MAX_SIZE}, got {width}x{height}")
+    return width, height
+
+
+def _source(shader: object) -> str:
+    """ShaderToy Image-tab code to draw."""
+    if isinstance(shader, Shader):
+        if shader.target != "shadertoy":
+            raise UsageError(
+                f"render draws ShaderToy Image-tab code; this shader's target is "
+                f"{shader.target}: compose it with target='shadertoy'"
+            )
+        return shader.text
+    if is_source(shader):
+        return str(shader)
+    if isinstance(shader, str | os.PathLike):
+        path = os.fspath(shader)
+        return compose(path).text if str(path).endswith(".toml") else _read_text(str(path))
+    from glint.compiler.compose.scene import Scene
+
+    if isinstance(shader, Mapping | Scene):
+        return compose(shader).text
+    raise UsageError(
+        "render takes a Shader, Image-tab code, the path of a shader or a scene, a dict or a "
+        f"Scene, not {type(shader).__name__}"
+    )
+
+
+def _read_text(path: str) -> str:
+    """The text of a shader file, failing with the messages of `glint render`."""
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise InputError(f"{path}: is a folder, expected a shader file") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{path}: not UTF-8 text; is it a shader?") from None
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read: {exc.strerror}") from None

@@ -1,0 +1,163 @@
+"""`glint.compose`: a scene (a TOML file, a dict, a Scene) to a `Shader`, as `glint compose`."""
+
+from __future__ import annotations
+
+import html
+import math
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from glint.compiler.errors import InputError, UsageError
+from glint.compiler.target.shadertoy import TARGETS
+
+if TYPE_CHECKING:
+    from glint.compiler.compose.planner import Plan
+    from glint.compiler.compose.scene import Scene
+    from glint.compiler.compose.units import Unit
+    from glint.compiler.target.glslang import Diagnostic
+
+    # What `compose` takes for a scene.
+    SceneInput = str | os.PathLike[str] | Mapping[str, Any] | Scene | None
+
+TIERS = ("fast", "balanced", "reference")  # the choices of `glint compose --tier`
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Shader:
+    """A composed shader: `text` is what `glint compose` writes for the same scene and options.
+
+    For the shadertoy target `text` pastes into ShaderToy's Image tab as it is; webgl2 and
+    desktop are complete fragment shaders. `plan` holds each slot's use and variant and why,
+    `units` the snippets and generated code in the order they were emitted.
+    """
+
+    text: str
+    target: str
+    scene: Scene
+    plan: Plan
+    units: list[Unit]
+
+    @property
+    def tier(self) -> str:
+        return self.plan.tier
+
+    @property
+    def snippets(self) -> list[str]:
+        """Ids of the catalog snippets in the shader, in order (the scene's own code left out)."""
+        return [unit.id for unit in self.units if unit.slot != "scene"]
+
+    def explain(self) -> str:
+        """What `glint compose --explain` prints: each slot in or out and why, which variant
+        fills it and why, the material paths the scene turns on."""
+        from glint.compiler.compose.explain import explain
+
+        return explain(self.scene, self.plan)
+
+    def validate(self) -> list[Diagnostic]:
+        """glslangValidator's diagnostics for the shader, as `glint validate` prints them (at
+        the snippet file and line); an empty list when it is valid."""
+        from glint.compiler.target.glslang import validate
+
+        return validate(self.text, f"<{self.scene.name}>", self.target)
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Write the shader to `path` (atomically, like `glint compose -o`); returns the path."""
+        from glint.compiler.outputs import write_atomic
+
+        write_atomic(path, self.text.encode("utf-8"))
+        return Path(path)
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __repr__(self) -> str:
+        return f"<glint.Shader {self._summary()}>"
+
+    def _summary(self) -> str:
+        lines = self.text.count("\n")
+        return (
+            f"scene '{self.scene.name}', {self.target} target, tier {self.tier}, "
+            f"{len(self.snippets)} snippets, {lines} lines"
+        )
+
+    def _repr_html_(self) -> str:
+        """A header line and the code, in a scrolling box (Jupyter)."""
+        return (
+            f"<div><strong>glint shader</strong>: {html.escape(self._summary())}"
+            '<pre style="max-height: 32em; overflow: auto">'
+            f"<code>{html.escape(self.text)}</code></pre></div>"
+        )
+
+
+def compose(
+    scene: SceneInput = None,
+    *,
+    target: str = "shadertoy",
+    tier: str | None = None,
+    variants: Mapping[str, str] | None = None,
+    budget: float | None = None,
+) -> Shader:
+    """Compose a scene into one shader, as `glint compose` does.
+
+    `scene` is the path of a scene TOML file, a dict with the same structure as the TOML, a
+    `glint.compiler.compose.scene.Scene`, or None for the embedded default scene. `target`,
+    `tier`, `variants` ({slot: variant}) and `budget` (ns per pixel) are the command's
+    `--target`, `--tier`, `--variant SLOT=VARIANT` and `--budget`.
+
+    Raises InputError for a scene that is not valid (the message names the key path, the value
+    and what was expected), an unknown slot or variant, or a budget below the cheapest
+    combination; UsageError for an unknown target or tier or a budget that is not positive.
+    """
+    from glint.compiler.compose.pipeline import compose_scene
+
+    _check_choice("target", target, TARGETS)
+    if tier is not None:
+        _check_choice("tier", tier, TIERS)
+    if budget is not None and not (0 < budget < math.inf):
+        raise UsageError(f"budget: expected a positive number of ns, got {budget!r}")
+    model = load_scene(scene)
+    composed = compose_scene(model, target, tier, dict(variants or {}), budget)
+    return Shader(composed.text, target, model, composed.plan, composed.units)
+
+
+def load_scene(scene: SceneInput) -> Scene:
+    """The validated scene of a path, a dict, a Scene or None (the embedded default)."""
+    from glint.compiler.compose import scene as scenes
+
+    if scene is None or isinstance(scene, str | os.PathLike):
+        return scenes.load_scene(scene)
+    if isinstance(scene, scenes.Scene):
+        return scene
+    if isinstance(scene, Mapping):
+        return _scene_from_dict(scene)
+    raise UsageError(
+        f"a scene is the path of a TOML file, a dict or a Scene, not {type(scene).__name__}"
+    )
+
+
+def _scene_from_dict(data: Mapping[str, Any], name: str = "<scene>") -> Scene:
+    """Validate a dict as `parse_scene` validates a parsed TOML file, with its messages."""
+    from pydantic import ValidationError
+
+    from glint.compiler.compose.scene import Scene, describe_error
+
+    try:
+        return Scene.model_validate(dict(data))
+    except ValidationError as exc:
+        errors = exc.errors()
+        more = len(errors) - 1
+        suffix = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
+        raise InputError(f"{name}: {describe_error(errors[0])}{suffix}") from None
+
+
+def _check_choice(name: str, value: str, choices: tuple[str, ...]) -> None:
+    if value not in choices:
+        raise UsageError(f"{name}: unknown value {value!r}; expected one of {', '.join(choices)}")
+
+
+def is_source(value: object) -> bool:
+    """Whether `value` is code rather than a path: a str that holds a line break."""
+    return isinstance(value, str) and "\n" in value
