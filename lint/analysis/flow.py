@@ -37,7 +37,7 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 from ..context import LintContext, Node
 from ..context import tokens as tokens_of
 from .model import Model, condition_truth, semantic_model
-from .syntax import same_expression
+from .syntax import parameter_parts, prototype_parts, same_expression, type_of_declaration
 
 State = dict[int, int]  # id of a Var -> mask of written components
 SWIZZLE_SETS = ("xyzw", "rgba", "stpq")
@@ -142,44 +142,6 @@ def swizzle(name: str, width: int) -> tuple[int, ...] | None:
             indices = tuple(letters.index(c) for c in name)
             return indices if all(i < width for i in indices) else None
     return None
-
-
-def type_of_declaration(spec: Tree) -> tuple[str, bool]:
-    """(type name, is an array) of a `fully_specified_type` or `type_specifier`."""
-    if spec.data == "fully_specified_type":
-        spec = spec.children[-1]  # type: ignore[assignment]
-    name = spec.children[0]
-    is_array = any(isinstance(c, Tree) and c.data == "array_specifier" for c in spec.children)
-    if isinstance(name, Token):
-        return str(name), is_array
-    return "struct", is_array
-
-
-def parameter_parts(param: Tree) -> tuple[str, str, bool, Token | None]:
-    """(qualifier, type, is an array, name) of a `parameter` node."""
-    qualifier = ""
-    type_name, is_array, name = "", False, None
-    for child in param.children:
-        if isinstance(child, Tree) and child.data == "type_qualifier":
-            words = [str(t) for t in child.children if isinstance(t, Token)]
-            qualifier = next((w for w in words if w in ("in", "out", "inout")), "in")
-        elif isinstance(child, Tree) and child.data == "type_specifier":
-            type_name, is_array = type_of_declaration(child)
-        elif isinstance(child, Tree) and child.data == "array_specifier":
-            is_array = True
-        elif isinstance(child, Token):
-            name = child
-    return qualifier or "in", type_name, is_array, name
-
-
-def prototype_parts(proto: Tree) -> tuple[str, Token, list[Tree]]:
-    """(return type, name, parameters) of a `function_prototype`."""
-    ret, name = proto.children[0], proto.children[1]
-    params: list[Tree] = []
-    if len(proto.children) > 2 and isinstance(proto.children[2], Tree):
-        params = [p for p in proto.children[2].children if isinstance(p, Tree)]
-    ret_type, _ = type_of_declaration(ret)  # type: ignore[arg-type]
-    return ret_type, name, params  # type: ignore[return-value]
 
 
 def _signatures(tree: Tree) -> dict[str, list[tuple[str, ...]]]:

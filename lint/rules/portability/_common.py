@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from lark import Token, Tree
 
-from ...analysis.flow import parameter_parts
+from ...analysis.syntax import parameter_parts
 from ...context import LintContext, walk
 
 

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from glint.compiler.target.shadertoy import is_complete
 
-from ...analysis.flow import parameter_parts, prototype_parts
+from ...analysis.syntax import parameter_parts, prototype_parts
 from ...context import LintContext
 from ...finding import Finding
 from .. import Rule, register

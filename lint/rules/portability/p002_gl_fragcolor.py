@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from ...analysis.flow import parameter_parts, prototype_parts
+from ...analysis.syntax import parameter_parts, prototype_parts
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
 from .. import Rule, register

@@ -9,8 +9,8 @@ from lark import Tree
 
 from glint.compiler.glsl.keywords import words
 
-from ...analysis.flow import prototype_parts, type_of_declaration
 from ...analysis.model import Model, semantic_model
+from ...analysis.syntax import prototype_parts, type_of_declaration
 from ...analysis.types import is_float_like
 from ...context import LintContext, walk
 from ...finding import Finding, Fix
