@@ -416,3 +416,16 @@ def condition_truth(model: Model, cond: Node) -> bool | None:
     elif x.is_point and y.is_point:
         equal = True
     return equal if op == "==" or equal is None else not equal
+
+
+# --- shortcuts for the rules -----------------------------------------------------------------
+
+
+def is_unit(ctx: LintContext, expr: Node) -> bool:
+    """Whether the model proves the expression unit length."""
+    return semantic_model(ctx).is_unit(expr)
+
+
+def may_be_negative(ctx: LintContext, expr: Node) -> bool:
+    """Whether the model's range of the value reaches below zero."""
+    return semantic_model(ctx).range_of(expr).may_be_negative

@@ -9,7 +9,7 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node, walk
 
-# --- tree helpers -------------------------------------------------------------------------
+# --- calls, lvalues and types ------------------------------------------------------------
 
 
 def is_tree(node: object, *kinds: str) -> bool:
@@ -141,3 +141,87 @@ def prototype_parts(proto: Tree) -> tuple[str, Token, list[Tree]]:
         params = [p for p in proto.children[2].children if isinstance(p, Tree)]
     ret_type, _ = type_of_declaration(ret)  # type: ignore[arg-type]
     return ret_type, name, params  # type: ignore[return-value]
+
+
+# --- names, operands and parents ----------------------------------------------------------
+
+
+def call_name(node: Node) -> str | None:
+    """The called name of a `call` node (`f(x)` -> "f"), None for anything else."""
+    return callee_name(node) if is_tree(node, "call") else None  # type: ignore[arg-type]
+
+
+def var_name(node: Node) -> str | None:
+    if isinstance(node, Tree) and node.data == "variable":
+        return str(node.children[0])
+    return None
+
+
+def last_name(node: Node) -> str | None:
+    """`x` -> "x", `s.N` -> "N" (the innermost name a reader sees), else None."""
+    if isinstance(node, Tree):
+        if node.data == "variable":
+            return str(node.children[0])
+        if node.data == "field":
+            return str(node.children[-1])
+    return None
+
+
+def root_var(node: Node) -> str | None:
+    """The variable an lvalue writes: `a`, `a.x`, `a[i].y` -> "a"."""
+    while isinstance(node, Tree) and node.data in ("field", "index"):
+        node = node.children[0]
+    return var_name(node)
+
+
+def is_simple(node: Node) -> bool:
+    """An identifier, or fields/swizzles/constant indices of one: no side effects, cheap to
+    repeat, and a postfix expression that needs no parentheses."""
+    while isinstance(node, Tree) and node.data in ("field", "index"):
+        if node.data == "index" and not (
+            isinstance(node.children[1], Tree) and node.children[1].data == "int_literal"
+        ):
+            return False
+        node = node.children[0]
+    return var_name(node) is not None
+
+
+def binary_op(node: Node) -> str | None:
+    if isinstance(node, Tree) and node.data == "binary":
+        return str(node.children[1])
+    return None
+
+
+def operands(node: Node, op: str) -> list[Node]:
+    """The operands of a chain of one associative operator (`a + b + c` -> [a, b, c])."""
+    found: list[Node] = []
+    stack = [node]  # iterative: long sums must not exhaust the stack
+    while stack:
+        item = stack.pop()
+        if binary_op(item) == op:
+            assert isinstance(item, Tree)
+            stack += [item.children[2], item.children[0]]
+        else:
+            found.append(item)
+    return found
+
+
+def parents(root: Tree) -> dict[int, Tree]:
+    """Parent of every subtree and token under `root`, keyed by id()."""
+    result: dict[int, Tree] = {}
+    for node in walk(root):
+        for child in node.children:
+            result[id(child)] = node
+    return result
+
+
+def names_in(node: Node) -> set[str]:
+    """Every variable name read or written under the node (call heads excluded)."""
+    if not isinstance(node, Tree):
+        return set()
+    heads = {id(s.children[0]) for s in walk(node) if s.data == "call"}
+    return {str(s.children[0]) for s in walk(node) if s.data == "variable" and id(s) not in heads}
+
+
+def calls_in(node: Node) -> list[Tree]:
+    return [s for s in walk(node) if s.data == "call"] if isinstance(node, Tree) else []

@@ -8,26 +8,20 @@ import re
 
 from lark import Tree
 
+from ...analysis.constants import const_value, global_constants, is_compile_time
+from ...analysis.functions import Function, function_map, functions, resolve
 from ...analysis.model import semantic_model
-from ...context import LintContext, Node, walk
-from ._terms import (
-    Function,
+from ...analysis.syntax import (
     binary_op,
     call_args,
     call_name,
     calls_in,
-    const_value,
-    cosine_of,
-    function_map,
-    functions,
-    global_constants,
-    is_compile_time,
     operands,
-    resolve,
     root_var,
     var_name,
-    vector_role,
 )
+from ...context import LintContext, Node, walk
+from ._terms import cosine_of, vector_role
 
 COSINE_TEXT = {"NL": "N·L", "NH": "N·H", "NV": "N·V", "VH": "V·H", "LV": "L·V"}
 

@@ -7,21 +7,14 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ...analysis.constants import const_value
+from ...analysis.functions import Function, functions
+from ...analysis.syntax import call_args, call_name, calls_in
 from ...context import LintContext, Node
 from ...finding import Finding
 from .. import Rule, register
 from ._common import COSINE_TEXT, short_text
-from ._terms import (
-    Function,
-    call_args,
-    call_name,
-    calls_in,
-    const_value,
-    cosine_of,
-    functions,
-    is_fresnel_name,
-    schlick_base,
-)
+from ._terms import cosine_of, is_fresnel_name, schlick_base
 
 
 def _fresnel_terms(fn: Function) -> Iterator[tuple[Tree, Node]]:

@@ -7,27 +7,15 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ...analysis.constants import const_value
+from ...analysis.functions import Function, functions, resolve
+from ...analysis.model import is_unit, may_be_negative
+from ...analysis.syntax import binary_op, call_name, names_in, operands, parents, root_var, var_name
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
 from ._common import COSINE_TEXT, short_text
-from ._terms import (
-    Function,
-    binary_op,
-    call_name,
-    const_value,
-    cosine_of,
-    functions,
-    is_unit,
-    may_be_negative,
-    names_in,
-    operands,
-    parents,
-    resolve,
-    root_var,
-    var_name,
-    vector_role,
-)
+from ._terms import cosine_of, vector_role
 
 _DIFFUSE_FUNCTION = re.compile(r"diffuse|lambert|brdf|shade|light|illum|^fd|^dif", re.I)
 

@@ -7,23 +7,13 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ...analysis.constants import const_value
+from ...analysis.functions import Function, function_map, functions, resolve
+from ...analysis.syntax import binary_op, call_args, call_name, calls_in, last_name, operands
 from ...context import LintContext, Node
 from ...finding import Finding
 from .. import Rule, register
 from ._common import short_text
-from ._terms import (
-    Function,
-    binary_op,
-    call_args,
-    call_name,
-    calls_in,
-    const_value,
-    function_map,
-    functions,
-    last_name,
-    operands,
-    resolve,
-)
 
 _GGX_LIKE = re.compile(
     r"ggx|smith|trowbridge|beckmann|distribution|visibility|geometry|ndf|^d_|^v_|^g_|g1", re.I

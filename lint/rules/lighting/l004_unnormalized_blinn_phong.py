@@ -5,27 +5,23 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from ...analysis.constants import const_value
+from ...analysis.functions import Function, callable_from_main, functions
+from ...analysis.liveness import reaches_output
+from ...analysis.syntax import (
+    binary_op,
+    call_args,
+    call_name,
+    calls_in,
+    names_in,
+    operands,
+    parents,
+)
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
 from ._common import short_text
-from ._terms import (
-    Function,
-    binary_op,
-    call_args,
-    call_name,
-    callable_from_main,
-    calls_in,
-    const_value,
-    cosine_of,
-    functions,
-    is_fresnel_name,
-    names_in,
-    operands,
-    parents,
-    reaches_output,
-    schlick_base,
-)
+from ._terms import cosine_of, is_fresnel_name, schlick_base
 
 _PBR_NAME = re.compile(r"ggx|smith|cook|torrance|beckmann|trowbridge", re.I)
 

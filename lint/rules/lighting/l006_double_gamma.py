@@ -4,16 +4,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from ...analysis.functions import functions
+from ...analysis.syntax import calls_in, names_in, root_var
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
 from ._common import ColourOutput, main_image, short_text
-from ._terms import (
-    calls_in,
-    functions,
-    names_in,
-    root_var,
-)
 
 
 @register

@@ -7,7 +7,18 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ...analysis.constants import const_value, global_constants
+from ...analysis.functions import Function, callable_from_main, functions
 from ...analysis.model import semantic_model
+from ...analysis.syntax import (
+    binary_op,
+    call_args,
+    call_name,
+    calls_in,
+    operands,
+    parents,
+    root_var,
+)
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
@@ -22,22 +33,7 @@ from ._common import (
     rough_bound,
     short_text,
 )
-from ._terms import (
-    Function,
-    binary_op,
-    call_args,
-    call_name,
-    callable_from_main,
-    calls_in,
-    const_value,
-    cosine_of,
-    functions,
-    global_constants,
-    lights_surface,
-    operands,
-    parents,
-    root_var,
-)
+from ._terms import cosine_of, lights_surface
 
 
 def _light_terms(fn: Function, up: dict[int, Tree]) -> list[Node]:

@@ -7,27 +7,23 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from ...context import LintContext, Node, walk
-from ...finding import Finding
-from .. import Rule, register
-from ._common import is_lobe, product_factors, short_text
-from ._terms import (
-    Function,
+from ...analysis.constants import const_value
+from ...analysis.functions import Function, function_map, functions
+from ...analysis.syntax import (
     binary_op,
     call_args,
     call_name,
     calls_in,
-    const_value,
-    cosine_of,
-    function_map,
-    functions,
-    is_fresnel_name,
     last_name,
     names_in,
     operands,
     parents,
-    schlick_base,
 )
+from ...context import LintContext, Node, walk
+from ...finding import Finding
+from .. import Rule, register
+from ._common import is_lobe, product_factors, short_text
+from ._terms import cosine_of, is_fresnel_name, schlick_base
 
 _DIFFUSE_NAME = re.compile(
     r"^(diffuse|diff|dif|fd|lambert|albedo|base_?colou?r|basecol|base|kd_?albedo)$", re.I

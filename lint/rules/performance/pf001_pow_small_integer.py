@@ -4,19 +4,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from ...analysis.constants import const_value, folded
+from ...analysis.functions import Function, function_map
+from ...analysis.syntax import call_args, call_name, is_simple, parents
 from ...context import LintContext, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
-from ..lighting._terms import (
-    Function,
-    call_args,
-    call_name,
-    const_value,
-    folded,
-    function_map,
-    is_simple,
-    parents,
-)
 from ._common import needs_parens
 
 

@@ -7,22 +7,13 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ...analysis.constants import const_value, global_constants
+from ...analysis.functions import Function, functions, out_param_map, writes_of
+from ...analysis.syntax import call_args, call_name, names_in, parents
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
 from ..lighting._common import macros_used, short_text
-from ..lighting._terms import (
-    Function,
-    call_args,
-    call_name,
-    const_value,
-    functions,
-    global_constants,
-    names_in,
-    out_param_map,
-    parents,
-    writes_of,
-)
 from ._common import BUILTINS
 
 # Builtins worth hoisting: transcendental, square roots, texture fetches, normalisation.

@@ -6,23 +6,13 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from ...analysis.constants import folded
+from ...analysis.functions import Function, functions, out_param_map, resolve, writes_of
+from ...analysis.model import is_unit
+from ...analysis.syntax import call_args, call_name, names_in, parents, var_name
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
-from ..lighting._terms import (
-    Function,
-    call_args,
-    call_name,
-    folded,
-    functions,
-    is_unit,
-    names_in,
-    out_param_map,
-    parents,
-    resolve,
-    var_name,
-    writes_of,
-)
 from ._common import needs_parens
 
 
