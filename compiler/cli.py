@@ -16,7 +16,9 @@ from contextlib import contextmanager
 from importlib.metadata import entry_points
 from pathlib import Path
 
+from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import GlintError, UsageError
+from glint.compiler.files import read_text_file
 from glint.compiler.target.shadertoy import TARGETS
 
 PROG = "glint"
@@ -133,7 +135,7 @@ def _add_target(parser: argparse.ArgumentParser) -> None:
 
 
 def _add_quality(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--tier", choices=("fast", "balanced", "reference"), help="quality tier")
+    parser.add_argument("--tier", choices=TIERS, help="quality tier")
     parser.add_argument(
         "--budget",
         type=_budget,
@@ -203,26 +205,11 @@ def _version() -> str:
     return glint_version()
 
 
-def _read_text(path: str) -> str:
-    from glint.compiler.errors import InputError
-
-    try:
-        return Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise InputError(f"{path}: is a folder, expected a shader file") from None
-    except UnicodeDecodeError:
-        raise InputError(f"{path}: not UTF-8 text; is it a shader?") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read: {exc.strerror}") from None
-
-
 def cmd_compose(args: argparse.Namespace) -> int:
     from glint.compiler.compose.explain import explain
     from glint.compiler.compose.pipeline import compose_scene
     from glint.compiler.compose.scene import load_scene
-    from glint.compiler.outputs import write_atomic
+    from glint.compiler.files import write_atomic
 
     scene = load_scene(args.scene)
     shader = compose_scene(scene, args.target, args.tier, _overrides(args.variant), args.budget)
@@ -295,7 +282,7 @@ def _progress_bar(label: str, total: int) -> Iterator[Callable[[str], None]]:
 def cmd_validate(args: argparse.Namespace) -> int:
     from glint.compiler.target.glslang import validate
 
-    source = _read_text(args.file)
+    source = read_text_file(args.file)
     diagnostics = validate(source, args.file, args.target)
     for diagnostic in diagnostics:
         print(diagnostic)
@@ -315,7 +302,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         overrides = _overrides(args.variant)
         source = compose(args.input, "shadertoy", args.tier, overrides, args.budget).text
     else:
-        source = _read_text(args.input)
+        source = read_text_file(args.input)
     width, height = args.size
     result = render_full(
         source, width, height, args.time, args.frame, args.mouse, timeout=args.timeout

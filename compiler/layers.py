@@ -28,7 +28,7 @@ _ROOT = Path(__file__).resolve().parents[1]
 # is its own package).
 LAYERS: list[tuple[str, ...]] = [
     ("errors",),
-    ("outputs",),  # writing files whole
+    ("files",),  # reading input files, writing output files whole
     ("glsl",),
     ("target", "evaluator"),  # the evaluator runs GLSL on the CPU: it needs the front end only
     ("catalog",),

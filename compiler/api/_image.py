@@ -8,7 +8,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from glint.compiler.errors import InputError, UsageError
+from glint.compiler.errors import UsageError
+from glint.compiler.files import read_text_file
 
 from ._shader import Shader, compose, is_source
 
@@ -152,7 +153,7 @@ def _source(shader: object) -> str:
         return str(shader)
     if isinstance(shader, str | os.PathLike):
         path = os.fspath(shader)
-        return compose(path).text if str(path).endswith(".toml") else _read_text(str(path))
+        return compose(path).text if str(path).endswith(".toml") else read_text_file(str(path))
     from glint.compiler.compose.scene import Scene
 
     if isinstance(shader, Mapping | Scene):
@@ -161,17 +162,3 @@ def _source(shader: object) -> str:
         "render takes a Shader, Image-tab code, the path of a shader or a scene, a dict or a "
         f"Scene, not {type(shader).__name__}"
     )
-
-
-def _read_text(path: str) -> str:
-    """The text of a shader file, failing with the messages of `glint render`."""
-    try:
-        return Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise InputError(f"{path}: is a folder, expected a shader file") from None
-    except UnicodeDecodeError:
-        raise InputError(f"{path}: not UTF-8 text; is it a shader?") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read: {exc.strerror}") from None

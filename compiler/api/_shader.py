@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import InputError, UsageError
 from glint.compiler.target.shadertoy import TARGETS
 
@@ -22,7 +23,6 @@ if TYPE_CHECKING:
     # What `compose` takes for a scene.
     SceneInput = str | os.PathLike[str] | Mapping[str, Any] | Scene | None
 
-TIERS = ("fast", "balanced", "reference")  # the choices of `glint compose --tier`
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -65,7 +65,7 @@ class Shader:
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the shader to `path` (atomically, like `glint compose -o`); returns the path."""
-        from glint.compiler.outputs import write_atomic
+        from glint.compiler.files import write_atomic
 
         write_atomic(path, self.text.encode("utf-8"))
         return Path(path)

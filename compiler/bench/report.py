@@ -12,7 +12,7 @@ from typing import Any
 from glint.compiler.bench.scenes import Goal, TierMeasure
 from glint.compiler.bench.variants import VariantMeasure
 from glint.compiler.catalog.measurements import measurements_path
-from glint.compiler.outputs import write_atomic
+from glint.compiler.files import write_atomic
 
 
 @dataclass

@@ -14,7 +14,7 @@ import numpy as np
 from PIL import Image
 
 from glint.compiler.errors import InputError
-from glint.compiler.outputs import write_atomic
+from glint.compiler.files import write_atomic
 
 # A pixel counts as black or white when every RGB channel is within one 8-bit step of the end.
 BLACK_LEVEL = 1.0 / 255.0
