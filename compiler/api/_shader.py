@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from glint.compiler.catalog.tiers import TIERS
-from glint.compiler.errors import InputError, UsageError
+from glint.compiler.errors import UsageError
 from glint.compiler.target.shadertoy import TARGETS
 
 if TYPE_CHECKING:
@@ -132,25 +132,12 @@ def load_scene(scene: SceneInput) -> Scene:
     if isinstance(scene, scenes.Scene):
         return scene
     if isinstance(scene, Mapping):
-        return _scene_from_dict(scene)
+        from glint.compiler.compose.scene import scene_from_dict
+
+        return scene_from_dict(scene)
     raise UsageError(
         f"a scene is the path of a TOML file, a dict or a Scene, not {type(scene).__name__}"
     )
-
-
-def _scene_from_dict(data: Mapping[str, Any], name: str = "<scene>") -> Scene:
-    """Validate a dict as `parse_scene` validates a parsed TOML file, with its messages."""
-    from pydantic import ValidationError
-
-    from glint.compiler.compose.scene import Scene, describe_error
-
-    try:
-        return Scene.model_validate(dict(data))
-    except ValidationError as exc:
-        errors = exc.errors()
-        more = len(errors) - 1
-        suffix = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
-        raise InputError(f"{name}: {describe_error(errors[0])}{suffix}") from None
 
 
 def _check_choice(name: str, value: str, choices: tuple[str, ...]) -> None:

@@ -7,6 +7,7 @@ effects, post) and how much accuracy to pay for (quality). Nothing in it execute
 from __future__ import annotations
 
 import tomllib
+from collections.abc import Mapping
 from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -250,8 +251,14 @@ def parse_scene(text: str, filename: str = "<scene>") -> Scene:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"{filename}: not valid TOML: {exc}") from None
+    return scene_from_dict(data, filename)
+
+
+def scene_from_dict(data: Mapping[str, Any], filename: str = "<scene>") -> Scene:
+    """A scene from the tables of a scene file (a dict), validated, with one message naming
+    the first problem's key."""
     try:
-        return Scene.model_validate(data)
+        return Scene.model_validate(dict(data))
     except ValidationError as exc:
         first = exc.errors()[0]
         more = len(exc.errors()) - 1
