@@ -231,6 +231,8 @@ _SPECIAL: dict[str, Callable[[list[Value], list[Node]], tuple[Interval, bool, Co
 }
 
 
+# --- evidence of a 0 ---------------------------------------------------------------------
+
 # Builtins whose result really passes through 0 when its range contains it (a length at the
 # origin, sin at kπ, fract at integers), as opposed to a range widened by interval arithmetic.
 REACH_ZERO = words(

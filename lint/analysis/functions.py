@@ -14,6 +14,9 @@ from .syntax import call_args, call_name, calls_in, root_var, var_name
 
 @dataclass
 class Function:
+    """A function definition with its parameters and locals by name, and what it writes (the
+    semantic model's view of a function, with the values it returns, is values.Function)."""
+
     name: str
     node: Tree  # function_definition
     body: Tree  # compound_statement

@@ -10,6 +10,11 @@ Facts about parameters come from the call sites: a second pass gives each parame
 of the arguments passed to it in the first pass (functions never called keep unknown
 parameters). Unknown is (-inf, inf) and never yields a finding, so whatever the model cannot
 follow makes it quieter, never noisier.
+
+This module holds the Model (the API the rules use, and the rounds of the analysis); its parts
+are modules of their own: values.py (what is known of a value, and the join), scopes.py (the
+variables in scope, joined and widened), statements.py (the forward pass over a function's
+statements), expressions.py (the evaluator) and builtin_rules.py (the builtins' ranges).
 """
 
 from __future__ import annotations

@@ -1,5 +1,6 @@
 """Shapes of the parse tree that the analyses and the rules read: calls and their arguments,
-the variable an lvalue writes, type names, and whether two expressions are written alike."""
+the variable an lvalue writes, type names, prototypes and parameters, operand chains, the names
+under an expression, every node's parent, and whether two expressions are written alike."""
 
 from __future__ import annotations
 

@@ -83,7 +83,7 @@ def _common_facts(a: tuple, b: tuple) -> tuple:  # type: ignore[type-arg]
     return tuple(f for f in a if any(f[:-1] == g[:-1] and f[-1] is g[-1] for g in b))
 
 
-Comps = tuple[Interval, ...] | None
+Comps = tuple[Interval, ...] | None  # ranges per component of a vector, when known
 
 
 @dataclass
