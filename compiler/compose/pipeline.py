@@ -38,10 +38,12 @@ def compose_scene(
 ) -> Shader:
     """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements."""
     catalog = load_catalog()
-    the_plan = plan(scene, catalog, tier, overrides, budget)
+    code = generate(scene)
+    the_plan = plan(scene, catalog, tier, overrides, budget, code.units)
     the_plan = replace(the_plan, params=bake(scene, the_plan))
-    normal = catalog.get(the_plan.choices["normal"])
-    code = generate(scene, normal_in_uniform_flow=uses_derivatives(normal))
+    if uses_derivatives(catalog.get(the_plan.choices["normal"])):
+        # the same calls, written so that the normal is taken in uniform control flow
+        code = generate(scene, normal_in_uniform_flow=True)
     # The constants come first and provide the light names that snippets may require (SUN_DIR);
     # their text is written once the resolver has said which snippets' parameters are needed.
     constants = generated("scene.constants", list(code.defines), [], "", rank=-1)

@@ -26,7 +26,9 @@ from glint.compiler.compose.budget import (
     within_budget,
 )
 from glint.compiler.compose.scene import Scene
+from glint.compiler.compose.scene_code import generate
 from glint.compiler.compose.scene_slots import SlotUse, slot_uses
+from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 
 
@@ -45,9 +47,13 @@ def plan(
     tier: str | None = None,
     overrides: dict[str, str] | None = None,
     budget: float | None = None,
+    units: list[Unit] | None = None,
 ) -> Plan:
     """The plan of `scene` at `tier`; with `budget` (ns per pixel) the quality slots take the
-    most accurate measured variants within it instead of the tier's (see budget.py)."""
+    most accurate measured variants within it instead of the tier's (see budget.py). The slots
+    in use are those the scene's generated `units` reach (generated here when not given)."""
+    if units is None:
+        units = generate(scene).units
     tier = tier or scene.quality.tier
     tiers = tier_table()
     result = Plan(tier=tier)
@@ -87,10 +93,10 @@ def plan(
             choose(slot, variant, f"{source} {slot} = {variant!r}")
             fixed.add(slot)
 
-    result.uses = slot_uses(scene, catalog, result.choices)
+    result.uses = slot_uses(scene, catalog, result.choices, units)
     if budget is not None:
         _spend(result, scene, fixed, budget, choose)
-        result.uses = slot_uses(scene, catalog, result.choices)
+        result.uses = slot_uses(scene, catalog, result.choices, units)
     for slot, use in result.uses.items():
         if not use.used:
             result.choices.pop(slot, None)

@@ -37,6 +37,8 @@ class LightCode:
     calls: list[str]  # one term of `shade` per light
     requires: list[str]  # the functions those terms call
     directional: list[str]  # the identifier of each directional light (SUN, LIGHT1, ...)
+    why: list[tuple[str, str]]  # (function called, the light that makes `shade` call it)
+    labels: list[str]  # `lights[i] (type)` of each light, in the scene's order
 
 
 def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
@@ -61,7 +63,7 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
         if scene.medium.level is not None:
             units.append(_submerged_unit(scene.medium.level))
             path = "submerged(ro, rd, t)"
-    units.append(_main_unit(normal_in_uniform_flow, path))
+    units.append(_main_unit(scene, normal_in_uniform_flow, path))
     return SceneCode(defines=lights.defines, units=units)
 
 
@@ -79,6 +81,8 @@ def _lights(scene: Scene) -> LightCode:
     calls: list[str] = []
     requires: list[str] = []
     directional: list[str] = []
+    why: list[tuple[str, str]] = []
+    labels = [f"lights[{i}] ({light.type})" for i, light in enumerate(scene.lights)]
     counts: dict[str, int] = {}
 
     def name(base: str) -> str:
@@ -115,6 +119,9 @@ def _lights(scene: Scene) -> LightCode:
                     visibility = f"pow({cast}, {ident}_PENUMBRA)"
             calls.append(f"directionalLight(s, {ident}_DIR, {ident}_COLOR, {visibility})")
             requires.append("directionalLight")
+            why.append(("directionalLight", f"{labels[i]} is shaded through the BRDF"))
+            if light.shadow:
+                why.append(("shadow", f"{labels[i]} casts shadows"))
         elif isinstance(light, PointLight):
             ident = name("POINT")
             defines[f"{ident}_POS"] = _vec3(light.position)
@@ -127,11 +134,15 @@ def _lights(scene: Scene) -> LightCode:
                 requires.append("shadow")
             calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
             requires.append("pointLight")
+            why.append(("pointLight", f"{labels[i]} is shaded through the BRDF"))
+            if light.shadow:
+                why.append(("shadow", f"{labels[i]} casts shadows"))
         elif isinstance(light, SkyLight):
             ident = name("SKY")
             defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
             calls.append(f"skyLight(s, {ident}_COLOR, occlusion)")
             requires.append("skyLight")
+            why.append(("skyLight", f"{labels[i]} fills the shading"))
         elif isinstance(light, BackLight | BounceLight):
             ident = name(light.type.upper())
             fill_direction(i, ident, light.direction)
@@ -139,12 +150,14 @@ def _lights(scene: Scene) -> LightCode:
             function = f"{light.type}Light"
             calls.append(f"{function}(s, {ident}_DIR, {ident}_COLOR, occlusion)")
             requires.append(function)
+            why.append((function, f"{labels[i]} fills the shading"))
         elif isinstance(light, EnvironmentLight):
             ident = name("ENV_LIGHT")
             defines[f"{ident}_SCALE"] = glsl_float(light.intensity)
             calls.append(f"irradianceLight(s, {ident}_SCALE, occlusion)")
             requires.append("irradianceLight")
-    return LightCode(defines, calls, requires, directional)
+            why.append(("irradianceLight", f"{labels[i]} lights with the environment's irradiance"))
+    return LightCode(defines, calls, requires, directional, why, labels)
 
 
 def _distance(obj: Sphere | Plane | Box) -> tuple[str, str]:
@@ -278,13 +291,20 @@ def _translucency(ident: str) -> str:
 def _shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
     lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
     requires = ["Surface", *lights.requires]
+    why = list(lights.why)
     light_calls = lights.calls
-    uses_occlusion = any("occlusion" in call for call in light_calls)
+    # the lights AO darkens: those whose term takes the occlusion (fill and environment lights)
+    occluded = [label for label, call in zip(lights.labels, light_calls, strict=True)
+                if "occlusion" in call]  # fmt: skip
     reflection = scene.environment is not None and scene.environment.reflection
+    if reflection:
+        why.append(("environmentLight", "environment.reflection = true"))
+        occluded.append("the environment reflection")
     occlusion = "1.0"
-    if scene.effects.ao and (uses_occlusion or reflection):
+    if scene.effects.ao and occluded:
         lines.append("    float occlusion = ambientOcclusion(s.P, s.N);")
         requires.append("ambientOcclusion")
+        why.append(("ambientOcclusion", f"effects.ao darkens {', '.join(occluded)}"))
         occlusion = "occlusion"
     lines.append("    vec3 color = vec3(0.0);")
     for call in light_calls:
@@ -293,11 +313,18 @@ def _shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
         lines.append("    vec4 sss = subsurfaceAt(s.P);")
         lines += [f"    color += {_translucency(ident)};" for ident in lights.directional]
         requires += ["subsurfaceAt", "subsurface", "phase"]
+        material = next(
+            m for m in scene.used_materials() if scene.materials[m].subsurface is not None
+        )
+        first = lights.labels[next(i for i, light in enumerate(scene.lights)
+                                   if isinstance(light, DirectionalLight))]  # fmt: skip
+        reason = f"material {material!r} has subsurface, lit by {first}"
+        why += [("subsurface", reason), ("phase", reason)]
     if reflection:
         lines.append(f"    color += environmentLight(s, {occlusion});")
         requires.append("environmentLight")
     lines += ["    return color;", "}"]
-    return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n")
+    return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n", why=why)
 
 
 def _submerged_unit(level: float) -> Unit:
@@ -317,14 +344,24 @@ float submerged(vec3 ro, vec3 rd, float t) {{
     return generated("scene.submerged", ["submerged"], [], body)
 
 
-def _main_unit(normal_in_uniform_flow: bool, medium_path: str | None = None) -> Unit:
+def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | None = None) -> Unit:
     requires = [
         "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
         "outputTransfer", "tonemap",
     ]  # fmt: skip
+    why = [
+        ("cameraRay", f"camera.type = {scene.camera.type!r}"),
+        ("raymarch", "every pixel marches its ray to the first surface"),
+        ("calcNormal", "shading needs the surface normal"),
+        ("background", "rays that hit nothing show the background"),
+        ("tonemap", f"post.tonemap = {scene.post.tonemap!r}"),
+        ("outputTransfer", f"post.output = {scene.post.output!r}"),
+    ]
     # The medium lies between the eye and the surfaces; the background is outside it.
     through = ""
     if medium_path is not None:
+        kind = "water" if "submerged" in medium_path else "fog"
+        why.append(("medium", f"[medium] ({kind})"))
         requires.append("medium")
         requires += ["submerged"] if "submerged" in medium_path else []
         through = f"        color = medium(color, {medium_path});\n"
@@ -357,4 +394,4 @@ def _main_unit(normal_in_uniform_flow: bool, medium_path: str | None = None) -> 
         "    fragColor = vec4(color, 1.0);\n"
         "}\n"
     )
-    return generated("scene.main", ["mainImage"], requires, body)
+    return generated("scene.main", ["mainImage"], requires, body, why=why)

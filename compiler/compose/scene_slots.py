@@ -1,12 +1,12 @@
-"""Which slots a scene exercises, and why: the planner's reading of the scene's content.
+"""Which slots a scene exercises, and why: the planner's reading of the scene's own code.
 
-The content (its lights, materials, environment, medium, effects) names what the shading code
-calls: a shadow-casting light calls `shadow`, a point light `pointLight`, and so on. Following
-those calls through the catalog (a light snippet calls `lightResponse`, which calls `fresnel`,
-`diffuse` and `specular`; the Cook-Torrance lobe calls `distribution` and `visibility`) gives
-every slot the shader needs; the rest stay out, each with the reason it is out. The resolver
-then takes exactly these slots: a slot it reaches that the planner left out is an error, and a
-test keeps the two in agreement for every example scene.
+The scene's generated units (scene_code.py) call what its content needs, each call with its
+reason: a shadow-casting light makes `shade` call `shadow`, a point light `pointLight`, and so
+on. Following those calls through the catalog (a light snippet calls `lightResponse`, which
+calls `fresnel`, `diffuse` and `specular`; the Cook-Torrance lobe calls `distribution` and
+`visibility`) gives every slot the shader needs; the rest stay out, each with the reason it is
+out. The resolver follows the same calls (and the same rule of which snippet provides what,
+resolver.providers), so it takes exactly these slots; a test checks it for every example scene.
 """
 
 from __future__ import annotations
@@ -16,15 +16,8 @@ from dataclasses import dataclass
 from glint.compiler.catalog.loader import Catalog
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.compose.resolver import providers
-from glint.compiler.compose.scene import (
-    BackLight,
-    BounceLight,
-    DirectionalLight,
-    EnvironmentLight,
-    PointLight,
-    Scene,
-    SkyLight,
-)
+from glint.compiler.compose.scene import Scene
+from glint.compiler.compose.units import Unit
 
 
 @dataclass(frozen=True)
@@ -56,52 +49,12 @@ def translucent_materials(scene: Scene) -> list[str]:
     return [m for m in scene.used_materials() if scene.materials[m].subsurface is not None]
 
 
-def _roots(scene: Scene) -> list[tuple[str, str]]:
-    """(symbol the scene's own code calls, why) for every call that depends on content."""
-    roots = [
-        ("cameraRay", f"camera.type = {scene.camera.type!r}"),
-        ("raymarch", "every pixel marches its ray to the first surface"),
-        ("calcNormal", "shading needs the surface normal"),
-        ("background", "rays that hit nothing show the background"),
-        ("tonemap", f"post.tonemap = {scene.post.tonemap!r}"),
-        ("outputTransfer", f"post.output = {scene.post.output!r}"),
-    ]
-    occluded: list[str] = []  # what AO would darken
-    first_directional = None
-    for i, light in enumerate(scene.lights):
-        label = f"lights[{i}] ({light.type})"
-        if isinstance(light, DirectionalLight | PointLight):
-            function = "directionalLight" if isinstance(light, DirectionalLight) else "pointLight"
-            roots.append((function, f"{label} is shaded through the BRDF"))
-            if light.shadow:
-                roots.append(("shadow", f"{label} casts shadows"))
-            if isinstance(light, DirectionalLight) and first_directional is None:
-                first_directional = label
-        elif isinstance(light, SkyLight | BackLight | BounceLight):
-            roots.append((f"{light.type}Light", f"{label} fills the shading"))
-            occluded.append(label)
-        elif isinstance(light, EnvironmentLight):
-            roots.append(("irradianceLight", f"{label} lights with the environment's irradiance"))
-            occluded.append(label)
-    reflection = scene.environment is not None and scene.environment.reflection
-    if reflection:
-        roots.append(("environmentLight", "environment.reflection = true"))
-        occluded.append("the environment reflection")
-    if scene.effects.ao and occluded:
-        roots.append(("ambientOcclusion", f"effects.ao darkens {', '.join(occluded)}"))
-    translucent = translucent_materials(scene)
-    if translucent and first_directional is not None:
-        why = f"material {translucent[0]!r} has subsurface, lit by {first_directional}"
-        roots += [("subsurface", why), ("phase", why)]
-    if scene.medium is not None:
-        kind = "water" if scene.medium.level is not None else "fog"
-        roots.append(("medium", f"[medium] ({kind})"))
-    return roots
-
-
-def slot_uses(scene: Scene, catalog: Catalog, choices: dict[str, str]) -> dict[str, SlotUse]:
-    """Every one-variant slot: in (and why) or out (and why), given the variant of each slot
-    (the variants decide what else is reached: Cook-Torrance calls D and V, Phong does not)."""
+def slot_uses(
+    scene: Scene, catalog: Catalog, choices: dict[str, str], units: list[Unit]
+) -> dict[str, SlotUse]:
+    """Every one-variant slot: in (and why) or out (and why), from what the scene's generated
+    `units` call, given the variant of each slot (the variants decide what else is reached:
+    Cook-Torrance calls D and V, Phong does not)."""
     reached: dict[str, str] = {}
 
     def follow(symbol: str, root: str, caller: str | None = None) -> None:
@@ -119,8 +72,14 @@ def slot_uses(scene: Scene, catalog: Catalog, choices: dict[str, str]) -> dict[s
         for requirement in snippet.requires:
             follow(requirement, root, snippet.id)
 
-    for symbol, root in _roots(scene):
-        follow(symbol, root)
+    # mainImage first: what it calls reaches the background before the lights reach the sky
+    ordered = sorted(units, key=lambda unit: unit.id != "scene.main")
+    for unit in ordered:
+        for symbol, root in unit.why:
+            follow(symbol, root)
+    for unit in ordered:  # then what the scene's code calls whatever its content
+        for symbol in unit.requires:
+            follow(symbol, f"the scene's code calls it ({unit.id})")
     uses = {}
     for name, slot in SLOTS.items():
         if slot.many:

@@ -22,6 +22,10 @@ class Unit:
     # Where the unit goes among units that are ready at the same time (lower first); generated
     # units go after the snippets unless they say otherwise. Dependencies always come first.
     rank: int | None = None
+    # For the scene's own code: the calls that its content decided, each with the reason
+    # (("shadow", "lights[0] (directional) casts shadows"), ...), in the order the planner
+    # reads them (compose/scene_slots.py).
+    why: tuple[tuple[str, str], ...] = ()
 
 
 def from_snippet(snippet: Snippet) -> Unit:
@@ -38,7 +42,12 @@ def from_snippet(snippet: Snippet) -> Unit:
 
 
 def generated(
-    unit_id: str, provides: list[str], requires: list[str], body: str, rank: int | None = None
+    unit_id: str,
+    provides: list[str],
+    requires: list[str],
+    body: str,
+    rank: int | None = None,
+    why: list[tuple[str, str]] | None = None,
 ) -> Unit:
     return Unit(
         id=unit_id,
@@ -49,4 +58,5 @@ def generated(
         origin=GENERATED,
         line=1,
         rank=rank,
+        why=tuple(why or ()),
     )
