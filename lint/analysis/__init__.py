@@ -1,5 +1,7 @@
-"""Analyses that rules share, computed once per file: the semantic model (scopes, types and
-value ranges of expressions) and data flow."""
+"""Analyses that rules share, computed once per file: the semantic model (types, value ranges
+and unit length of expressions: model.py and its parts), definite assignment (flow.py), a
+file's functions and locals (functions.py), constant folding (constants.py) and liveness of
+values (liveness.py); and the shapes of the parse tree they all read (syntax.py)."""
 
 from __future__ import annotations
 
