@@ -61,6 +61,7 @@ class LintContext:
     cache: dict[str, Any] = field(default_factory=dict)
     _glslang: list[Diagnostic] | None = None
     _index: dict[str, list[Tree]] | None = None
+    _parents: dict[int, Tree] | None = None
 
     def __post_init__(self) -> None:
         if not self.lines:
@@ -85,6 +86,17 @@ class LintContext:
                 for node in walk(self.tree):
                     self._index.setdefault(node.data, []).append(node)
         return self._index.get(kind, [])
+
+    def parents(self) -> dict[int, Tree]:
+        """The parent of every subtree and token of the file, by id() (lark nodes hash by
+        value, not identity); built once per file for all rules. Empty without a tree."""
+        if self._parents is None:
+            self._parents = {}
+            if self.tree is not None:
+                for node in walk(self.tree):
+                    for child in node.children:
+                        self._parents[id(child)] = node
+        return self._parents
 
     # --- positions ------------------------------------------------------------------------
 

@@ -24,7 +24,6 @@ if TYPE_CHECKING:
     SceneInput = str | os.PathLike[str] | Mapping[str, Any] | Scene | None
 
 
-
 @dataclass(frozen=True, eq=False, repr=False)
 class Shader:
     """A composed shader: `text` is what `glint compose` writes for the same scene and options.

@@ -144,7 +144,7 @@ def prototype_parts(proto: Tree) -> tuple[str, Token, list[Tree]]:
     return ret_type, name, params  # type: ignore[return-value]
 
 
-# --- names, operands and parents ----------------------------------------------------------
+# --- names and operands ----------------------------------------------------------------
 
 
 def call_name(node: Node) -> str | None:
@@ -205,15 +205,6 @@ def operands(node: Node, op: str) -> list[Node]:
         else:
             found.append(item)
     return found
-
-
-def parents(root: Tree) -> dict[int, Tree]:
-    """Parent of every subtree and token under `root`, keyed by id()."""
-    result: dict[int, Tree] = {}
-    for node in walk(root):
-        for child in node.children:
-            result[id(child)] = node
-    return result
 
 
 def names_in(node: Node) -> set[str]:

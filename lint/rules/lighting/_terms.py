@@ -34,7 +34,6 @@ from ...analysis.syntax import (
     call_name,
     calls_in,
     last_name,
-    parents,
     var_name,
 )
 from ...context import LintContext, Node
@@ -206,7 +205,7 @@ def lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
         return cached  # type: ignore[no-any-return]
     result: list[tuple[Tree, Function]] = []
     used = callable_from_main(ctx)
-    up = parents(ctx.tree) if ctx.tree is not None else {}
+    up = ctx.parents()
     for fn in functions(ctx):
         if used is not None and fn.name not in used:
             continue

@@ -10,7 +10,7 @@ from lark import Tree
 from ...analysis.constants import const_value
 from ...analysis.functions import Function, functions, resolve
 from ...analysis.model import is_unit, may_be_negative
-from ...analysis.syntax import binary_op, call_name, names_in, operands, parents, root_var, var_name
+from ...analysis.syntax import binary_op, call_name, names_in, operands, root_var, var_name
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
@@ -70,7 +70,7 @@ class UnclampedCosine(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
         self._ctx = ctx
-        up = parents(ctx.tree)
+        up = ctx.parents()
         for fn in functions(ctx):
             compared = self._compared(fn)
             for node in walk(fn.body):

@@ -15,7 +15,6 @@ from ...analysis.syntax import (
     calls_in,
     names_in,
     operands,
-    parents,
 )
 from ...context import LintContext, Node, walk
 from ...finding import Finding
@@ -34,7 +33,7 @@ def _has_pbr(ctx: LintContext) -> bool:
     a Schlick Fresnel or Fresnel call whose value reaches its function's result."""
     used = callable_from_main(ctx)
     assert ctx.tree is not None
-    up = parents(ctx.tree)
+    up = ctx.parents()
     for fn in functions(ctx):
         if used is not None and fn.name not in used:
             continue
@@ -89,7 +88,7 @@ class UnnormalizedBlinnPhong(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         lobes = []
         assert ctx.tree is not None
-        up = parents(ctx.tree)
+        up = ctx.parents()
         for fn in functions(ctx):
             for node in calls_in(fn.body):
                 if call_name(node) != "pow" or len(call_args(node)) != 2:

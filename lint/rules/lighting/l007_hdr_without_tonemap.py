@@ -16,7 +16,6 @@ from ...analysis.syntax import (
     call_name,
     calls_in,
     operands,
-    parents,
     root_var,
 )
 from ...context import LintContext, Node, walk
@@ -125,7 +124,7 @@ class HdrWithoutTonemap(Rule):
 
     def _evidence(self, ctx: LintContext) -> str:
         assert ctx.tree is not None
-        up = parents(ctx.tree)
+        up = ctx.parents()
         for fn in functions(ctx):
             terms = _light_terms(fn, up)
             for term in terms:

@@ -17,7 +17,6 @@ from ...analysis.syntax import (
     last_name,
     names_in,
     operands,
-    parents,
 )
 from ...context import LintContext, Node, walk
 from ...finding import Finding
@@ -82,7 +81,7 @@ class EnergyNotSplit(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        up = parents(ctx.tree)
+        up = ctx.parents()
         defined = function_map(ctx)
         for fn in functions(ctx):
             fresnel_vars = self._fresnel_vars(fn)

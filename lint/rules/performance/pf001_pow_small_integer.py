@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from ...analysis.constants import const_value, folded
 from ...analysis.functions import Function, function_map
-from ...analysis.syntax import call_args, call_name, is_simple, parents
+from ...analysis.syntax import call_args, call_name, is_simple
 from ...context import LintContext, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
@@ -74,7 +74,7 @@ class PowSmallInteger(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        up = parents(ctx.tree)
+        up = ctx.parents()
         owner = _owners(ctx)
         for node in ctx.nodes("call"):
             if call_name(node) != "pow":

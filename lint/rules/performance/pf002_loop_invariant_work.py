@@ -9,7 +9,7 @@ from lark import Tree
 
 from ...analysis.constants import const_value, global_constants
 from ...analysis.functions import Function, functions, out_param_map, writes_of
-from ...analysis.syntax import call_args, call_name, names_in, parents
+from ...analysis.syntax import call_args, call_name, names_in
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
@@ -265,7 +265,7 @@ class LoopInvariant(Rule):
         global_writes = set().union(*(f.written for f in functions(ctx))) & other_globals
         reported: list[tuple[int, int]] = []
         assert ctx.tree is not None
-        up = parents(ctx.tree)
+        up = ctx.parents()
         runs = calls_per_pixel(ctx, up)
         for fn in functions(ctx):
             fixed = constants | _local_consts(fn)

@@ -9,7 +9,7 @@ from lark import Tree
 from ...analysis.constants import folded
 from ...analysis.functions import Function, functions, out_param_map, resolve, writes_of
 from ...analysis.model import is_unit
-from ...analysis.syntax import call_args, call_name, names_in, parents, var_name
+from ...analysis.syntax import call_args, call_name, names_in, var_name
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
@@ -120,7 +120,7 @@ class RedundantNormalize(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        up = parents(ctx.tree)
+        up = ctx.parents()
         consts = _const_values(ctx)
         outs = out_param_map(ctx)
         for fn in functions(ctx):

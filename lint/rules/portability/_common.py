@@ -63,12 +63,3 @@ def function_prototypes(tree: Tree) -> list[Tree]:
         if isinstance(node, Tree) and node.data == "function_prototype":
             found.append(node)
     return found
-
-
-def parent_map(tree: Tree) -> dict[int, Tree]:
-    """Parent of every subtree and token, by id (lark nodes hash by value, not identity)."""
-    parents: dict[int, Tree] = {}
-    for node in walk(tree):
-        for child in node.children:
-            parents[id(child)] = node
-    return parents

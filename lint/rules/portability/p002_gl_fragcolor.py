@@ -10,7 +10,7 @@ from ...analysis.syntax import parameter_parts, prototype_parts
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
-from ._common import declares_name, is_es1, parent_map, signature_problem
+from ._common import declares_name, is_es1, signature_problem
 
 
 def _functions(ctx: LintContext) -> list[Tree]:
@@ -71,7 +71,7 @@ class FragColor(Rule):
         inside: set[int] = set()
         if main is not None and not declares_name(main[0].children[1], main[1]):  # type: ignore[arg-type]
             inside = {id(n) for n in walk(main[0])}
-        parents = parent_map(ctx.tree)
+        parents = ctx.parents()
         for node in ctx.nodes("variable"):
             if node.children[0] not in ("gl_FragColor", "gl_FragData"):
                 continue

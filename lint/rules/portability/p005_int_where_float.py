@@ -15,7 +15,7 @@ from ...analysis.types import is_float_like
 from ...context import LintContext, walk
 from ...finding import Finding, Fix
 from .. import Rule, register
-from ._common import function_prototypes, parent_map
+from ._common import function_prototypes
 
 # Builtins with only float overloads: an int argument never matches (GLSL ES 3.00, section 8).
 FLOAT_ONLY = words(
@@ -76,7 +76,7 @@ class IntWhereFloat(Rule):
         assert ctx.tree is not None
         model = semantic_model(ctx)
         types = model.type_of
-        parents = parent_map(ctx.tree)
+        parents = ctx.parents()
         for node in walk(ctx.tree):
             if node.data == "int_literal":
                 if str(node.children[0])[-1] in "uU":
