@@ -206,21 +206,22 @@ def _version() -> str:
 
 
 def cmd_compose(args: argparse.Namespace) -> int:
-    from glint.compiler.compose.explain import explain
-    from glint.compiler.compose.pipeline import compose_scene
-    from glint.compiler.compose.scene import load_scene
-    from glint.compiler.files import write_atomic
+    import glint
 
-    scene = load_scene(args.scene)
-    shader = compose_scene(scene, args.target, args.tier, _overrides(args.variant), args.budget)
+    shader = glint.compose(
+        Path(args.scene) if args.scene is not None else None,
+        target=args.target,
+        tier=args.tier,
+        variants=_overrides(args.variant),
+        budget=args.budget,
+    )
     if args.explain:
-        sys.stdout.write(explain(scene, shader.plan))
+        sys.stdout.write(shader.explain())
     if args.output:
-        write_atomic(args.output, shader.text.encode("utf-8"))
-        snippets = sum(1 for u in shader.units if u.slot != "scene")
+        shader.save(args.output)
         print(
-            f"wrote {args.output}: {args.target} shader, {snippets} snippets, "
-            f"tier {shader.plan.tier}",
+            f"wrote {args.output}: {args.target} shader, {len(shader.snippets)} snippets, "
+            f"tier {shader.tier}",
             file=sys.stderr,
         )
     elif not args.explain:
@@ -295,26 +296,29 @@ def cmd_validate(args: argparse.Namespace) -> int:
 
 
 def cmd_render(args: argparse.Namespace) -> int:
-    from glint.compiler.compose.pipeline import compose
-    from glint.compiler.render import image_stats, render_full, save_png
+    import glint
 
+    shader: glint.Shader | Path = Path(args.input)
     if args.input.endswith(".toml"):
         overrides = _overrides(args.variant)
-        source = compose(args.input, "shadertoy", args.tier, overrides, args.budget).text
-    else:
-        source = read_text_file(args.input)
+        shader = glint.compose(shader, tier=args.tier, variants=overrides, budget=args.budget)
     width, height = args.size
-    result = render_full(
-        source, width, height, args.time, args.frame, args.mouse, timeout=args.timeout
+    image = glint.render(
+        shader,
+        size=(width, height),
+        time=args.time,
+        frame=args.frame,
+        mouse=args.mouse,
+        timeout=args.timeout,
     )
-    save_png(result.image, args.output)
-    stats = image_stats(result.image)
+    image.save(args.output)
+    stats = image.stats
     report = {
         "input": args.input,
         "output": args.output,
-        "renderer": result.renderer,
-        "glsl_version": result.glsl_version,
-        "draw_seconds": result.draw_seconds,
+        "renderer": image.renderer,
+        "glsl_version": image.glsl_version,
+        "draw_seconds": image.draw_seconds,
         "time": args.time,
         "frame": args.frame,
         **stats,
@@ -322,7 +326,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(report, indent=2))
     else:
-        print(f"wrote {args.output} ({width}x{height}, iTime {args.time}) with {result.renderer}")
+        print(f"wrote {args.output} ({width}x{height}, iTime {args.time}) with {image.renderer}")
         print(
             f"  NaN pixels: {stats['nan']}, Inf pixels: {stats['inf']}, "
             f"range [{_num(stats['finite_min'])}, {_num(stats['finite_max'])}], "

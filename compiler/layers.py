@@ -36,8 +36,8 @@ LAYERS: list[tuple[str, ...]] = [
     ("render",),
     ("verify",),
     ("bench",),
-    ("cli", "layers"),
-    ("api",),
+    ("api",),  # `import glint`: what the commands do, as functions
+    ("cli", "layers"),  # the `glint` command, a thin layer over the API
 ]
 # The linter sits beside the compiler's stages: what it may use of them.
 LINT_USES = {"errors", "glsl", "target"}

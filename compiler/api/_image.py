@@ -55,16 +55,9 @@ class Image:
     def to_png(self) -> bytes:
         """The image as an 8-bit RGB PNG, as `glint render` writes it (clamped to [0, 1], NaN
         shown magenta)."""
-        import io
+        from glint.compiler.render.images import png_bytes
 
-        from PIL import Image as PILImage
-
-        from glint.compiler.render.images import to_display
-
-        buffer = io.BytesIO()
-        pixels = (to_display(self.pixels) * 255.0).round().astype("uint8")
-        PILImage.fromarray(pixels, mode="RGB").save(buffer, format="PNG")
-        return buffer.getvalue()
+        return png_bytes(self.pixels)
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the PNG to `path` (atomically); returns the path."""

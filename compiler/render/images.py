@@ -75,12 +75,17 @@ def to_display(img: np.ndarray) -> np.ndarray:
     return np.round(rgb * 255.0) / 255.0
 
 
-def save_png(img: np.ndarray, path: str) -> None:
-    """Write the image as an 8-bit RGB PNG, atomically: readers see the old file or the new one."""
+def png_bytes(img: np.ndarray) -> bytes:
+    """The image as an 8-bit RGB PNG (to_display: clamped to [0, 1], NaN shown magenta)."""
     pixels = (to_display(img) * 255.0).round().astype(np.uint8)
     buffer = io.BytesIO()
     Image.fromarray(pixels, mode="RGB").save(buffer, format="PNG")
-    write_atomic(path, buffer.getvalue())
+    return buffer.getvalue()
+
+
+def save_png(img: np.ndarray, path: str) -> None:
+    """Write the image as an 8-bit RGB PNG, atomically: readers see the old file or the new one."""
+    write_atomic(path, png_bytes(img))
 
 
 def load_png(path: str) -> np.ndarray:
