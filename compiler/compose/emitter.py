@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import Catalog, glsl_value
 from glint.compiler.compose.planner import Plan
-from glint.compiler.compose.units import GENERATED, Unit
+from glint.compiler.compose.units import CONSTANTS, GENERATED, Unit, generated
 from glint.compiler.target import shadertoy
 from glint.compiler.target.sourcemap import source_marker
 
@@ -25,6 +25,13 @@ class Shader:
     text: str
     units: list[Unit]
     plan: Plan
+
+
+def parameter_unit(units: list[Unit], catalog: Catalog, plan: Plan, lights: dict[str, str]) -> Unit:
+    """The scene's constants and the parameters of the resolved `units`, as the unit that goes
+    first (the resolver took its names as given)."""
+    block = parameter_block(units, catalog, plan, lights)
+    return generated(CONSTANTS, list(lights), [], block, rank=-1)
 
 
 def parameter_block(units: list[Unit], catalog: Catalog, plan: Plan, lights: dict[str, str]) -> str:

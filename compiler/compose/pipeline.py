@@ -9,13 +9,12 @@ from pathlib import Path
 
 from glint.compiler.catalog.loader import Snippet, load_catalog
 from glint.compiler.compose.bake import bake
-from glint.compiler.compose.emitter import Shader, emit, parameter_block
+from glint.compiler.compose.emitter import Shader, emit, parameter_unit
 from glint.compiler.compose.planner import plan
 from glint.compiler.compose.reachability import prune_unreachable
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.compose.scene_code import generate
-from glint.compiler.compose.units import generated
 
 DERIVATIVES = re.compile(r"\b(dFdx|dFdy|fwidth)\s*\(")
 
@@ -44,12 +43,10 @@ def compose_scene(
     if uses_derivatives(catalog.get(the_plan.choices["normal"])):
         # the same calls, written so that the normal is taken in uniform control flow
         code = generate(scene, normal_in_uniform_flow=True)
-    # The constants come first and provide the light names that snippets may require (SUN_DIR);
-    # their text is written once the resolver has said which snippets' parameters are needed.
-    constants = generated("scene.constants", list(code.defines), [], "", rank=-1)
-    units = resolve([constants, *code.units], catalog, the_plan.choices)
-    block = parameter_block(units, catalog, the_plan, code.defines)
-    units = [replace(u, body=block) if u.id == constants.id else u for u in units]
+    # The #define block gives the light names snippets may require (SUN_DIR) and the parameters
+    # of the snippets the resolver took; it goes first.
+    units = resolve(code.units, catalog, the_plan.choices, constants=code.defines)
+    units = [parameter_unit(units, catalog, the_plan, code.defines), *units]
     # Units come whole; drop what mainImage never reaches, parameters included, now that the
     # block is written.
     units = prune_unreachable(units)

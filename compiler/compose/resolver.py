@@ -10,10 +10,11 @@ units providing one symbol is an error that names the units involved.
 from __future__ import annotations
 
 import heapq
+from collections.abc import Collection
 
 from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.compose.units import Unit, from_snippet
+from glint.compiler.compose.units import CONSTANTS, Unit, from_snippet
 from glint.compiler.errors import InputError
 
 # Emission order among units that are ready at the same time: by slot, so output reads top-down
@@ -21,8 +22,15 @@ from glint.compiler.errors import InputError
 _SLOT_RANK = {name: i for i, name in enumerate(SLOTS)}
 
 
-def resolve(roots: list[Unit], catalog: Catalog, choices: dict[str, str]) -> list[Unit]:
-    """All units reachable from `roots`, each once, every unit after those it requires."""
+def resolve(
+    roots: list[Unit],
+    catalog: Catalog,
+    choices: dict[str, str],
+    constants: Collection[str] = (),
+) -> list[Unit]:
+    """All units reachable from `roots`, each once, every unit after those it requires.
+    `constants` are the names the scene's #define block gives (SUN_DIR): it comes before every
+    unit (emitter.parameter_unit), so they need no unit here."""
     units: dict[str, Unit] = {}
     order: list[str] = []
     pending = list(roots)
@@ -33,11 +41,13 @@ def resolve(roots: list[Unit], catalog: Catalog, choices: dict[str, str]) -> lis
         units[unit.id] = unit
         order.append(unit.id)
         for req in unit.requires:
+            if req in constants:
+                continue
             provider = _provider(req, unit, units, catalog, choices)
             if provider.id not in units:
                 pending.append(provider)
-    _check_unique(units)
-    edges = {uid: _dependencies(units[uid], units, catalog, choices) for uid in order}
+    _check_unique(units, constants)
+    edges = {uid: _dependencies(units[uid], units, catalog, choices, constants) for uid in order}
     return [units[uid] for uid in _topological(order, edges, units)]
 
 
@@ -76,13 +86,22 @@ def _provider(
 
 
 def _dependencies(
-    unit: Unit, units: dict[str, Unit], catalog: Catalog, choices: dict[str, str]
+    unit: Unit,
+    units: dict[str, Unit],
+    catalog: Catalog,
+    choices: dict[str, str],
+    constants: Collection[str],
 ) -> set[str]:
-    return {_provider(req, unit, units, catalog, choices).id for req in unit.requires} - {unit.id}
+    found = {
+        _provider(req, unit, units, catalog, choices).id
+        for req in unit.requires
+        if req not in constants
+    }
+    return found - {unit.id}
 
 
-def _check_unique(units: dict[str, Unit]) -> None:
-    owner: dict[str, str] = {}
+def _check_unique(units: dict[str, Unit], constants: Collection[str]) -> None:
+    owner: dict[str, str] = dict.fromkeys(constants, CONSTANTS)
     for unit in units.values():
         for symbol in unit.provides:
             if symbol in owner:

@@ -7,7 +7,7 @@ from __future__ import annotations
 from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import tier_table
-from glint.compiler.compose.emitter import emit, parameter_block
+from glint.compiler.compose.emitter import emit, parameter_unit
 from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.units import generated
@@ -44,10 +44,8 @@ def standalone_source(
     `scene_stub` stands in for the scene: it defines `map` and `materialAt`."""
     choices = standalone_choices(snippet)
     scene = generated("scene.stub", ["map", "materialAt"], [], scene_stub)
-    constants = generated("scene.constants", list(SCENE_DEFINES), [], "", rank=-1)
     entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)
-    units = resolve([constants, scene, entry], catalog, choices)
+    units = resolve([scene, entry], catalog, choices, constants=SCENE_DEFINES)
     plan = Plan(tier="balanced", choices=choices)
-    block = parameter_block(units, catalog, plan, SCENE_DEFINES)
-    units = [u if u.id != constants.id else generated(u.id, [], [], block, -1) for u in units]
+    units = [parameter_unit(units, catalog, plan, SCENE_DEFINES), *units]
     return emit(snippet.id, plan, units, "shadertoy", "standalone")

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from glint.compiler.catalog.loader import Snippet
 
 GENERATED = "<generated>"
+CONSTANTS = "scene.constants"  # the scene's #define block (emitter.parameter_unit)
 
 
 @dataclass(frozen=True)
