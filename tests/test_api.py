@@ -266,17 +266,20 @@ def test_the_api_from_a_fresh_interpreter(tmp_path: Path) -> None:
 
 
 @pytest.mark.render
-def test_notebook_display() -> None:
-    """What Jupyter shows: image/png for an Image, text/html for a Shader (through IPython's own
-    formatter when IPython is installed, else the _repr_ methods it calls)."""
-    shader = glint.compose(DEFAULT)
-    image = glint.render(shader, size=(32, 18), time=1.0)
-    try:
-        from IPython.core.formatters import DisplayFormatter
-    except ImportError:
-        png, page = image._repr_png_(), shader._repr_html_()
-    else:
-        png = DisplayFormatter().format(image)[0]["image/png"]
-        page = DisplayFormatter().format(shader)[0]["text/html"]
-    assert png.startswith(PNG_SIGNATURE)
-    assert "glint shader" in page and "mainImage" in page
+def test_in_a_notebook_cell() -> None:
+    """A real Jupyter kernel runs the API in notebook cells: a Shader shows as HTML (its header
+    and code), an Image as a PNG."""
+    import base64
+
+    import nbformat
+    from nbclient import NotebookClient
+
+    notebook = nbformat.v4.new_notebook()
+    notebook.cells = [
+        nbformat.v4.new_code_cell("import glint\nshader = glint.compose()\nshader"),
+        nbformat.v4.new_code_cell("glint.render(shader, size=(32, 18), time=1.0)"),
+    ]
+    NotebookClient(notebook, timeout=120, kernel_name="python3").execute()
+    shown = [cell.outputs[-1]["data"] for cell in notebook.cells]
+    assert "glint shader" in shown[0]["text/html"] and "mainImage" in shown[0]["text/html"]
+    assert base64.b64decode(shown[1]["image/png"]).startswith(PNG_SIGNATURE)
