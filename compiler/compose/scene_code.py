@@ -102,6 +102,11 @@ def _lights(scene: Scene) -> LightCode:
                 "the scene has no directional light before it"
             )
 
+    def shaded_through_brdf(i: int, function: str, shadow: bool) -> None:
+        why.append((function, f"{labels[i]} is shaded through the BRDF"))
+        if shadow:
+            why.append(("shadow", f"{labels[i]} casts shadows"))
+
     for i, light in enumerate(scene.lights):
         if isinstance(light, DirectionalLight):
             ident = name("SUN") if "SUN" not in counts else name("LIGHT")
@@ -119,9 +124,7 @@ def _lights(scene: Scene) -> LightCode:
                     visibility = f"pow({cast}, {ident}_PENUMBRA)"
             calls.append(f"directionalLight(s, {ident}_DIR, {ident}_COLOR, {visibility})")
             requires.append("directionalLight")
-            why.append(("directionalLight", f"{labels[i]} is shaded through the BRDF"))
-            if light.shadow:
-                why.append(("shadow", f"{labels[i]} casts shadows"))
+            shaded_through_brdf(i, "directionalLight", light.shadow)
         elif isinstance(light, PointLight):
             ident = name("POINT")
             defines[f"{ident}_POS"] = _vec3(light.position)
@@ -134,9 +137,7 @@ def _lights(scene: Scene) -> LightCode:
                 requires.append("shadow")
             calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
             requires.append("pointLight")
-            why.append(("pointLight", f"{labels[i]} is shaded through the BRDF"))
-            if light.shadow:
-                why.append(("shadow", f"{labels[i]} casts shadows"))
+            shaded_through_brdf(i, "pointLight", light.shadow)
         elif isinstance(light, SkyLight):
             ident = name("SKY")
             defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
