@@ -35,7 +35,8 @@ from glint.compiler.errors import InputError
 OPEN = "/* ---"
 CLOSE = "--- */"
 REQUIRED_KEYS = {"id", "slot", "summary", "provides", "requires", "sources"}
-OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost"}
+# `formula`: the model in LaTeX, for the docs site's page of the variant (glint.compiler.site).
+OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost", "formula"}
 # A preset takes its code and its contract from its base; it may add sources of its own.
 PRESET_REQUIRED_KEYS = {"id", "slot", "summary", "preset_of", "params"}
 PRESET_OPTIONAL_KEYS = {"sources", "domain", "reference", "error_budget", "cost"}

@@ -8,6 +8,7 @@ domain = { NoH = [0, 1], a = [0.002, 1] }
 reference = "D_ggx"
 error_budget = { max_abs = 2.5e3, max_rel = 0.03 }
 sources = ["lighting-model skill, step 5", "Walter et al. 2007, eq. 33"]
+formula = 'D(\mathbf{h}) = \frac{\alpha^2}{\pi \left( (\mathbf{n} \cdot \mathbf{h})^2 (\alpha^2 - 1) + 1 \right)^2}, \quad \alpha = \text{roughness}^2'
 --- */
 // Floor of (NoH² (a² − 1) + 1): it is 0 at a = 0, NoH = 1, where D is a Dirac spike (0/0).
 #define MIN_GGX_DENOM 1e-15

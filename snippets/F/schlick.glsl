@@ -8,6 +8,7 @@ domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
 error_budget = { max_abs = 0.1, max_rel = 0.25 }
 sources = ["lighting-model skill, step 4", "Schlick 1994"]
+formula = 'F(\theta) = F_0 + (1 - F_0)\,(1 - \cos\theta)^5'
 --- */
 // F = f0 + (1 − f0)(1 − cosθ)⁵ (Schlick 1994), an approximation of the exact dielectric
 // Fresnel: within 0.036 of it at f0 = 0.04, 0.10 at f0 = 0.2 (the budget's domain is

@@ -8,6 +8,7 @@ domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_correlated"
 error_budget = { max_abs = 2e-3, max_rel = 1e-5 }
 sources = ["lighting-model skill, step 6 method 2", "Heitz 2014, eq. 99", "Filament PBR notes 4.4.2"]
+formula = 'V = \frac{0.5}{(\mathbf{n} \cdot \mathbf{l}) \sqrt{(\mathbf{n} \cdot \mathbf{v})^2 (1 - \alpha^2) + \alpha^2} + (\mathbf{n} \cdot \mathbf{v}) \sqrt{(\mathbf{n} \cdot \mathbf{l})^2 (1 - \alpha^2) + \alpha^2}}'
 --- */
 // Smallest denominator: both terms vanish when NoL = NoV = 0.
 #define MIN_VIS_DENOM 1e-5

@@ -144,7 +144,7 @@ vec3 skyLight(Surface s, vec3 color, float occlusion) {
     return s.diffuseColor * color * hemisphere * occlusion;
 }
 
-// source: snippets/D/ggx.glsl:12
+// source: snippets/D/ggx.glsl:13
 // Floor of (NoH² (a² − 1) + 1): it is 0 at a = 0, NoH = 1, where D is a Dirac spike (0/0).
 #define MIN_GGX_DENOM 1e-15
 
@@ -158,7 +158,7 @@ float distribution(float NoH, float a) {
     return a2 / (PI * d * d);
 }
 
-// source: snippets/F/schlick.glsl:12
+// source: snippets/F/schlick.glsl:13
 // F = f0 + (1 − f0)(1 − cosθ)⁵ (Schlick 1994), an approximation of the exact dielectric
 // Fresnel: within 0.036 of it at f0 = 0.04, 0.10 at f0 = 0.2 (the budget's domain is
 // dielectrics, water to diamond; towards f0 = 1 the exact dielectric has a Brewster dip that
@@ -168,7 +168,7 @@ vec3 fresnel(vec3 f0, float cosTheta) {
     return f0 + (1.0 - f0) * pow(clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
 }
 
-// source: snippets/V/smith_ggx_correlated.glsl:12
+// source: snippets/V/smith_ggx_correlated.glsl:13
 // Smallest denominator: both terms vanish when NoL = NoV = 0.
 #define MIN_VIS_DENOM 1e-5
 
