@@ -1,0 +1,230 @@
+"""The catalog's pages: an index of every variant, one page per slot, one page per variant.
+
+Everything on them comes from the catalog itself (the snippet files, `slots.py`, `tiers.toml`),
+so a new variant gets its page by existing; nothing is written by hand per variant. The page
+text is made by pure functions of plain data (`VariantDoc`, `SlotDoc`), so that a test can feed
+them a made-up snippet, for instance one whose comments hold `</script>`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import PurePosixPath
+
+import glint
+from glint.compiler.catalog.loader import read_front_matter, snippets_root
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.catalog.tiers import TIERS, tier_table
+
+from .markdown import cell, code, fenced, math_block, table, text
+
+CATALOG_DIR = PurePosixPath("catalog")
+
+
+@dataclass(frozen=True)
+class VariantDoc:
+    """What the page of one variant shows."""
+
+    id: str
+    slot: str
+    summary: str
+    file: str  # e.g. "snippets/D/ggx.glsl"
+    source: str  # the GLSL body
+    standalone: str  # what `glint catalog show ID` prints
+    provides: tuple[str, ...] = ()
+    requires: tuple[str, ...] = ()
+    params: dict[str, object] = field(default_factory=dict)
+    sources: tuple[str, ...] = ()
+    formula: str = ""  # LaTeX, from the front matter's `formula`
+    tiers: tuple[str, ...] = ()  # how the tiers use it, one phrase each
+
+
+@dataclass(frozen=True)
+class SlotDoc:
+    """What the page of one slot shows: its contract and its variants."""
+
+    name: str
+    summary: str
+    entry: str | None
+    prototype: str | None
+    many: bool
+    variants: tuple[tuple[str, str], ...]  # (id, summary)
+
+
+def variant_path(snippet_id: str) -> PurePosixPath:
+    return CATALOG_DIR / f"{snippet_id}.md"
+
+
+def slot_path(slot: str) -> PurePosixPath:
+    return CATALOG_DIR / "slots" / f"{slot}.md"
+
+
+def catalog_pages() -> dict[PurePosixPath, str]:
+    """Every catalog page, by its path under the docs folder."""
+    variants = variant_docs()
+    slots = slot_docs(variants)
+    pages = {CATALOG_DIR / "index.md": index_page(variants, slots)}
+    pages |= {slot_path(slot.name): slot_page(slot) for slot in slots}
+    pages |= {variant_path(doc.id): variant_page(doc) for doc in variants}
+    return pages
+
+
+def variant_docs() -> list[VariantDoc]:
+    """The catalog as `VariantDoc`s, in the order of `glint catalog`."""
+    table_ = tier_table()
+    docs = []
+    for snippet in glint.catalog().values():
+        docs.append(
+            VariantDoc(
+                id=snippet.id,
+                slot=snippet.slot,
+                summary=snippet.summary,
+                file=snippet.file,
+                source=snippet.source,
+                standalone=snippet.standalone(),
+                provides=snippet.provides,
+                requires=snippet.requires,
+                params=dict(snippet.params),
+                sources=snippet.sources,
+                formula=_formula(snippet.file),
+                tiers=tuple(tier_uses(snippet.slot, snippet.variant, table_)),
+            )
+        )
+    return docs
+
+
+def slot_docs(variants: Iterable[VariantDoc]) -> list[SlotDoc]:
+    """One `SlotDoc` per slot that has variants: the slots of `slots.py` in their order, then
+    any other."""
+    by_slot: dict[str, list[tuple[str, str]]] = {}
+    for doc in variants:
+        by_slot.setdefault(doc.slot, []).append((doc.id, doc.summary))
+    names = [name for name in SLOTS if name in by_slot]
+    names += sorted(name for name in by_slot if name not in SLOTS)
+    docs = []
+    for name in names:
+        slot = SLOTS.get(name)
+        docs.append(
+            SlotDoc(
+                name=name,
+                summary=slot.summary if slot else "",
+                entry=slot.entry if slot else None,
+                prototype=slot.prototype if slot else None,
+                many=slot.many if slot else False,
+                variants=tuple(by_slot[name]),
+            )
+        )
+    return docs
+
+
+def tier_uses(slot: str, variant: str, tiers: dict[str, dict[str, str]]) -> list[str]:
+    """How the tiers of `tiers.toml` use `slot.variant`: a tier's own choice falls back on
+    balanced's, as the planner's does; rough-diffuse materials take `[rough_diffuse]`."""
+    uses = []
+    for tier in TIERS:
+        chosen = tiers.get(tier, {}).get(slot, tiers.get("balanced", {}).get(slot))
+        if chosen == variant:
+            uses.append(tier)
+    if slot == "diffuse":
+        rough = tiers.get("rough_diffuse", {})
+        uses += [f"{tier} (rough materials)" for tier in TIERS if rough.get(tier) == variant]
+    return uses
+
+
+def _formula(file: str) -> str:
+    """The `formula` of a snippet's own front matter (a preset's file, not its base's)."""
+    relative = PurePosixPath(file).relative_to("snippets")
+    meta, _, _ = read_front_matter((snippets_root() / relative).read_text("utf-8"), file)
+    return str(meta.get("formula", ""))
+
+
+def index_page(variants: list[VariantDoc], slots: list[SlotDoc]) -> str:
+    """The catalog index: one row per variant."""
+    rows = [
+        [
+            f"[{code(doc.id)}]({doc.id}.md)",
+            f"[{code(doc.slot)}](slots/{doc.slot}.md)",
+            cell(doc.summary),
+        ]
+        for doc in variants
+    ]
+    slot_links = ", ".join(f"[{code(slot.name)}](slots/{slot.name}.md)" for slot in slots)
+    return (
+        "# Catalog\n\n"
+        f"{len(variants)} variants in {len(slots)} slots, generated from the snippet files "
+        "(`glint catalog` lists the same). Every variant of a slot defines the slot's entry "
+        "function with the same prototype, so any one replaces any other.\n\n"
+        f"Slots: {slot_links}.\n\n" + table(["id", "slot", "summary"], rows)
+    )
+
+
+def slot_page(slot: SlotDoc) -> str:
+    """A slot's contract and its variants."""
+    parts = [f"# Slot {code(slot.name)}\n\n"]
+    if slot.summary:
+        parts.append(f"{text(slot.summary).capitalize()}.\n\n")
+    parts.append("## Contract\n\n")
+    if slot.many:
+        parts.append(
+            "A library slot: a scene takes as many of its snippets as it needs, each "
+            "providing its own functions.\n\n"
+        )
+    if slot.entry and slot.prototype:
+        parts.append(
+            f"Every variant defines the entry function {code(slot.entry)} with exactly this "
+            "prototype, so that any variant replaces any other:\n\n"
+        )
+        parts.append(fenced(slot.prototype + ";", "glsl") + "\n")
+    elif not slot.many:
+        parts.append("No entry function: the scene's own code calls what the variant provides.\n\n")
+    parts.append("## Variants\n\n")
+    rows = [[f"[{code(id_)}](../{id_}.md)", cell(summary)] for id_, summary in slot.variants]
+    parts.append(table(["variant", "summary"], rows))
+    return "".join(parts)
+
+
+def variant_page(doc: VariantDoc) -> str:
+    """One variant: summary, formula, code in tabs, contract, tiers, sources."""
+    parts = [
+        f"# {code(doc.id)}\n\n",
+        f"{text(doc.summary)}. Slot [{code(doc.slot)}](slots/{doc.slot}.md); file "
+        f"{code(doc.file)}.\n\n",
+    ]
+    if doc.formula:
+        parts += ["## Formula\n\n", math_block(doc.formula), "\n"]
+    parts += [
+        "## Code\n\n",
+        '=== "Snippet"\n\n',
+        fenced(doc.source, "glsl", indent="    "),
+        "\n",
+        f'=== "{code("glint catalog show")}"\n\n',
+        "    The snippet with everything it needs (other slots at their balanced-tier "
+        "variants), as one block to paste:\n\n",
+        fenced(doc.standalone, "glsl", indent="    "),
+        "\n",
+        "## Contract\n\n",
+        f"- provides: {_codes(doc.provides)}\n",
+        f"- requires: {_codes(doc.requires)}\n",
+    ]
+    if doc.params:
+        params = ", ".join(code(f"{name} = {value}") for name, value in doc.params.items())
+        parts.append(f"- parameters (`#define`, defaults): {params}\n")
+    parts += ["\n## Tiers\n\n", _tiers(doc), "\n"]
+    if doc.sources:
+        parts += ["## Sources\n\n", *(f"- {text(source)}\n" for source in doc.sources)]
+    return "".join(parts)
+
+
+def _codes(names: Iterable[str]) -> str:
+    return ", ".join(code(name) for name in names) or "nothing"
+
+
+def _tiers(doc: VariantDoc) -> str:
+    if doc.tiers:
+        return f"Used by the tiers: {', '.join(doc.tiers)}.\n"
+    return (
+        "No tier picks it by default: take it with `glint compose --variant "
+        f"{doc.slot}={doc.id.split('.', 1)[1]}` or a scene's `[quality.variants]`, or the "
+        "scene's content picks it.\n"
+    )
