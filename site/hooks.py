@@ -1,7 +1,9 @@
 """mkdocs hook: before each build, assemble the docs folder from site/docs and the pages glint
 generates (glint.compiler.site.build_docs), and build from it.
 
-The folder is build/site-docs, or $GLINT_SITE_DOCS (the tests build into a temporary folder).
+The folder is build/site-docs, or $GLINT_SITE_DOCS (the tests build into a temporary folder);
+KaTeX comes from Debian's libjs-katex, or from $GLINT_KATEX_DIR (the tests give a stand-in where
+the package is not installed, as in CI, which installs only what `make test` needs).
 Only changed files are rewritten, so `mkdocs serve` does not rebuild in a loop.
 """
 
@@ -12,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from glint.compiler.site import build_docs
+from glint.compiler.site.katex_assets import KATEX_DIR
 
 
 def on_config(config: Any) -> Any:
@@ -20,6 +23,7 @@ def on_config(config: Any) -> Any:
     if not source.is_absolute():
         source = root / source
     target = Path(os.environ.get("GLINT_SITE_DOCS") or root / "build" / "site-docs")
-    build_docs(source, target, readme=root / "README.md")
+    katex = Path(os.environ.get("GLINT_KATEX_DIR") or KATEX_DIR)
+    build_docs(source, target, readme=root / "README.md", katex_dir=katex)
     config.docs_dir = str(target)
     return config

@@ -1,0 +1,170 @@
+"""The docs site builds with `mkdocs build --strict`, covers the catalog, the lint rules and the
+commands, loads nothing from the network, and never lets shader text become HTML."""
+
+from __future__ import annotations
+
+import html
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import glint
+from glint.compiler.cli import build_parser
+from glint.compiler.errors import UsageError
+from glint.compiler.site import build_docs
+from glint.compiler.site.catalog_pages import VariantDoc, variant_page
+from glint.compiler.site.cli_reference import commands
+from glint.compiler.site.katex_assets import KATEX_DIR
+
+ROOT = Path(__file__).parent.parent
+NEEDS_MKDOCS = "mkdocs is not installed: pip install -e '.[dev]' (make test and make site do)"
+
+
+def _katex_dir(tmp: Path) -> Path:
+    """Debian's KaTeX where libjs-katex is installed (make site), else a stand-in with the same
+    files: CI installs only what `make test` needs, and the test checks references, not
+    typesetting."""
+    if (KATEX_DIR / "katex.min.js").is_file():
+        return KATEX_DIR
+    stand_in = tmp / "katex"
+    for name in ("katex.min.js", "katex.min.css", "contrib/auto-render.js"):
+        (stand_in / name).parent.mkdir(parents=True, exist_ok=True)
+        (stand_in / name).write_text("/* stand-in for libjs-katex */\n")
+    (stand_in / "fonts").mkdir()
+    (stand_in / "fonts" / "KaTeX_Main-Regular.woff2").write_bytes(b"stand-in")
+    return stand_in
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    pytest.importorskip("mkdocs", reason=NEEDS_MKDOCS)
+    pytest.importorskip("material", reason=NEEDS_MKDOCS)
+    tmp = tmp_path_factory.mktemp("site")
+    env = os.environ | {
+        "GLINT_SITE_DOCS": str(tmp / "docs"),
+        "GLINT_KATEX_DIR": str(_katex_dir(tmp)),
+    }
+    command = [sys.executable, "-m", "mkdocs", "build", "--strict", "-q"]
+    command += ["-f", str(ROOT / "mkdocs.yml"), "-d", str(tmp / "site")]
+    result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    return tmp / "site"
+
+
+def _page(site: Path, path: str) -> str:
+    return (site / path / "index.html").read_text(encoding="utf-8")
+
+
+def test_every_catalog_id_has_a_page_linked_from_the_index(site: Path) -> None:
+    index = _page(site, "catalog")
+    for snippet_id in glint.catalog():
+        assert (site / "catalog" / snippet_id / "index.html").is_file(), snippet_id
+        assert f'href="{snippet_id}/"' in index, snippet_id
+
+
+def test_every_slot_page_states_its_contract(site: Path) -> None:
+    from glint.compiler.catalog.slots import SLOTS
+
+    for snippet in glint.catalog().values():
+        page = _page(site, f"catalog/slots/{snippet.slot}")
+        assert f'href="../../{snippet.id}/"' in page
+        prototype = SLOTS[snippet.slot].prototype
+        if prototype:
+            assert html.escape(prototype.split("(")[0].split()[-1]) in page
+
+
+def test_a_formula_is_math_for_katex(site: Path) -> None:
+    page = _page(site, "catalog/D.ggx")
+    assert '<div class="arithmatex">' in page and r"\frac{\alpha^2}" in page
+    assert "Used by the tiers: fast, balanced, reference" in page
+
+
+def test_every_lint_rule_has_an_anchor(site: Path) -> None:
+    from glint.lint.rules import all_rules
+
+    page = _page(site, "rules")
+    for code in all_rules():
+        assert f'id="{code.lower()}"' in page, code
+
+
+def test_every_command_has_its_help(site: Path) -> None:
+    page = _page(site, "cli")
+    for name, _ in commands(build_parser()):
+        assert f"<code>{name}</code>" in page, name
+
+
+def test_getting_started_has_the_commands_picture_and_api(site: Path) -> None:
+    page = _page(site, "")
+    words = re.sub(r"<[^>]+>", "", page)  # Pygments splits code into spans
+    assert "make demo" in words and "make test" in words and "glint.compose(" in words
+    assert 'src="examples/default.png"' in page
+    assert (site / "examples" / "default.png").is_file()
+
+
+_SOURCES = re.compile(r"<(?:script|img)\b[^>]*\bsrc=\"([^\"]*)\"|<link\b[^>]*\bhref=\"([^\"]*)\"")
+
+
+def test_nothing_is_loaded_from_the_network(site: Path) -> None:
+    pages = list(site.rglob("*.html"))
+    assert len(pages) > len(glint.catalog())
+    for page in pages:
+        for match in _SOURCES.finditer(page.read_text(encoding="utf-8")):
+            url = match.group(1) or match.group(2)
+            assert not re.match(r"(https?:)?//", url), f"{page}: {url}"
+    for sheet in site.rglob("*.css"):
+        assert not re.search(r"(@import|url\()\s*['\"]?(https?:)?//", sheet.read_text()), sheet
+    katex = _page(site, "catalog/D.ggx")
+    for asset in ("katex.min.js", "contrib/auto-render.js", "katex-init.js", "katex.min.css"):
+        assert f"../../assets/katex/{asset}" in katex
+        assert (site / "assets" / "katex" / asset).is_file()
+    assert list((site / "assets" / "katex" / "fonts").glob("KaTeX_*"))
+
+
+def test_shader_text_stays_text() -> None:
+    markdown = pytest.importorskip("markdown", reason=NEEDS_MKDOCS)
+    pytest.importorskip("pymdownx", reason=NEEDS_MKDOCS)
+    hostile = "// </script><script>alert(1)</script> & <b>\n// ```\nvoid f() {}\n"
+    doc = VariantDoc(
+        id="D.hostile",
+        slot="D",
+        summary="a <script> in the summary",
+        file="snippets/D/hostile.glsl",
+        source=hostile,
+        standalone=hostile,
+        sources=("<img src=x onerror=alert(1)>",),
+    )
+    page = markdown.markdown(
+        variant_page(doc),
+        extensions=["tables", "pymdownx.highlight", "pymdownx.superfences", "pymdownx.tabbed"],
+        extension_configs={"pymdownx.tabbed": {"alternate_style": True}},
+    )
+    assert "<script" not in page and "<img" not in page and "<b>" not in page
+    assert page.count("&lt;/script&gt;") == 4  # two per code block, both tabs
+    assert page.count("void") == 2  # the ``` in a comment did not close the fence
+
+
+def test_rebuilding_rewrites_nothing_and_prunes_what_is_gone(tmp_path: Path) -> None:
+    """`mkdocs serve` rebuilds when the docs folder changes: a rebuild that changes nothing
+    must write nothing, or it would rebuild forever."""
+    katex = _katex_dir(tmp_path)
+    docs = tmp_path / "docs"
+    build_docs(ROOT / "site" / "docs", docs, ROOT / "README.md", katex)
+    stale = docs / "catalog" / "D.removed.md"
+    stale.write_text("# gone\n")
+    times = {path: path.stat().st_mtime_ns for path in docs.rglob("*") if path.is_file()}
+    build_docs(ROOT / "site" / "docs", docs, ROOT / "README.md", katex)
+    assert not stale.exists()
+    assert all(path.stat().st_mtime_ns == t for path, t in times.items() if path != stale)
+
+
+def test_generated_pages_never_land_in_the_sources(tmp_path: Path) -> None:
+    with pytest.raises(UsageError):
+        build_docs(ROOT / "site" / "docs", ROOT / "site" / "docs" / "gen", ROOT / "README.md")
+    (tmp_path / "mine.txt").write_text("not the docs build's")
+    with pytest.raises(UsageError, match="not made by glint"):
+        build_docs(ROOT / "site" / "docs", tmp_path, ROOT / "README.md", _katex_dir(tmp_path))
+    assert (tmp_path / "mine.txt").is_file()
