@@ -163,7 +163,8 @@ def slot_page(slot: SlotDoc) -> str:
     """A slot's contract and its variants."""
     parts = [f"# Slot {code(slot.name)}\n\n"]
     if slot.summary:
-        parts.append(f"{text(slot.summary).capitalize()}.\n\n")
+        summary = text(slot.summary)
+        parts.append(f"{summary[:1].upper()}{summary[1:]}.\n\n")  # keeps "SDF" as it is
     parts.append("## Contract\n\n")
     if slot.many:
         parts.append(
