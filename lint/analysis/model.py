@@ -30,7 +30,7 @@ from ..context import LintContext, Node, walk
 from . import types as T
 from .expressions import Evaluator
 from .ranges import INF, NONNEG, UNKNOWN, Interval
-from .scopes import Scopes
+from .scopes import Scopes, names_of
 from .statements import ForwardPass, written_targets
 from .syntax import (
     array_text,
@@ -81,6 +81,8 @@ class Model:
         self._memo: dict[int, Value] = {}
         self._globals = Scopes([dict(_shadertoy_values())])
         self._params: dict[tuple[str, int], list[Value]] = {}  # call-site facts
+        self._names: dict[int, frozenset[str]] = {}  # names_of, by id: the rounds ask again
+        self._nodes = list(walk(tree))  # every subtree, for the passes over the whole file
         self._collect_structs()
         self._written = self._written_names()
         self._analyse()
@@ -124,7 +126,7 @@ class Model:
         # Round 0 knows nothing of parameters; each later round knows the arguments the round
         # before passed them, so facts reach one call deeper per round (N·V computed in
         # shade() and passed on to a visibility term needs two). The last round only reads.
-        called = {callee_name(c) for c in walk(self.tree) if c.data == "call"}
+        called = {callee_name(c) for c in self._nodes if c.data == "call"}
         deep = sum(1 for n in self.tree.children if is_tree(n, "function_definition")
                    and str(n.children[0].children[1]) in called) > 1  # type: ignore  # fmt: skip
         rounds = _ROUNDS if deep else 2
@@ -150,7 +152,7 @@ class Model:
         self._memo.clear()
 
     def _collect_structs(self) -> None:
-        for node in walk(self.tree):
+        for node in self._nodes:
             if node.data != "struct_specifier":
                 continue
             name = next((str(c) for c in node.children if isinstance(c, Token)), None)
@@ -169,7 +171,7 @@ class Model:
     def _written_names(self) -> set[str]:
         """Names assigned anywhere in a function: such globals are unknown in every function."""
         names: set[str] = set()
-        for node in walk(self.tree):
+        for node in self._nodes:
             for target in written_targets(node, self):
                 if (name := root_variable(target)) is not None:
                     names.add(name)
@@ -221,13 +223,20 @@ class Model:
             init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
             value = Value(dtype)
             if init is not None:
-                env = scopes.env_for(init)
+                env = scopes.env_for(init, self.names_of(init))
                 self.record(init, env)
                 got = Evaluator(self, env).eval(init)
                 value = replace(got, type=dtype)
                 if is_global and not const and name in self._written:
                     value = Value(dtype)  # some function assigns it
             scopes.declare(name, value)
+
+    def names_of(self, expr: Node) -> frozenset[str]:
+        """The names in `expr` (scopes.names_of), once per expression for all the rounds."""
+        names = self._names.get(id(expr))
+        if names is None:
+            names = self._names[id(expr)] = names_of(expr)
+        return names
 
     # --- remembering where each expression is evaluated ------------------------------------
 

@@ -12,6 +12,11 @@ from .ranges import UNKNOWN
 from .values import Value
 
 
+def names_of(expr: Node) -> frozenset[str]:
+    """The words of an expression (a variable's name among them)."""
+    return frozenset(str(token) for token in tokens(expr))
+
+
 class Scopes:
     """Variables in scope during the forward pass: a stack of frames, and whether the code
     here is reachable (after return/break/continue/discard it is not)."""
@@ -29,14 +34,15 @@ class Scopes:
             out.update(frame)
         return out
 
-    def env_for(self, expr: Node) -> dict[str, Value]:
-        """The variables in scope that `expr` names: all an evaluation of it can read.
+    def env_for(self, expr: Node, names: frozenset[str] | None = None) -> dict[str, Value]:
+        """The variables in scope that `expr` names (`names`, when the caller knows them): all
+        an evaluation of it can read.
 
         The model keeps each expression's environment for later queries (`record`). A copy of
         every variable in scope (`flat`) per expression made the analysis quadratic in time
         and memory on long functions (a chain of 1000 declarations kept 1000 copies of up to
         1000 variables); the names an expression contains are few."""
-        wanted = {str(token) for token in tokens(expr)}
+        wanted = set(names_of(expr) if names is None else names)
         env: dict[str, Value] = {}
         for frame in reversed(self.frames):  # the innermost declaration of a name wins
             if wanted.isdisjoint(frame):

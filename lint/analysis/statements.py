@@ -32,12 +32,18 @@ class ModelForPass(ModelView, Protocol):
 
     def record(self, expr: Node, env: Env) -> None: ...
 
+    def names_of(self, expr: Node) -> frozenset[str]: ...
+
 
 @dataclass
 class _Loop:
     switch: bool = False  # a switch takes `break` but not `continue`
     breaks: list[Scopes] = field(default_factory=list)
     continues: list[Scopes] = field(default_factory=list)
+
+
+# The nodes that may write a variable (written_targets).
+_WRITING = frozenset({"assignment", "postfix", "prefix", "call"})
 
 
 def written_targets(node: Tree, model: ModelForPass | None) -> Iterable[Node]:
@@ -126,7 +132,8 @@ class ForwardPass:
             expr = node.children[1]
             self.expression(expr, scopes)
             if not scopes.dead:
-                self.returns.append(Evaluator(self.model, scopes.env_for(expr)).eval(expr))
+                env = scopes.env_for(expr, self.model.names_of(expr))
+                self.returns.append(Evaluator(self.model, env).eval(expr))
         elif kind == "break" and self.loops:
             self.loops[-1].breaks.append(scopes.copy())
         elif kind == "continue":
@@ -260,7 +267,7 @@ class ForwardPass:
         out = scopes.copy()
         if cond is None or out.dead:
             return out
-        env = out.env_for(cond)
+        env = out.env_for(cond, self.model.names_of(cond))
         refined = self.model.refine(env, cond, truth)
         if refined is not env:
             for name, value in refined.items():
@@ -271,7 +278,7 @@ class ForwardPass:
     # --- expressions -----------------------------------------------------------------------
 
     def expression(self, expr: Node, scopes: Scopes) -> None:
-        self.model.record(expr, scopes.env_for(expr))
+        self.model.record(expr, scopes.env_for(expr, self.model.names_of(expr)))
         self.effects(expr, scopes)
 
     def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False) -> None:
@@ -289,6 +296,8 @@ class ForwardPass:
             self._assign(target, str(op), expr, scopes)
             return
         for node in walk(expr):
+            if node.data not in _WRITING:
+                continue
             for target in written_targets(node, self.model):
                 name = root_variable(target)
                 old = scopes.lookup(name) if name else None
@@ -300,7 +309,7 @@ class ForwardPass:
         old = scopes.lookup(name) if name else None
         if name is None or old is None:
             return
-        got = Evaluator(self.model, scopes.env_for(expr)).eval(expr)
+        got = Evaluator(self.model, scopes.env_for(expr, self.model.names_of(expr))).eval(expr)
         if op not in ("=", *ASSIGN_OPS):
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
