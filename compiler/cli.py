@@ -14,6 +14,7 @@ import sys
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from importlib.metadata import entry_points
+from importlib.metadata import version as package_version
 from pathlib import Path
 
 from glint.compiler.catalog.tiers import TIERS
@@ -200,9 +201,9 @@ def _overrides(pairs: list[str]) -> dict[str, str]:
 
 
 def _version() -> str:
-    from glint.compiler.compose.pipeline import glint_version
-
-    return glint_version()
+    # the installed distribution's version, as compose.pipeline.glint_version reads it; not
+    # imported from there, which would load the whole composer for every command
+    return package_version("glint")
 
 
 def cmd_compose(args: argparse.Namespace) -> int:
