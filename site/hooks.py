@@ -5,6 +5,8 @@ The folder is build/site-docs, or $GLINT_SITE_DOCS (the tests build into a tempo
 KaTeX comes from Debian's libjs-katex, or from $GLINT_KATEX_DIR (the tests give a stand-in where
 the package is not installed, as in CI, which installs only what `make test` needs).
 Only changed files are rewritten, so `mkdocs serve` does not rebuild in a loop.
+Variant pictures are cached in build/site-cache, or $GLINT_SITE_CACHE; $GLINT_SITE_PICTURES
+limits them ("none", or comma-separated snippet ids; the tests render only a few).
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from typing import Any
 
 from glint.compiler.site import build_docs
 from glint.compiler.site.katex_assets import KATEX_DIR
+from glint.compiler.site.pictures import selection_from_env
 
 
 def on_config(config: Any) -> Any:
@@ -24,6 +27,15 @@ def on_config(config: Any) -> Any:
         source = root / source
     target = Path(os.environ.get("GLINT_SITE_DOCS") or root / "build" / "site-docs")
     katex = Path(os.environ.get("GLINT_KATEX_DIR") or KATEX_DIR)
-    build_docs(source, target, readme=root / "README.md", katex_dir=katex)
+    cache = Path(os.environ.get("GLINT_SITE_CACHE") or root / "build" / "site-cache")
+    pictures = selection_from_env(os.environ.get("GLINT_SITE_PICTURES"))
+    build_docs(
+        source,
+        target,
+        readme=root / "README.md",
+        katex_dir=katex,
+        picture_cache=cache,
+        pictures=pictures,
+    )
     config.docs_dir = str(target)
     return config

@@ -1,5 +1,6 @@
 """The docs site builds with `mkdocs build --strict`, covers the catalog, the lint rules and the
-commands, loads nothing from the network, and never lets shader text become HTML."""
+commands, loads nothing from the network, never lets shader text become HTML, and shows each
+variant's picture, rendered once."""
 
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from glint.compiler.site import build_docs
 from glint.compiler.site.catalog_pages import VariantDoc, variant_page
 from glint.compiler.site.cli_reference import commands
 from glint.compiler.site.katex_assets import KATEX_DIR
+from glint.compiler.site.pictures import selection_from_env, variant_pictures
 
 ROOT = Path(__file__).parent.parent
 NEEDS_MKDOCS = "mkdocs is not installed: pip install -e '.[dev]' (make test and make site do)"
@@ -47,6 +49,9 @@ def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
     env = os.environ | {
         "GLINT_SITE_DOCS": str(tmp / "docs"),
         "GLINT_KATEX_DIR": str(_katex_dir(tmp)),
+        # the whole site's pictures take ~10 s on llvmpipe: test_variant_pictures renders a few
+        "GLINT_SITE_CACHE": str(tmp / "cache"),
+        "GLINT_SITE_PICTURES": "none",
     }
     command = [sys.executable, "-m", "mkdocs", "build", "--strict", "-q"]
     command += ["-f", str(ROOT / "mkdocs.yml"), "-d", str(tmp / "site")]
@@ -168,3 +173,69 @@ def test_generated_pages_never_land_in_the_sources(tmp_path: Path) -> None:
     with pytest.raises(UsageError, match="not made by glint"):
         build_docs(ROOT / "site" / "docs", tmp_path, ROOT / "README.md", _katex_dir(tmp_path))
     assert (tmp_path / "mine.txt").is_file()
+
+
+# one from a slot the default scene fills, one it does not (lamp.toml's point light), a library
+PICTURED = ("D.beckmann", "attenuation.quadratic")
+LIBRARY = "core.constants"
+
+
+@pytest.mark.render
+def test_variant_pictures_are_shown_and_rendered_once(tmp_path: Path) -> None:
+    Image = pytest.importorskip("PIL.Image")
+    numpy = pytest.importorskip("numpy")
+    docs, cache = tmp_path / "docs", tmp_path / "cache"
+    chosen = (*PICTURED, LIBRARY)
+    build_docs(
+        ROOT / "site" / "docs", docs, ROOT / "README.md", _katex_dir(tmp_path), cache, chosen
+    )
+    index = (docs / "catalog" / "index.md").read_text()
+    for snippet_id in PICTURED:
+        png = docs / "img" / "variants" / f"{snippet_id}.png"
+        with Image.open(png) as image:
+            assert image.size == (192, 108)
+            assert numpy.asarray(image.convert("RGB")).mean() / 255 > 0.02, snippet_id
+        image_with_alt = re.compile(
+            rf"!\[[^\]]+\]\(\.\./img/variants/{re.escape(snippet_id)}\.png\)"
+        )
+        assert image_with_alt.search(index), snippet_id
+        assert image_with_alt.search((docs / "catalog" / f"{snippet_id}.md").read_text())
+    assert (
+        "snippets/scenes/lamp.toml" in (docs / "catalog" / "attenuation.quadratic.md").read_text()
+    )
+    library = (docs / "catalog" / f"{LIBRARY}.md").read_text()
+    assert "no picture" in library and "img/variants" not in library
+    assert sorted(p.name for p in (docs / "img" / "variants").iterdir()) == [
+        f"{snippet_id}.png" for snippet_id in sorted(PICTURED)
+    ]
+
+    times = {path: path.stat().st_mtime_ns for path in cache.iterdir()}
+    assert len(times) == len(PICTURED)
+    assert variant_pictures(chosen, cache).rendered == 0
+    build_docs(
+        ROOT / "site" / "docs", docs, ROOT / "README.md", _katex_dir(tmp_path), cache, chosen
+    )
+    assert {path: path.stat().st_mtime_ns for path in cache.iterdir()} == times
+
+
+def test_a_variant_that_fails_to_compose_has_no_picture_and_breaks_nothing(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    compose = glint.compose
+
+    def failing(scene: object = None, **options: object) -> glint.Shader:
+        if options.get("variants"):
+            raise glint.InputError("made to fail")
+        return compose(scene, **options)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(glint, "compose", failing)
+    pictures = variant_pictures(["D.beckmann"], tmp_path / "cache")
+    assert pictures.rendered == 0 and not pictures.files
+    assert "fails to compose" in pictures.by_id["D.beckmann"].note
+    assert not (tmp_path / "cache").exists()
+
+
+def test_which_pictures_the_environment_asks_for() -> None:
+    assert selection_from_env(None) is None and selection_from_env("all") is None
+    assert selection_from_env("none") == ()
+    assert selection_from_env("D.ggx, sss.sdf_probe") == ("D.ggx", "sss.sdf_probe")

@@ -8,7 +8,7 @@ them a made-up snippet, for instance one whose comments hold `</script>`.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 
@@ -18,6 +18,7 @@ from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_table
 
 from .markdown import cell, code, fenced, math_block, table, text
+from .pictures import SIZE, TIME, Picture
 
 CATALOG_DIR = PurePosixPath("catalog")
 
@@ -60,13 +61,17 @@ def slot_path(slot: str) -> PurePosixPath:
     return CATALOG_DIR / "slots" / f"{slot}.md"
 
 
-def catalog_pages() -> dict[PurePosixPath, str]:
-    """Every catalog page, by its path under the docs folder."""
-    variants = variant_docs()
+def catalog_pages(
+    variants: list[VariantDoc] | None = None, pictures: Mapping[str, Picture] | None = None
+) -> dict[PurePosixPath, str]:
+    """Every catalog page, by its path under the docs folder; a variant in `pictures` shows
+    its picture (or why it has none)."""
+    variants = variant_docs() if variants is None else variants
+    pictures = pictures or {}
     slots = slot_docs(variants)
-    pages = {CATALOG_DIR / "index.md": index_page(variants, slots)}
+    pages = {CATALOG_DIR / "index.md": index_page(variants, slots, pictures)}
     pages |= {slot_path(slot.name): slot_page(slot) for slot in slots}
-    pages |= {variant_path(doc.id): variant_page(doc) for doc in variants}
+    pages |= {variant_path(doc.id): variant_page(doc, pictures.get(doc.id)) for doc in variants}
     return pages
 
 
@@ -139,13 +144,17 @@ def _formula(file: str) -> str:
     return str(meta.get("formula", ""))
 
 
-def index_page(variants: list[VariantDoc], slots: list[SlotDoc]) -> str:
-    """The catalog index: one row per variant."""
+def index_page(
+    variants: list[VariantDoc], slots: list[SlotDoc], pictures: Mapping[str, Picture] | None = None
+) -> str:
+    """The catalog index: one row per variant, with its picture where it has one."""
+    pictures = pictures or {}
     rows = [
         [
             f"[{code(doc.id)}]({doc.id}.md)",
             f"[{code(doc.slot)}](slots/{doc.slot}.md)",
             cell(doc.summary),
+            _thumbnail(doc.id, pictures.get(doc.id)),
         ]
         for doc in variants
     ]
@@ -155,7 +164,7 @@ def index_page(variants: list[VariantDoc], slots: list[SlotDoc]) -> str:
         f"{len(variants)} variants in {len(slots)} slots, generated from the snippet files "
         "(`glint catalog` lists the same). Every variant of a slot defines the slot's entry "
         "function with the same prototype, so any one replaces any other.\n\n"
-        f"Slots: {slot_links}.\n\n" + table(["id", "slot", "summary"], rows)
+        f"Slots: {slot_links}.\n\n" + table(["id", "slot", "summary", "picture"], rows)
     )
 
 
@@ -185,13 +194,15 @@ def slot_page(slot: SlotDoc) -> str:
     return "".join(parts)
 
 
-def variant_page(doc: VariantDoc) -> str:
-    """One variant: summary, formula, code in tabs, contract, tiers, sources."""
+def variant_page(doc: VariantDoc, picture: Picture | None = None) -> str:
+    """One variant: summary, picture, formula, code in tabs, contract, tiers, sources."""
     parts = [
         f"# {code(doc.id)}\n\n",
         f"{text(doc.summary)}. Slot [{code(doc.slot)}](slots/{doc.slot}.md); file "
         f"{code(doc.file)}.\n\n",
     ]
+    if picture is not None:
+        parts += ["## Picture\n\n", picture_block(doc, picture), "\n"]
     if doc.formula:
         parts += ["## Formula\n\n", math_block(doc.formula), "\n"]
     parts += [
@@ -228,4 +239,29 @@ def _tiers(doc: VariantDoc) -> str:
         "No tier picks it by default: take it with `glint compose --variant "
         f"{doc.slot}={doc.id.split('.', 1)[1]}` or a scene's `[quality.variants]`, or the "
         "scene's content picks it.\n"
+    )
+
+
+def _alt(snippet_id: str, picture: Picture) -> str:
+    scene = picture.scene.replace("`", "")
+    return text(f"{scene} rendered with {snippet_id}").replace("[", "(").replace("]", ")")
+
+
+def _thumbnail(snippet_id: str, picture: Picture | None) -> str:
+    if picture is None or picture.path is None:
+        return ""
+    return f'![{_alt(snippet_id, picture)}](../{picture.path.as_posix()}){{ width="96" }}'
+
+
+def picture_block(doc: VariantDoc, picture: Picture) -> str:
+    """The picture and the scene it shows, or the line that says why there is none."""
+    if picture.path is None:
+        return f"{text(picture.note)}\n"
+    variant = doc.id.split(".", 1)[1]
+    scene = f" {picture.scene_file}" if picture.scene_file else ""
+    command = code(f"glint compose{scene} --variant {doc.slot}={variant}")
+    return (
+        f"![{_alt(doc.id, picture)}](../{picture.path.as_posix()})\n\n"
+        f"glint's render of {picture.scene} composed with {command} "
+        f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n"
     )

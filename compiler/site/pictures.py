@@ -1,0 +1,159 @@
+"""The picture on each variant's page: glint's own render of a scene composed with that variant,
+so a reader sees what choosing it does rather than reading about it.
+
+The default scene is used where it uses the variant's slot; otherwise the first example scene
+(`snippets/scenes/*.toml`) whose plan uses the slot, named on the page. Library snippets (sdf
+primitives, core helpers) fill no slot a scene can override, so they get no picture. A variant
+that fails to compose or render gets no picture and a line saying so: one bad snippet must not
+break the site.
+
+Renders are cached by a hash of (shader text, size, time, glint version), so a rebuild that
+changes no shader renders nothing; llvmpipe takes a fraction of a second per small picture.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import os
+from collections.abc import Collection, Iterable
+from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path, PurePosixPath
+
+import glint
+from glint.compiler.catalog.loader import snippets_root
+from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.files import write_atomic
+
+log = logging.getLogger(__name__)
+
+PICTURE_DIR = PurePosixPath("img") / "variants"
+SIZE = (192, 108)  # small: 83 renders on llvmpipe in well under a minute
+TIME = 1.0
+DEFAULT_SCENE = "the default scene"
+
+
+@dataclass(frozen=True)
+class Picture:
+    """What a variant's page says about its picture: the image (under the docs folder) and the
+    scene it shows, or why there is none."""
+
+    path: PurePosixPath | None = None
+    scene_file: str | None = None  # e.g. "snippets/scenes/lamp.toml"; None: the default scene
+    note: str = ""  # why there is no picture, when `path` is None
+
+    @property
+    def scene(self) -> str:
+        """The scene as the page names it (Markdown)."""
+        return f"the example scene `{self.scene_file}`" if self.scene_file else DEFAULT_SCENE
+
+
+@dataclass
+class Pictures:
+    """The pictures of a build: by snippet id, the PNG files to add to the docs folder, and how
+    many were rendered rather than taken from the cache (0 for a rebuild)."""
+
+    by_id: dict[str, Picture] = field(default_factory=dict)
+    files: dict[PurePosixPath, bytes] = field(default_factory=dict)
+    rendered: int = 0
+
+
+def picture_path(snippet_id: str) -> PurePosixPath:
+    return PICTURE_DIR / f"{snippet_id}.png"
+
+
+def selection_from_env(value: str | None) -> Collection[str] | None:
+    """Which variants get pictures, from $GLINT_SITE_PICTURES: unset or "all" for every one,
+    "none" for none, else comma-separated snippet ids (the tests render only a few)."""
+    if value is None or value.strip() == "all":
+        return None
+    if value.strip() == "none":
+        return ()
+    return tuple(part.strip() for part in value.split(",") if part.strip())
+
+
+def variant_pictures(
+    ids: Iterable[str], cache_dir: Path, only: Collection[str] | None = None
+) -> Pictures:
+    """The pictures of the variants `ids` (those in `only`, when given), rendered into
+    `cache_dir` where it does not hold them already."""
+    catalog = glint.catalog()
+    result = Pictures()
+    for snippet_id in ids:
+        if only is not None and snippet_id not in only:
+            continue
+        snippet = catalog[snippet_id]
+        result.by_id[snippet_id] = _picture(snippet.slot, snippet.variant, cache_dir, result)
+    return result
+
+
+def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Picture:
+    """One variant's picture; its PNG goes into `result.files`."""
+    snippet_id = f"{slot}.{variant}"
+    spec = SLOTS.get(slot)
+    if spec is None or spec.many:
+        return Picture(note="A library snippet: no scene slot takes it, so it has no picture.")
+    scene = scene_using(slot)
+    if scene is None:
+        return Picture(note="No example scene uses this slot, so it has no picture.")
+    path, scene_file = scene
+    label = Picture(scene_file=scene_file).scene
+    try:
+        shader = glint.compose(path, variants={slot: variant})
+    except glint.InputError as error:
+        log.warning("site: no picture for %s: %s", snippet_id, error)
+        return Picture(scene_file=scene_file, note=f"No picture: {label} fails to compose with it.")
+    if shader.plan.choices.get(slot) != snippet_id:
+        return Picture(scene_file=scene_file, note=f"No picture: {label} does not take it.")
+    cached = cache_dir / f"{cache_key(shader.text)}.png"
+    if cached.is_file():
+        png = cached.read_bytes()
+    else:
+        try:
+            png = glint.render(shader, size=SIZE, time=TIME).to_png()
+        except glint.InputError as error:
+            log.warning("site: no picture for %s: %s", snippet_id, error)
+            return Picture(scene_file=scene_file, note=f"No picture: {label} fails to render.")
+        cache_dir.mkdir(parents=True, exist_ok=True)
+        write_atomic(cached, png)
+        result.rendered += 1
+    picture = Picture(path=picture_path(snippet_id), scene_file=scene_file)
+    result.files[picture_path(snippet_id)] = png
+    return picture
+
+
+def cache_key(text: str) -> str:
+    """What a picture depends on: the shader, the size, the time and glint's version (the
+    renderer's code is glint's)."""
+    data = f"{glint.__version__}\n{SIZE[0]}x{SIZE[1]}\n{TIME!r}\n{text}"
+    return hashlib.sha256(data.encode("utf-8")).hexdigest()
+
+
+def scene_using(slot: str) -> tuple[str | None, str | None] | None:
+    """The scene to show a variant of `slot` in, as (path for glint.compose, file as the page
+    names it): the default scene (None, None) if its plan uses the slot, else the first example
+    scene that does."""
+    for path, name, slots in _scene_slots():
+        if slot in slots:
+            return path, name
+    return None
+
+
+@cache
+def _scene_slots() -> tuple[tuple[str | None, str | None, frozenset[str]], ...]:
+    """Each candidate scene (path, name) and the slots its plan fills (composed once per build
+    process): the default scene first, then the example scenes by name."""
+    scenes: list[tuple[str | None, str | None]] = [(None, None)]
+    for file in sorted((snippets_root() / "scenes").glob("*.toml")):
+        if file.stem != "default":
+            scenes.append((os.fspath(file), f"snippets/scenes/{file.name}"))
+    result = []
+    for path, name in scenes:
+        try:
+            slots = frozenset(glint.compose(path).plan.choices)
+        except glint.InputError as error:
+            log.warning("site: scene %s does not compose: %s", name, error)
+            continue
+        result.append((path, name, slots))
+    return tuple(result)
