@@ -200,9 +200,13 @@ def test_variant_pictures_are_shown_and_rendered_once(tmp_path: Path) -> None:
         )
         assert image_with_alt.search(index), snippet_id
         assert image_with_alt.search((docs / "catalog" / f"{snippet_id}.md").read_text())
-    assert (
-        "snippets/scenes/lamp.toml" in (docs / "catalog" / "attenuation.quadratic.md").read_text()
-    )
+    lamp = (docs / "catalog" / "attenuation.quadratic.md").read_text()
+    assert "snippets/scenes/lamp.toml" in lamp
+    # the shader of the picture, in its own tab, as `glint compose` writes it
+    assert '=== "lamp scene with it"' in lamp
+    composed = glint.compose(ROOT / "snippets" / "scenes" / "lamp.toml",
+                             variants={"attenuation": "quadratic"}).text  # fmt: skip
+    assert "\n".join("    " + line if line else "" for line in composed.splitlines()) in lamp
     library = (docs / "catalog" / f"{LIBRARY}.md").read_text()
     assert "no picture" in library and "img/variants" not in library
     assert sorted(p.name for p in (docs / "img" / "variants").iterdir()) == [

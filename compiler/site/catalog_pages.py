@@ -215,6 +215,16 @@ def variant_page(doc: VariantDoc, picture: Picture | None = None) -> str:
         "variants), as one block to paste:\n\n",
         fenced(doc.standalone, "glsl", indent="    "),
         "\n",
+    ]
+    if picture is not None and picture.shader:
+        parts += [
+            f'=== "{_scene_tab(picture)}"\n\n',
+            f"    What `glint compose` writes for {picture.scene} with this variant, to paste "
+            "into ShaderToy's Image tab: the shader of the picture above.\n\n",
+            fenced(picture.shader, "glsl", indent="    "),
+            "\n",
+        ]
+    parts += [
         "## Contract\n\n",
         f"- provides: {_codes(doc.provides)}\n",
         f"- requires: {_codes(doc.requires)}\n",
@@ -226,6 +236,13 @@ def variant_page(doc: VariantDoc, picture: Picture | None = None) -> str:
     if doc.sources:
         parts += ["## Sources\n\n", *(f"- {text(source)}\n" for source in doc.sources)]
     return "".join(parts)
+
+
+def _scene_tab(picture: Picture) -> str:
+    """The tab's title: the scene the variant is composed into."""
+    if picture.scene_file is None:
+        return "The default scene with it"
+    return f"{PurePosixPath(picture.scene_file).stem} scene with it"
 
 
 def _codes(names: Iterable[str]) -> str:

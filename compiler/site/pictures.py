@@ -42,6 +42,7 @@ class Picture:
     path: PurePosixPath | None = None
     scene_file: str | None = None  # e.g. "snippets/scenes/lamp.toml"; None: the default scene
     note: str = ""  # why there is no picture, when `path` is None
+    shader: str = ""  # the composed shader the picture shows (ShaderToy Image-tab code)
 
     @property
     def scene(self) -> str:
@@ -118,7 +119,7 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         cache_dir.mkdir(parents=True, exist_ok=True)
         write_atomic(cached, png)
         result.rendered += 1
-    picture = Picture(path=picture_path(snippet_id), scene_file=scene_file)
+    picture = Picture(path=picture_path(snippet_id), scene_file=scene_file, shader=shader.text)
     result.files[picture_path(snippet_id)] = png
     return picture
 
