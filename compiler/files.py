@@ -4,6 +4,7 @@ half-written; both fail with one message that says what to do."""
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from pathlib import Path
 
@@ -33,14 +34,22 @@ def write_atomic(path: str | Path, data: bytes) -> None:
         fd, temp_path = tempfile.mkstemp(prefix=".glint-", suffix=path.suffix, dir=path.parent)
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
-        # mkstemp makes the file private (0600); the output gets the mode any new file gets
-        os.chmod(temp_path, 0o666 & ~_umask())
+        # mkstemp makes the file private (0600): a file replaced keeps its mode, a new one gets
+        # the mode any new file gets
+        os.chmod(temp_path, _mode_for(path))
         os.replace(temp_path, path)
     except OSError as exc:
         if temp_path is not None and os.path.exists(temp_path):
             os.unlink(temp_path)
         reason = exc.strerror or str(exc)
         raise EnvironmentProblem(f"cannot write {path}: {reason}; choose a writable path") from exc
+
+
+def _mode_for(path: Path) -> int:
+    try:
+        return stat.S_IMODE(path.stat().st_mode)
+    except FileNotFoundError:
+        return 0o666 & ~_umask()
 
 
 def _umask() -> int:

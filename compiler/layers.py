@@ -9,7 +9,7 @@ same check.
 A package may import its own modules and packages of lower layers, never one of its own layer
 or above. The order is the pipeline's: the GLSL front end knows nothing of targets, the target
 nothing of the catalog, the catalog nothing of composing, and so on up to the commands. The
-linter stands beside the compiler and uses only the front end, the target and the errors.
+linter stands beside the compiler and uses only the front end, the target, the errors and files.
 Imports inside functions count: they hide a dependency, they do not remove it.
 """
 
@@ -41,7 +41,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("site",),  # the docs site's generated pages: documents everything below it
 ]
 # The linter sits beside the compiler's stages: what it may use of them.
-LINT_USES = {"errors", "glsl", "target"}
+LINT_USES = {"errors", "files", "glsl", "target"}
 
 _SOURCES = {"compiler": "glint.compiler", "lint": "glint.lint"}
 

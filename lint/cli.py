@@ -8,12 +8,11 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
+from glint.compiler.files import write_atomic
 from glint.compiler.target.shadertoy import TARGETS
 
 from .cache import LintCache, cache_directory
@@ -140,26 +139,14 @@ def collect(paths: list[str]) -> list[str]:
     return files
 
 
-def _read(file: str) -> bytes:
+def read_source(file: str) -> bytes:
+    """The bytes of a file to lint (`-`: standard input)."""
     if file == "-":
         return sys.stdin.buffer.read()
     try:
         return Path(file).read_bytes()
     except OSError as exc:
         raise EnvironmentProblem(f"{file}: cannot read: {exc.strerror}") from None
-
-
-def _write_atomically(file: str, text: str) -> None:
-    """Replace the file in one step, so an interrupted fix never leaves half a file."""
-    path = Path(file)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as out:
-            out.write(text)
-        os.replace(tmp, path)
-    except OSError as exc:
-        Path(tmp).unlink(missing_ok=True)
-        raise EnvironmentProblem(f"{file}: cannot write the fixed file: {exc.strerror}") from None
 
 
 def cmd_lint(args: argparse.Namespace) -> int:
@@ -181,7 +168,7 @@ def cmd_lint(args: argparse.Namespace) -> int:
             if file == "-":
                 sys.stdout.write(result.text)
             else:
-                _write_atomically(file, result.text)
+                write_atomic(file, result.text.encode("utf-8"))  # whole, mode kept
     out = sys.stdout if "-" not in files or not args.fix else sys.stderr
     if args.statistics:
         out.write(statistics(findings))
@@ -197,7 +184,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     unchanged, the others linted (in parallel when there are enough of them). Fixing never
     reads the cache: it lints afresh, and stores the findings of what it leaves on disk."""
     names = ["<stdin>" if file == "-" else file for file in files]
-    data = [_read(file) for file in files]
+    data = [read_source(file) for file in files]
     cache = None
     if not args.no_cache:
         where = cache_directory(args.cache_dir, find_pyproject(Path.cwd().resolve()))

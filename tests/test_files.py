@@ -35,3 +35,12 @@ def test_reading_a_bad_file_says_why(tmp_path: Path, make, says: str) -> None:  
     path = make(tmp_path / "x.glsl")
     with pytest.raises(InputError, match=says):
         read_text_file(path)
+
+
+def test_a_file_replaced_keeps_its_mode(tmp_path: Path) -> None:
+    target = tmp_path / "shader.glsl"
+    target.write_text("old\n")
+    target.chmod(0o640)
+    write_atomic(target, b"new\n")
+    assert stat.S_IMODE(target.stat().st_mode) == 0o640
+    assert target.read_text() == "new\n"

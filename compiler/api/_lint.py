@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
-from pathlib import Path
 from typing import TYPE_CHECKING
 
-from glint.compiler.errors import EnvironmentProblem, UsageError
+from glint.compiler.errors import UsageError
 from glint.compiler.target.shadertoy import TARGETS
 
 from ._shader import Shader, is_source
@@ -38,7 +37,7 @@ def lint_shader(
     """
     import argparse
 
-    from glint.lint.cli import collect, options_for
+    from glint.lint.cli import collect, options_for, read_source
     from glint.lint.runner import lint_bytes
 
     if isinstance(shader, Shader):
@@ -53,7 +52,7 @@ def lint_shader(
         return lint_bytes(str(shader).encode("utf-8"), "<input>", options).findings
     findings: list[Finding] = []
     for file in collect([os.fspath(shader)]):  # type: ignore[arg-type]
-        findings += lint_bytes(_read(file), file, options).findings
+        findings += lint_bytes(read_source(file), file, options).findings
     return findings
 
 
@@ -63,9 +62,3 @@ def _codes(codes: str | Sequence[str] | None) -> list[str] | None:
     items = codes.split(",") if isinstance(codes, str) else codes
     return [c.strip().upper() for c in items if c.strip()]
 
-
-def _read(file: str) -> bytes:
-    try:
-        return Path(file).read_bytes()
-    except OSError as exc:
-        raise EnvironmentProblem(f"{file}: cannot read: {exc.strerror}") from None

@@ -191,6 +191,15 @@ def test_fixed_file_is_cached_as_written(tree: Path) -> None:
     assert "from the cache" in again.stdout
 
 
+def test_a_fixed_file_keeps_its_mode(tree: Path) -> None:
+    shader = tree / "t.glsl"
+    shader.write_text(CLEAN.replace("vec4(1.0)", "texture2D(iChannel0, fragCoord)"))
+    shader.chmod(0o644)
+    fixed = glint("lint", "t.glsl", "--no-glslang", "--select", "P003", "--fix", cwd=tree)
+    assert fixed.returncode == 0 and "texture(" in shader.read_text()
+    assert shader.stat().st_mode & 0o777 == 0o644  # not the 0600 of a temporary file
+
+
 def test_cache_dir_option_and_environment(
     tree: Path, tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch
 ) -> None:
