@@ -25,6 +25,7 @@ class Snippet:
     requires: tuple[str, ...]  # the functions and constants it calls for
     params: dict[str, Any]  # `#define` knobs and their defaults
     sources: tuple[str, ...]  # where the model comes from
+    formula: str = ""  # the model in LaTeX, from the front matter ("" when it has none)
 
     @property
     def variant(self) -> str:
@@ -94,4 +95,5 @@ def _snippet(snippet: loader.Snippet) -> Snippet:
         requires=snippet.requires,
         params={name: param.default for name, param in snippet.params.items()},
         sources=snippet.sources,
+        formula=snippet.formula,
     )

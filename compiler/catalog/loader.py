@@ -71,6 +71,7 @@ class Snippet:
     body_line: int  # line of `relpath` on which the body starts (1-based)
     preset_of: str = ""  # id of the base variant when this is a preset, else ""
     file: str = ""  # the snippet's own file: `relpath`, except for a preset
+    formula: str = ""  # the model in LaTeX (a preset's own file has none)
 
     def __post_init__(self) -> None:
         if not self.file:
@@ -143,6 +144,7 @@ def parse_snippet(text: str, relpath: str, bases: Mapping[str, Snippet] | None =
         relpath=relpath,
         body=body,
         body_line=body_line,
+        formula=str(meta.get("formula", "")),
     )
 
 
@@ -198,6 +200,7 @@ def _preset(meta: dict[str, Any], body: str, relpath: str, bases: Mapping[str, S
         cost=meta.get("cost", ""),
         preset_of=base.id,
         file=relpath,
+        formula="",
     )
 
 

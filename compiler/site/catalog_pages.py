@@ -13,7 +13,6 @@ from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 
 import glint
-from glint.compiler.catalog.loader import read_front_matter, snippets_root
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_table
 
@@ -92,7 +91,7 @@ def variant_docs() -> list[VariantDoc]:
                 requires=snippet.requires,
                 params=dict(snippet.params),
                 sources=snippet.sources,
-                formula=_formula(snippet.file),
+                formula=snippet.formula,
                 tiers=tuple(tier_uses(snippet.slot, snippet.variant, table_)),
             )
         )
@@ -135,13 +134,6 @@ def tier_uses(slot: str, variant: str, tiers: dict[str, dict[str, str]]) -> list
         rough = tiers.get("rough_diffuse", {})
         uses += [f"{tier} (rough materials)" for tier in TIERS if rough.get(tier) == variant]
     return uses
-
-
-def _formula(file: str) -> str:
-    """The `formula` of a snippet's own front matter (a preset's file, not its base's)."""
-    relative = PurePosixPath(file).relative_to("snippets")
-    meta, _, _ = read_front_matter((snippets_root() / relative).read_text("utf-8"), file)
-    return str(meta.get("formula", ""))
 
 
 def index_page(
