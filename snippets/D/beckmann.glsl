@@ -8,6 +8,7 @@ domain = { NoH = [0, 1], a = [0.002, 1] }
 reference = "D_beckmann"
 error_budget = { max_abs = 0.05, max_rel = 1e-4 }
 sources = ["Beckmann & Spizzichino 1963", "Walter et al. 2007, eq. 25", "BRDF functions page (seed 004)"]
+formula = 'D(\mathbf{h}) = \frac{1}{\pi \alpha^2 (\mathbf{n} \cdot \mathbf{h})^4} \exp\left( \frac{(\mathbf{n} \cdot \mathbf{h})^2 - 1}{\alpha^2 (\mathbf{n} \cdot \mathbf{h})^2} \right), \quad \alpha = \text{roughness}^2'
 --- */
 // Floor of π a² NoH⁴: it is 0 at grazing (NoH = 0) and for a mirror (a = 0).
 #define MIN_BECKMANN_DENOM 1e-30

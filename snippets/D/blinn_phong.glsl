@@ -10,6 +10,7 @@ reference = "D_blinn_phong"
 # the error of log2(NoH) by n = 5·10⁵.
 error_budget = { max_abs = 1.2e3, max_rel = 0.015 }
 sources = ["Blinn 1977", "Walter et al. 2007, section 5.2 (n = 2/a² − 2)", "lighting-model skill, Blinn-Phong"]
+formula = 'D(\mathbf{h}) = \frac{n + 2}{2\pi} (\mathbf{n} \cdot \mathbf{h})^n, \quad n = \frac{2}{\alpha^2} - 2, \quad \alpha = \text{roughness}^2'
 --- */
 // D(h) = (n + 2) / (2π) NoHⁿ with n = 2/a² − 2: the (n + 2)/(2π) makes ∫ D (n·h) dω = 1, and
 // this n gives the lobe of Beckmann with the same a (Walter et al. 2007). Takes a = roughness².

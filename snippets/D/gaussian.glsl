@@ -9,6 +9,7 @@ reference = "D_gaussian"
 # Measured on the GPU probe (llvmpipe): 0.4% relative near the peak at a = 0.002.
 error_budget = { max_abs = 5.0, max_rel = 0.008 }
 sources = ["BRDF functions page (seed 004), Gaussian", "Walter et al. 2007, eq. 4 (normalisation)"]
+formula = 'D(\mathbf{h}) = \frac{\exp\left( -\theta_h^2 / \alpha^2 \right)}{\pi \alpha^2 g(\alpha^2)}, \quad \theta_h = \arccos(\mathbf{n} \cdot \mathbf{h}), \quad g(x) = 1 - 0.66667\,x + 0.25507\,x^2 - 0.04077\,x^3, \quad \alpha = \text{roughness}^2'
 --- */
 // Smallest a: θ/a at θ = 0, a = 0 is 0/0.
 #define MIN_GAUSSIAN_A 1e-4

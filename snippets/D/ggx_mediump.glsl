@@ -8,6 +8,7 @@ domain = { NoH = [0, 1], a = [0.0025, 1] }
 reference = "D_ggx"
 error_budget = { max_abs = 0.05, max_rel = 1e-5 }
 sources = ["Filament, shaders/src/brdf.fs, D_GGX", "Filament PBR notes 4.4.1", "Walter et al. 2007"]
+formula = 'D(\mathbf{h}) = \min\left( \frac{1}{\pi} \left( \frac{\alpha}{(1 - \mathbf{n} \cdot \mathbf{h})(1 + \mathbf{n} \cdot \mathbf{h}) + (\alpha\, \mathbf{n} \cdot \mathbf{h})^2} \right)^2,\ 65504 \right), \quad \alpha = \text{roughness}^2'
 --- */
 // Floor of the denominator: 0 at a = 0, NoH = 1, where D is a Dirac spike.
 #define MIN_GGX_MEDIUMP_DENOM 1e-30

@@ -8,6 +8,7 @@ domain = { f0 = [0, 0.99], cosTheta = [0, 1] }
 reference = "F_dielectric"
 error_budget = { max_abs = 1e-5, max_rel = 1e-4 }
 sources = ["Walter et al. 2007, eq. 22", "Born & Wolf, Principles of Optics, 1.5.2"]
+formula = 'F = \frac{1}{2} \left( \frac{g - c}{g + c} \right)^2 \left( 1 + \left( \frac{c (g + c) - 1}{c (g - c) + 1} \right)^2 \right), \quad g = \sqrt{\eta^2 - 1 + c^2}, \quad \eta = \frac{1 + \sqrt{F_0}}{1 - \sqrt{F_0}}, \quad c = \cos\theta'
 --- */
 // Largest √f0: η = (1 + √f0)/(1 − √f0) is infinite at f0 = 1; 0.9999 keeps η² ≈ 4·10⁸.
 #define MAX_SQRT_F0 0.9999

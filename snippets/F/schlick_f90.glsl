@@ -8,6 +8,7 @@ domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
 error_budget = { max_abs = 0.1, max_rel = 0.25 }
 sources = ["Filament PBR notes 4.4.3 and 4.8.3.3 (pre-baked occlusion)", "Schlick 1994"]
+formula = 'F(\theta) = F_0 + (F_{90} - F_0)\,(1 - \cos\theta)^5, \quad F_{90} = \min\left( 1,\ 16.5\,(F_{0,r} + F_{0,g} + F_{0,b}) \right)'
 --- */
 // Scale from f0 to f90: a reflectance below 2% is taken as no specular at all, so grazing
 // reflection fades with it (Filament: f90 = saturate(dot(f0, vec3(50 · 0.33)))).

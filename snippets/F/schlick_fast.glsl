@@ -8,6 +8,7 @@ domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
 error_budget = { max_abs = 0.1, max_rel = 0.25 }
 sources = ["Schlick 1994", "Filament, shaders/src/brdf.fs, F_Schlick (pow5)"]
+formula = 'F(\theta) = F_0 + (1 - F_0)\,x^2 x^2 x, \quad x = 1 - \cos\theta'
 --- */
 // Schlick's F with x⁵ as x²·x²·x: three multiplies, where pow is exp2(5 log2 x) and undefined
 // at x < 0. Same error against the exact dielectric as F.schlick (0.036 at f0 = 0.04).

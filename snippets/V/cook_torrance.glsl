@@ -8,6 +8,7 @@ domain = { NoV = [0.001, 1], NoL = [0.001, 1], NoH = [0, 1], VoH = [0.001, 1] }
 reference = "V_cook_torrance"
 error_budget = { max_abs = 0.05, max_rel = 1e-5 }
 sources = ["Cook & Torrance 1982, eq. 7", "Blinn 1977"]
+formula = 'V = \min\left( \frac{1}{4 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v})},\ \frac{\mathbf{n} \cdot \mathbf{h}}{2 (\mathbf{v} \cdot \mathbf{h})(\mathbf{n} \cdot \mathbf{l})},\ \frac{\mathbf{n} \cdot \mathbf{h}}{2 (\mathbf{v} \cdot \mathbf{h})(\mathbf{n} \cdot \mathbf{v})} \right) = \frac{G}{4 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v})}'
 --- */
 // Smallest cosine in a denominator: NoL, NoV and VoH can each be 0 at grazing.
 #define MIN_CT_COS 1e-5

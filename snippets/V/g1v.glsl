@@ -8,6 +8,7 @@ domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_separable"
 error_budget = { max_abs = 700.0, max_rel = 0.36 }
 sources = ["Hable 2014, Optimizing GGX Shaders with dot(L,H) (seed 004)", "lighting-model skill, step 6 method 3"]
+formula = 'V = \frac{1}{4}\, G_{1V}(\mathbf{n} \cdot \mathbf{l})\, G_{1V}(\mathbf{n} \cdot \mathbf{v}), \quad G_{1V}(x) = \frac{1}{x (1 - k) + k}, \quad k = \frac{\alpha}{2}'
 --- */
 // Smallest G1V denominator NoX (1 − k) + k: it is 0 at NoX = 0 with a = 0.
 #define MIN_G1V_DENOM 1e-5

@@ -8,6 +8,7 @@ domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_separable"
 error_budget = { max_abs = 700.0, max_rel = 0.36 }
 sources = ["Schlick 1994", "Karis 2013, Real Shading in Unreal Engine 4, p. 3", "lighting-model skill, step 6 method 1"]
+formula = 'V = \frac{G_1(\mathbf{n} \cdot \mathbf{l})\, G_1(\mathbf{n} \cdot \mathbf{v})}{4 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v})}, \quad G_1(x) = \frac{x}{x (1 - k) + k}, \quad k = \frac{\alpha}{2}'
 --- */
 // Smallest Schlick G1 denominator NoX (1 − k) + k: it is 0 at NoX = 0 with a = 0.
 #define MIN_SCHLICK_G1_DENOM 1e-5

@@ -8,6 +8,7 @@ domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_separable_remapped"
 error_budget = { max_abs = 2.0, max_rel = 0.26 }
 sources = ["Karis 2013, Real Shading in Unreal Engine 4, p. 3", "lighting-model skill, step 6 method 1"]
+formula = 'V = \frac{G_1(\mathbf{n} \cdot \mathbf{l})\, G_1(\mathbf{n} \cdot \mathbf{v})}{4 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v})}, \quad G_1(x) = \frac{x}{x (1 - k) + k}, \quad k = \frac{(\sqrt{\alpha} + 1)^2}{8} = \frac{(\text{roughness} + 1)^2}{8}'
 --- */
 // Smallest Schlick G1 denominator; with this k it never falls below 1/8, kept for symmetry.
 #define MIN_SCHLICK_G1_REMAPPED_DENOM 1e-5

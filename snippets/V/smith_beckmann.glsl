@@ -8,6 +8,7 @@ domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_beckmann_correlated"
 error_budget = { max_abs = 15.0, max_rel = 0.01 }
 sources = ["Walter et al. 2007, eq. 27", "Heitz 2014, eq. 99"]
+formula = 'V = \frac{1}{4 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v}) \left( 1 + \Lambda(\mathbf{n} \cdot \mathbf{l}) + \Lambda(\mathbf{n} \cdot \mathbf{v}) \right)}, \quad \Lambda(c) = \begin{cases} \dfrac{1 - 1.259\mu + 0.396\mu^2}{3.535\mu + 2.181\mu^2} & \mu < 1.6 \\ 0 & \mu \ge 1.6 \end{cases}, \quad \mu = \frac{c}{\alpha \sqrt{1 - c^2}}'
 --- */
 // Smallest denominator: a sinθ for μ, and the whole of V's at NoL = NoV = 0.
 #define MIN_BECKMANN_VIS_DENOM 1e-5

@@ -8,6 +8,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927], roughness = [
 reference = "diffuse_burley"
 error_budget = { max_abs = 2e-6 }
 sources = ["Burley 2012, Physically-Based Shading at Disney, 5.3", "Filament PBR notes, 4.7.1"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} (\mathbf{n} \cdot \mathbf{l}) \left( 1 + (F_{90} - 1)(1 - \mathbf{n} \cdot \mathbf{l})^5 \right) \left( 1 + (F_{90} - 1)(1 - \mathbf{n} \cdot \mathbf{v})^5 \right), \quad F_{90} = 0.5 + 2\,\text{roughness}\,(\mathbf{v} \cdot \mathbf{h})^2'
 --- */
 // Two Schlick-like factors toward F90 = 0.5 + 2·roughness·(L·H)²: smooth surfaces darken at
 // grazing angles, rough ones brighten (retro-reflection). Not energy conserving: it reflects

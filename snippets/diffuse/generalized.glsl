@@ -9,6 +9,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_generalized"
 error_budget = { max_abs = 1e-6 }
 sources = ["kchapelier, lighting technique notes (Generalized Lambert)"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} \max\left( m\,(\mathbf{n} \cdot \mathbf{l}) + b,\ 0 \right)^p, \quad m = \text{LAMBERT\_MULTIPLY}, \quad b = \text{LAMBERT\_ADD}, \quad p = \text{LAMBERT\_POWER}'
 --- */
 // One family for the Lambert look-alikes: (1, 0, 1) is Lambert, (0.5, 0.5, 1) the skill's
 // half-Lambert, (0.5, 0.5, 2) Valve's. Only the first conserves energy.

@@ -8,6 +8,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_half_lambert"
 error_budget = { max_abs = 1e-6 }
 sources = ["kchapelier, lighting technique notes (Half Lambert)", "Valve Developer Wiki, Half Lambert", "lighting-model skill, step 2"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} \left( \frac{\mathbf{n} \cdot \mathbf{l} + 1}{2} \right)^2'
 --- */
 // Remaps N·L from [-1, 1] to [0, 1] and squares it, so the side facing away from the light is
 // still shaded instead of flat black. Lights everything, even from behind: under uniform light

@@ -8,6 +8,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_lambert"
 error_budget = { max_abs = 1e-6 }
 sources = ["lighting-model skill, step 2"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} \max(\mathbf{n} \cdot \mathbf{l}, 0)'
 --- */
 vec3 diffuse(Surface s, Dots d) {
     return s.diffuseColor * (d.NoL / PI);

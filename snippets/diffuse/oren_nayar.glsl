@@ -8,6 +8,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927], roughness = [
 reference = "diffuse_oren_nayar"
 error_budget = { max_abs = 2e-4 }
 sources = ["Oren and Nayar 1994, Generalization of Lambert's reflectance model, eqs. 30 and 39", "Lighting models (Unity HLSL), 7. Oren-Nayar", "kchapelier, lighting technique notes (Oren Nayar)"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} (\mathbf{n} \cdot \mathbf{l}) \left( C_1 + \cos\phi\, C_2 \tan\beta + (1 - |\cos\phi|)\, C_3 \tan\tfrac{\alpha + \beta}{2} + 0.17\,\rho \frac{\sigma^2}{\sigma^2 + 0.13} \left( 1 - \cos\phi \left( \tfrac{2\beta}{\pi} \right)^2 \right) \right), \quad C_1 = 1 - \frac{0.5\sigma^2}{\sigma^2 + 0.33}, \quad C_2 = \frac{0.45\sigma^2}{\sigma^2 + 0.09} \begin{cases} \sin\alpha & \cos\phi \ge 0 \\ \sin\alpha - \left( \tfrac{2\beta}{\pi} \right)^3 & \cos\phi < 0 \end{cases}, \quad C_3 = \frac{0.125\sigma^2}{\sigma^2 + 0.09} \left( \frac{4\alpha\beta}{\pi^2} \right)^2, \quad \alpha = \max(\theta_l, \theta_v), \quad \beta = \min(\theta_l, \theta_v), \quad \sigma = \text{roughness}'
 --- */
 // Cosine of the azimuth between L and V around N, from the dot products; 0 where L or V lies
 // along N (the azimuth is undefined there, and every term that uses it is multiplied by 0).

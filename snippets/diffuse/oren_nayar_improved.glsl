@@ -10,6 +10,7 @@ reference = "diffuse_oren_nayar"
 # 0.12, at roughness 1 and grazing N·V, where it is about half the full model).
 error_budget = { max_abs = 0.13 }
 sources = ["Fujii 2012, A tiny improvement of Oren-Nayar reflectance model", "kchapelier, lighting technique notes (Oren Nayar)"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \rho\, (\mathbf{n} \cdot \mathbf{l}) \left( A + B \frac{s}{t} \right), \quad s = \mathbf{l} \cdot \mathbf{v} - (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v}), \quad t = \begin{cases} \max(\mathbf{n} \cdot \mathbf{l}, \mathbf{n} \cdot \mathbf{v}) & s > 0 \\ 1 & s \le 0 \end{cases}, \quad A = \frac{1}{\pi + \left( \frac{\pi}{2} - \frac{2}{3} \right) \sigma}, \quad B = \sigma A, \quad \sigma = \text{roughness}'
 --- */
 // s = L·V − (N·L)(N·V) is cos φ·sin θl·sin θv; t = max(N·L, N·V) where s > 0, else 1, so that
 // s/t is the qualitative model's cos φ·sin α·tan β when the azimuth term is positive and

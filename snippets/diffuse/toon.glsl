@@ -9,6 +9,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_toon"
 error_budget = { max_abs = 1e-5 }
 sources = ["Lighting models (Unity HLSL), 6. Toon shading and rim lighting (Fresnel)"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{1}{\pi} \left( \rho\, \frac{\lfloor N x \rfloor + \operatorname{smoothstep}(1 - s, 1, \operatorname{fract}(N x))}{N} + R\, \operatorname{smoothstep}\left( e - 0.01, e + 0.01, (1 - \mathbf{n} \cdot \mathbf{v})(\mathbf{n} \cdot \mathbf{l})^p \right) \right), \quad x = \operatorname{clamp}(\mathbf{n} \cdot \mathbf{l}, 0, 1), \quad N, s, R, e, p = \text{bands, softness, rim, rim edge, rim power}'
 --- */
 // x in [0, 1] as a staircase of TOON_BANDS steps whose risers are smoothsteps of relative
 // width TOON_SOFTNESS (hard cel edges alias; a little softness reads as ink).

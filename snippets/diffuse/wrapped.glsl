@@ -9,6 +9,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_wrapped"
 error_budget = { max_abs = 1e-6 }
 sources = ["Filament PBR notes, 4.9.3 (wrap diffuse for cloth and subsurface)", "glsl brdf notes (Lambertian wrapped)"]
+formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} \frac{\max(\mathbf{n} \cdot \mathbf{l} + w, 0)}{(1 + w)^2}, \quad w = \text{DIFFUSE\_WRAP}'
 --- */
 // Light reaches DIFFUSE_WRAP past the terminator, a cheap stand-in for light scattered under
 // the surface. Dividing by (1 + w)² keeps the energy: over all light directions

@@ -8,6 +8,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927], roughness = [
 reference = "specular_blinn_phong"
 error_budget = { max_abs = 2e-4, max_rel = 5e-4 }
 sources = ["Blinn 1977", "lighting-model skill, step 3", "Lighting models (Unity HLSL), 4. Blinn-Phong"]
+formula = 'f_s\,(\mathbf{n} \cdot \mathbf{l}) = F\, (\mathbf{n} \cdot \mathbf{h})^n \ \text{where}\ \mathbf{n} \cdot \mathbf{l} > 0, \quad n = \frac{2}{\alpha^2} - 2, \quad \alpha = \text{roughness}^2'
 --- */
 // The highlight's peak is F whatever the roughness, so smooth surfaces look dimmer than they
 // should; pair it with lights tuned by eye, not with a physically based mix.

@@ -9,6 +9,7 @@ reference = "specular_blinn_phong_normalized"
 # Measured on llvmpipe: 1.2e-4 relative at the peak for roughness 0.2 (n = 1248), from pow.
 error_budget = { max_abs = 0.01, max_rel = 5e-4 }
 sources = ["Akenine-Möller, Haines and Hoffman, Real-Time Rendering, 3rd ed., 7.6", "lighting-model skill, step 3"]
+formula = 'f_s\,(\mathbf{n} \cdot \mathbf{l}) = F\, \frac{n + 8}{8\pi} (\mathbf{n} \cdot \mathbf{h})^n (\mathbf{n} \cdot \mathbf{l}), \quad n = \frac{2}{\alpha^2} - 2, \quad \alpha = \text{roughness}^2'
 --- */
 // (n + 8)/(8π) keeps the highlight's energy roughly constant as it narrows, so one light
 // intensity works at every roughness. Only roughly: it reflects up to about 7% more than

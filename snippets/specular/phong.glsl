@@ -8,6 +8,7 @@ domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927], roughness = [
 reference = "specular_phong"
 error_budget = { max_abs = 1e-4, max_rel = 2e-4 }
 sources = ["Phong 1975", "lighting-model skill, variant 1 (classic Phong)", "Lighting models (Unity HLSL), 3. Phong"]
+formula = 'f_s\,(\mathbf{n} \cdot \mathbf{l}) = F \max(\mathbf{r} \cdot \mathbf{v}, 0)^{n/4} \ \text{where}\ \mathbf{n} \cdot \mathbf{l} > 0, \quad \mathbf{r} \cdot \mathbf{v} = 2 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v}) - \mathbf{l} \cdot \mathbf{v}, \quad n = \frac{2}{\alpha^2} - 2, \quad \alpha = \text{roughness}^2'
 --- */
 // R is L mirrored about N, and R·V = 2(N·L)(N·V) − L·V needs no vector. The exponent is a
 // quarter of the Blinn-Phong one: the lobe around R is about four times narrower in angle than
