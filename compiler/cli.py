@@ -68,6 +68,12 @@ def build_parser() -> argparse.ArgumentParser:
         "(the shader goes to -o if given)",
     )
     _add_target(compose)
+    compose.add_argument(
+        "--params-as-uniforms",
+        action="store_true",
+        help="webgl2 only: each parameter with a range becomes a uniform a page can set, listed "
+        "in a /* glint-params [JSON] */ block (name, type, default, min, max)",
+    )
     _add_quality(compose)
     compose.set_defaults(handler=cmd_compose)
 
@@ -215,6 +221,7 @@ def cmd_compose(args: argparse.Namespace) -> int:
         tier=args.tier,
         variants=_overrides(args.variant),
         budget=args.budget,
+        params_as_uniforms=args.params_as_uniforms,
     )
     if args.explain:
         sys.stdout.write(shader.explain())

@@ -17,6 +17,7 @@ from glint.compiler.target.shadertoy import TARGETS
 if TYPE_CHECKING:
     from glint.compiler.compose.planner import Plan
     from glint.compiler.compose.scene import Scene
+    from glint.compiler.compose.uniform_params import UniformParam
     from glint.compiler.compose.units import Unit
     from glint.compiler.target.glslang import Diagnostic
 
@@ -30,7 +31,9 @@ class Shader:
 
     For the shadertoy target `text` pastes into ShaderToy's Image tab as it is; webgl2 and
     desktop are complete fragment shaders. `plan` holds each slot's use and variant and why,
-    `units` the snippets and generated code in the order they were emitted.
+    `units` the snippets and generated code in the order they were emitted. `uniforms` holds
+    the parameters composed as uniforms (`params_as_uniforms`), as the shader's manifest lists
+    them.
     """
 
     text: str
@@ -38,6 +41,7 @@ class Shader:
     scene: Scene
     plan: Plan
     units: list[Unit]
+    uniforms: tuple[UniformParam, ...] = ()
 
     @property
     def tier(self) -> str:
@@ -98,13 +102,15 @@ def compose(
     tier: str | None = None,
     variants: Mapping[str, str] | None = None,
     budget: float | None = None,
+    params_as_uniforms: bool = False,
 ) -> Shader:
     """Compose a scene into one shader, as `glint compose` does.
 
     `scene` is the path of a scene TOML file, a dict with the same structure as the TOML, a
     `glint.compiler.compose.scene.Scene`, or None for the embedded default scene. `target`,
     `tier`, `variants` ({slot: variant}) and `budget` (ns per pixel) are the command's
-    `--target`, `--tier`, `--variant SLOT=VARIANT` and `--budget`.
+    `--target`, `--tier`, `--variant SLOT=VARIANT` and `--budget`; `params_as_uniforms` is
+    `--params-as-uniforms` (webgl2 only).
 
     Raises InputError for a scene that is not valid (the message names the key path, the value
     and what was expected), an unknown slot or variant, or a budget below the cheapest
@@ -118,8 +124,10 @@ def compose(
     if budget is not None and not (0 < budget < math.inf):
         raise UsageError(f"budget: expected a positive number of ns, got {budget!r}")
     model = load_scene(scene)
-    composed = compose_scene(model, target, tier, dict(variants or {}), budget)
-    return Shader(composed.text, target, model, composed.plan, composed.units)
+    composed = compose_scene(model, target, tier, dict(variants or {}), budget, params_as_uniforms)
+    return Shader(
+        composed.text, target, model, composed.plan, composed.units, tuple(composed.uniforms)
+    )
 
 
 def load_scene(scene: SceneInput) -> Scene:

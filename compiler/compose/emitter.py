@@ -9,10 +9,11 @@ same scene gives the same bytes.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog, glsl_value
 from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.uniform_params import UniformParam
 from glint.compiler.compose.units import CONSTANTS, GENERATED, Unit, generated
 from glint.compiler.target import shadertoy
 from glint.compiler.target.sourcemap import source_marker
@@ -25,6 +26,8 @@ class Shader:
     text: str
     units: list[Unit]
     plan: Plan
+    # the parameters the page sets as uniforms (--params-as-uniforms; empty without it)
+    uniforms: list[UniformParam] = field(default_factory=list)
 
 
 def parameter_unit(units: list[Unit], catalog: Catalog, plan: Plan, lights: dict[str, str]) -> Unit:

@@ -3,18 +3,29 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 from dataclasses import replace
 from importlib.metadata import version as package_version
 from pathlib import Path
 
-from glint.compiler.catalog.loader import Snippet, load_catalog
+from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
 from glint.compiler.compose.bake import bake
 from glint.compiler.compose.emitter import Shader, emit, parameter_unit
-from glint.compiler.compose.planner import plan
+from glint.compiler.compose.planner import Plan, plan
 from glint.compiler.compose.reachability import prune_unreachable
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.compose.scene_code import generate
+from glint.compiler.compose.uniform_params import (
+    UniformParam,
+    as_uniforms,
+    candidates,
+    constant_uses,
+    defined_params,
+    manifest_comment,
+)
+from glint.compiler.compose.units import CONSTANTS, Unit
+from glint.compiler.errors import UsageError
 
 DERIVATIVES = re.compile(r"\b(dFdx|dFdy|fwidth)\s*\(")
 
@@ -34,8 +45,13 @@ def compose_scene(
     tier: str | None = None,
     overrides: dict[str, str] | None = None,
     budget: float | None = None,
+    params_as_uniforms: bool = False,
 ) -> Shader:
-    """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements."""
+    """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements;
+    `params_as_uniforms` (webgl2 only) makes the ranged parameters uniforms a page can set."""
+    if params_as_uniforms and target != "webgl2":
+        # ShaderToy's Image tab cannot declare uniforms, and only the site's WebGL2 canvas sets them
+        raise UsageError(f"--params-as-uniforms needs --target webgl2, not {target}")
     catalog = load_catalog()
     code = generate(scene)
     the_plan = plan(scene, catalog, tier, overrides, budget, code.units)
@@ -50,8 +66,36 @@ def compose_scene(
     # Units come whole; drop what mainImage never reaches, parameters included, now that the
     # block is written.
     units = prune_unreachable(units)
+    uniforms: list[UniformParam] = []
+    if params_as_uniforms:
+        units, uniforms = _params_as_uniforms(scene.name, the_plan, units, catalog, target)
     text = emit(scene.name, the_plan, units, target, glint_version())
-    return Shader(text=text, units=units, plan=the_plan)
+    return Shader(text=text, units=units, plan=the_plan, uniforms=uniforms)
+
+
+def _params_as_uniforms(
+    scene_name: str, the_plan: Plan, units: list[Unit], catalog: Catalog, target: str
+) -> tuple[list[Unit], list[UniformParam]]:
+    """The units with the ranged parameters the pruned block still defines turned into
+    uniforms, except those the shader needs as constants; and those uniforms, in block order."""
+    index = next((i for i, unit in enumerate(units) if unit.id == CONSTANTS), None)
+    if index is None:
+        return units, []
+    block = units[index].body
+    ranged = candidates(units, catalog, the_plan)
+    params = [ranged[name] for name in defined_params(block, ranged)]
+    by_name = {p.name: p for p in params}
+
+    def shader_with(names: Collection[str]) -> str:
+        body = as_uniforms(block, [by_name[name] for name in names])
+        trial = [*units[:index], replace(units[index], body=body), *units[index + 1 :]]
+        return emit(scene_name, the_plan, trial, target, "")
+
+    # Keep as #define what the shader needs as a constant (found by parsing it, not listed).
+    constant = constant_uses(by_name, shader_with)
+    params = [p for p in params if p.name not in constant]
+    body = as_uniforms(block, params) + manifest_comment(params)
+    return [*units[:index], replace(units[index], body=body), *units[index + 1 :]], params
 
 
 def compose(
@@ -60,6 +104,9 @@ def compose(
     tier: str | None = None,
     overrides: dict[str, str] | None = None,
     budget: float | None = None,
+    params_as_uniforms: bool = False,
 ) -> Shader:
     """Compose a scene file (None: the embedded default scene) into one shader."""
-    return compose_scene(load_scene(scene_path), target, tier, overrides, budget)
+    return compose_scene(
+        load_scene(scene_path), target, tier, overrides, budget, params_as_uniforms
+    )

@@ -1,0 +1,137 @@
+"""`glint compose --target webgl2 --params-as-uniforms`: ranged parameters become uniforms with
+a manifest for the page's sliders; constant-expression uses stay #defines; nothing else moves."""
+
+from __future__ import annotations
+
+import re
+import shutil
+from collections.abc import Callable, Collection
+from pathlib import Path
+
+import pytest
+
+from glint.compiler.cli import main
+from glint.compiler.compose.pipeline import compose
+from glint.compiler.compose.uniform_params import constant_uses, read_manifest
+from glint.compiler.target.glslang import validate
+
+SCENES = sorted(Path("snippets/scenes").glob("*.toml"))
+needs_glslang = pytest.mark.skipif(
+    shutil.which("glslangValidator") is None, reason="glslangValidator is not installed"
+)
+
+
+def _uniform_names(text: str) -> list[str]:
+    return re.findall(r"^uniform (?:float|int) ([A-Z_][A-Z0-9_]*);$", text, re.M)
+
+
+def test_ranged_parameters_become_uniforms_listed_in_the_manifest() -> None:
+    shader = compose(target="webgl2", params_as_uniforms=True)
+    manifest = read_manifest(shader.text)
+    assert manifest == shader.uniforms
+    assert [p.name for p in manifest] == _uniform_names(shader.text)
+    by_name = {p.name: p for p in manifest}
+    # the default scene's AO and march step count (an int: a loop bound, fine in ES 3.00)
+    ao = by_name["AO_STRENGTH"]
+    assert (ao.type, ao.default, ao.min, ao.max) == ("float", 3.0, 0.0, 10.0)
+    assert by_name["MARCH_STEPS"].type == "int"
+    assert isinstance(by_name["MARCH_STEPS"].default, int)
+    for param in manifest:
+        assert f"#define {param.name} " not in shader.text
+        assert param.min <= param.default <= param.max
+    # parameters with no range stay #defines (a slider needs bounds)
+    assert "#define CAMERA_HEIGHT 1.5" in shader.text
+
+
+def test_only_the_parameter_block_differs_from_the_plain_webgl2_shader() -> None:
+    plain = compose(target="webgl2").text
+    shader = compose(target="webgl2", params_as_uniforms=True)
+    names = {p.name for p in shader.uniforms}
+    kept = [
+        line
+        for line in shader.text.splitlines()
+        if not any(line == f"uniform {p.type} {p.name};" for p in shader.uniforms)
+    ]
+    start = kept.index("/* glint-params")
+    del kept[start : start + 3]
+    expected = [
+        line
+        for line in plain.splitlines()
+        if not (line.startswith("#define ") and line.split()[1] in names)
+    ]
+    assert kept == expected
+    assert "glint-params" not in plain
+
+
+@pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
+@needs_glslang
+def test_every_example_scene_validates_with_uniforms(scene: Path) -> None:
+    shader = compose(scene, target="webgl2", params_as_uniforms=True)
+    assert shader.uniforms
+    assert validate(shader.text, scene.name, "webgl2") == []
+
+
+SOURCE = """#version 300 es
+precision highp float;
+DECLARATIONS
+#define TWICE_C (C * 2.0)
+#define USES_H H
+const float k = A * 2.0;
+float g = TWICE_C;
+float arr[D + 1];
+#if USES_H > 1
+#endif
+out vec4 o;
+void main() {
+    float v = B;
+    for (int i = 0; i < E; i++) { v += F; }
+    switch (E) { case 1: break; }
+    const float local = G;
+    o = vec4(v + local + k + g + arr[0]);
+}
+"""
+
+
+INTS = ("D", "E", "H")
+
+
+def _shader_with(source: str) -> Callable[[Collection[str]], str]:
+    """`source` with the given names declared as uniforms and the others #defined."""
+
+    def shader_with(uniforms: Collection[str]) -> str:
+        lines = []
+        for name in "ABCDEFGH":
+            kind = "int" if name in INTS else "float"
+            value = "2" if name in INTS else "2.0"
+            lines.append(
+                f"uniform {kind} {name};" if name in uniforms else f"#define {name} {value}"
+            )
+        return source.replace("DECLARATIONS", "\n".join(lines))
+
+    return shader_with
+
+
+def test_constant_expression_uses_are_found_by_the_parser() -> None:
+    found = constant_uses("ABCDEFGH", _shader_with(SOURCE))
+    # const initialisers (global and local), a global's initialiser through a macro, an array
+    # size, a #if through a macro; not B, E (a loop bound, a switch selector) or F
+    assert found == {"A", "C", "D", "G", "H"}
+
+
+def test_case_labels_need_constants() -> None:
+    source = SOURCE.replace("case 1:", "case int(B):")
+    assert "B" in constant_uses(["B"], _shader_with(source))
+
+
+def test_other_targets_are_refused_with_one_message(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["compose", "--params-as-uniforms"]) == 2
+    err = capsys.readouterr().err
+    assert err.strip() == "glint: --params-as-uniforms needs --target webgl2, not shadertoy"
+
+
+@needs_glslang
+def test_cli_writes_a_shader_that_validates(tmp_path: Path) -> None:
+    out = tmp_path / "live.glsl"
+    assert main(["compose", "--target", "webgl2", "--params-as-uniforms", "-o", str(out)]) == 0
+    assert read_manifest(out.read_text())
+    assert main(["validate", "--target", "webgl2", str(out)]) == 0
