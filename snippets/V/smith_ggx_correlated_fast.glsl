@@ -8,6 +8,7 @@ domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_correlated"
 error_budget = { max_abs = 600.0, max_rel = 0.3 }
 sources = ["Hammon 2017, PBR Diffuse Lighting for GGX+Smith Microsurfaces (GDC)", "Heitz 2014"]
+formula = 'V = \frac{0.5}{(1 - \alpha)\, 2 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v}) + \alpha\, (\mathbf{n} \cdot \mathbf{l} + \mathbf{n} \cdot \mathbf{v})}, \quad \alpha = \text{roughness}^2'
 --- */
 // Smallest denominator: it vanishes when NoL = NoV = 0.
 #define MIN_VIS_FAST_DENOM 1e-5

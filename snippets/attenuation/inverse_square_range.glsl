@@ -8,6 +8,7 @@ domain = { dist = [0.01, 100], range = [0.1, 100] }
 reference = "attenuation_inverse_square_windowed"
 error_budget = { max_abs = 2e-3, max_rel = 1e-4 }
 sources = ["Karis 2013, Real Shading in Unreal Engine 4, eq. 9", "Filament, shaders/src/light_punctual.fs (getDistanceAttenuation)", "Lagarde & de Rousiers 2014, Moving Frostbite to PBR, 3.1.2"]
+formula = 'A(d) = \begin{cases} \dfrac{\operatorname{clamp}\left( 1 - (d / r)^4, 0, 1 \right)^2}{\max(d^2, 0.01^2)} & d < r \\ 0 & d \ge r \end{cases}, \quad r = \text{range}'
 --- */
 // Closest distance the falloff is evaluated at: 1 cm in a scene in metres. It caps the factor
 // at 1/ATTEN_MIN_DIST² = 1e4 next to the light, where 1/d² would reach +∞ (a point light has no

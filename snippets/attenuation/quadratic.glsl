@@ -9,6 +9,7 @@ domain = { dist = [0, 1000], range = [0, 100] }
 reference = "attenuation_quadratic"
 error_budget = { max_abs = 1e-7, max_rel = 1e-6 }
 sources = ["lighting-model skill, point light attenuation", "OpenGL 1.x fixed-function lighting (GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION)"]
+formula = 'A(d) = \frac{1}{1 + k_l\, d + k_q\, d^2}, \quad k_l = \text{ATTEN\_LINEAR} = 0.1, \quad k_q = \text{ATTEN\_QUADRATIC} = 0.01'
 --- */
 // The classic artist's falloff: 1 at the light, never infinite, and 100/d² far away (so a light
 // of this family is 100 times brighter at a distance than the same intensity under 1/d²). It is

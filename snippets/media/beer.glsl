@@ -11,6 +11,7 @@ sources = [
     "lighting-model skill, common variants (Beer's law water lighting)",
     "Pharr, Jakob and Humphreys, PBRT 3rd ed., 11.1 (Beer's law)",
 ]
+formula = 'C = T\, C_{\text{surface}} + (1 - T)\, C_{\text{inscatter}}, \quad T = e^{-\sigma \max(d, 0)}'
 # σ per unit distance, per channel (natural log): the skill's water, exp2(−6·(0.5, 0.6, 0.9)·d),
 # is σ = 6 ln 2 · (0.5, 0.6, 0.9). Red goes first, blue last.
 [params.MEDIUM_EXTINCTION]

@@ -11,6 +11,7 @@ sources = [
     "lighting-model skill, common variants (SSS: Henyey-Greenstein)",
     "Henyey and Greenstein 1941, Diffuse radiation in the galaxy",
 ]
+formula = 'p(\theta) = \frac{1 - g^2}{4\pi \left( 1 + g^2 - 2 g \cos\theta \right)^{3/2}}, \quad g \in [-0.99, 0.99]'
 --- */
 // cosTheta is the cosine of the scattering angle, between the light's direction of travel and
 // the scattered direction (for light from L seen from V: −dot(L, V)); g > 0 scatters forward.

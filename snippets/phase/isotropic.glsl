@@ -8,6 +8,7 @@ domain = { cosTheta = [-1, 1], g = [0, 0] }
 reference = "phase_henyey_greenstein"
 error_budget = { max_abs = 1e-8 }
 sources = ["Pharr, Jakob and Humphreys, PBRT 3rd ed., 11.2 (phase functions)"]
+formula = 'p(\theta) = \frac{1}{4\pi}'
 --- */
 
 float phase(float cosTheta, float g) {

@@ -11,6 +11,7 @@ sources = [
     "Blasi, Le Saec and Schlick 1993, A Rendering Algorithm for Discrete Volume Density Objects",
     "Pharr, Jakob and Humphreys, PBRT 3rd ed., 11.3.1 (the k(g) fit)",
 ]
+formula = 'p(\theta) = \frac{1 - k^2}{4\pi \left( 1 - k \cos\theta \right)^2}, \quad k = \operatorname{clamp}(1.55\, g - 0.55\, g^3, -0.999, 0.999)'
 --- */
 // p = (1 − k²) / (4π (1 − k cosθ)²): normalised for any |k| < 1, and shaped like HG of the
 // same asymmetry when k = 1.55g − 0.55g³. It is exactly isotropic at g = 0; the shapes part

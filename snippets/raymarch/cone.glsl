@@ -6,6 +6,7 @@ provides = ["raymarch"]
 requires = ["map"]
 params = { MARCH_STEPS = { type = "int", default = 64, range = [1, 1024] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_PIXEL = { type = "float", default = 0.002, range = [0.0, 0.05] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] } }
 sources = ["Hart 1996, sphere tracing", "Keinert et al. 2014, Enhanced Sphere Tracing (pixel-cone termination)"]
+formula = 't_{i+1} = t_i + d_i, \quad d_i = d(\mathbf{o} + t_i \boldsymbol{\omega}), \quad \text{stop at } d_n < \max(\varepsilon, c\, t_n), \quad t_{\text{hit}} = t_n + \frac{d_n\, d_{n-1}}{d_{n-1} - d_n} \text{ if } d_n < d_{n-1} \text{ and that lands nearer the surface, else } t_n'
 --- */
 // A pixel sees a cone about 2 / (iResolution.y · focal) radians wide. Once the scene is nearer
 // the ray than MARCH_PIXEL · t (or MARCH_EPSILON, near the eye) the march stops: more steps

@@ -6,6 +6,7 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 64, range = [1, 256] } }
 sources = ["Inigo Quilez, soft shadows (the hard case)"]
+formula = 'S = \begin{cases} 0 & h_i < 0.001 \text{ for some } i \\ 1 & \text{otherwise} \end{cases}, \quad h_i = d(\mathbf{o} + t_i \boldsymbol{\omega}), \quad t_0 = t_{\min}, \quad t_{i+1} = t_i + h_i, \quad t_i \le t_{\max},\ i < N'
 reference = "shadow_ray"
 error_budget = { mean_abs = 0.003 }  # 0/1 output: the share of points whose verdict differs
 --- */

@@ -6,6 +6,7 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 24, range = [1, 256] }, SHADOW_K = { type = "float", default = 8.0, range = [1.0, 128.0] } }
 sources = ["lighting-model skill, complete code template", "Inigo Quilez, soft shadows in raymarched SDFs (2010)"]
+formula = 'S = \operatorname{clamp}\left( \min_i \frac{k\, h_i}{t_i},\ 0,\ 1 \right), \quad h_i = d(\mathbf{o} + t_i \boldsymbol{\omega}), \quad t_0 = \max(t_{\min}, 10^{-3}), \quad t_{i+1} = t_i + \operatorname{clamp}(h_i, 0.02, 0.2), \quad t_i \le t_{\max},\ i < N'
 reference = "shadow_disc_light"
 # Against a disc light of angular radius atan(1/k): max 0.91 (a low sun's far occluder is out
 # of reach of 24 steps), mean 0.018 over 10460 points, 0.24 in the penumbrae.

@@ -6,6 +6,7 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 32, range = [1, 256] }, SHADOW_K = { type = "float", default = 8.0, range = [1.0, 128.0] }, SHADOW_MIN_STEP = { type = "float", default = 0.05, range = [0.001, 1.0] }, SHADOW_MAX_STEP = { type = "float", default = 2.0, range = [0.02, 100.0] } }
 sources = ["Inigo Quilez, soft shadows in raymarched SDFs, improved soft shadows with inner penumbra (2020)"]
+formula = 'S = \tfrac{1}{4} (1 + x)^2 (2 - x), \quad x = \max\left( -1, \min\left( 1, \min_i \frac{k\, h_i}{t_i} \right) \right), \quad h_i = d(\mathbf{o} + t_i \boldsymbol{\omega}), \quad t_0 = \max(t_{\min}, 10^{-3}), \quad t_{i+1} = t_i + \operatorname{clamp}(|h_i|, s_{\min}, s_{\max})'
 reference = "shadow_disc_light"
 # Against a disc light of angular radius atan(1/k): mean 0.0044, max 0.27 over 10460 points
 # (shadow.soft: 0.018 and 0.91; shadow.hard: 0.016 and 0.66). 64 steps give the same: what is

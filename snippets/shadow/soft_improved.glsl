@@ -6,6 +6,7 @@ provides = ["shadow"]
 requires = ["map"]
 params = { SHADOW_STEPS = { type = "int", default = 32, range = [1, 256] }, SHADOW_K = { type = "float", default = 8.0, range = [1.0, 128.0] } }
 sources = ["Inigo Quilez, soft shadows in raymarched SDFs, improved technique (2018)", "Sebastian Aaltonen, GDC 2018, Claybook: ray tracing SDFs"]
+formula = 'S = \operatorname{clamp}\left( \min_i \frac{k \sqrt{h_i^2 - y_i^2}}{t_i - y_i},\ 0,\ 1 \right), \quad y_i = \frac{h_i^2 - h_{i-1}^2 + s_i^2}{2 s_i} \text{ if } s_i \le h_{i-1} \text{ and } 0 < y_i < h_i, \text{ else } 0, \quad s_i = t_i - t_{i-1}, \quad t_{i+1} = t_i + \operatorname{clamp}(h_i, 0.02, 0.2), \quad S = 0 \text{ if some } h_i < 10^{-4}'
 reference = "shadow_disc_light"
 error_budget = { max_abs = 0.75, mean_abs = 0.027 }
 --- */

@@ -10,6 +10,7 @@ sources = [
     "lighting-model skill, common variants (SSS: SDF interior probing)",
     "Pharr, Jakob and Humphreys, PBRT 3rd ed., 11.1 (Beer's law)",
 ]
+formula = 'T = \exp\left( -\sigma\, \Delta \sum_{i=0}^{4} \left[ d\left( \mathbf{p} + (i + \tfrac{1}{2}) \Delta\, \mathbf{l} \right) < 0 \right] \right), \quad \sigma = \text{SSS\_EXTINCTION}, \quad \Delta = \text{SSS\_STEP}'
 params = { SSS_EXTINCTION = { type = "float", default = 6.0, range = [0.0, 100.0] }, SSS_STEP = { type = "float", default = 0.1, range = [0.01, 1.0] } }
 --- */
 // Light reaching the surface point p from the inside, through the body, toward the light L:
