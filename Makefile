@@ -2,6 +2,7 @@
 # the Debian packages glint runs (glslang, the Mesa EGL libraries), then a virtual environment
 # with glint installed editable. `make site` builds the docs site into build/site (`make serve`
 # serves it), with the Debian packages of its local KaTeX and the site's Python packages.
+# `make test` installs those KaTeX packages and Chromium too: the browser tests load the site.
 
 PYTHON ?= python3
 VENV := .venv
@@ -10,8 +11,11 @@ BUILD := build
 SYSTEM_PACKAGES := glslang-tools spirv-tools libegl1 libegl-mesa0 libgl1-mesa-dri
 # Only the docs site needs these (KaTeX and its fonts, served by the site itself).
 SITE_PACKAGES := libjs-katex fonts-katex
+# The browser tests (tests/test_site_browser.py) drive Debian's Chromium through Playwright: no
+# browser download, which `playwright install` would need the network for.
+BROWSER_PACKAGES := chromium
 
-.PHONY: setup system system-site venv demo test lint site serve clean
+.PHONY: setup system system-site system-test venv demo test lint site serve screenshot clean
 
 setup: system venv
 
@@ -21,6 +25,10 @@ system:
 
 system-site:
 	@$(call install_packages,$(SITE_PACKAGES))
+
+# One apt-get run for what the tests need beyond `system`: the site's KaTeX and Chromium.
+system-test:
+	@$(call install_packages,$(SITE_PACKAGES) $(BROWSER_PACKAGES))
 
 define install_packages
 	missing=""; \
@@ -64,11 +72,15 @@ site: setup system-site $(VENV)/.installed-site
 serve: setup system-site $(VENV)/.installed-site
 	$(BIN)/mkdocs serve -f mkdocs.yml
 
+# The picture in the README: D.ggx's page of the site just built, in headless Chromium.
+screenshot: site system-test
+	$(BIN)/python site/screenshot.py $(BUILD)/site site/screenshot.png
+
 $(VENV)/.installed-site: $(VENV)/.installed pyproject.toml
 	$(BIN)/pip install --quiet --disable-pip-version-check -e '.[dev,site]'
 	touch $@
 
-test: setup
+test: setup system-test
 	$(BIN)/python -m pytest -q
 
 lint: venv
