@@ -5,6 +5,7 @@ variant's picture, rendered once."""
 from __future__ import annotations
 
 import html
+import json
 import os
 import re
 import subprocess
@@ -14,12 +15,14 @@ from pathlib import Path
 import pytest
 
 import glint
+from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.cli import build_parser
 from glint.compiler.errors import UsageError
 from glint.compiler.site import build_docs
 from glint.compiler.site.catalog_pages import VariantDoc, variant_page
 from glint.compiler.site.cli_reference import commands
 from glint.compiler.site.katex_assets import KATEX_DIR
+from glint.compiler.site.measured import Accuracy, accuracy_section
 from glint.compiler.site.pictures import selection_from_env, variant_pictures
 
 ROOT = Path(__file__).parent.parent
@@ -176,7 +179,7 @@ def test_generated_pages_never_land_in_the_sources(tmp_path: Path) -> None:
 
 
 # one from a slot the default scene fills, one it does not (lamp.toml's point light), a library
-PICTURED = ("D.beckmann", "attenuation.quadratic")
+PICTURED = ("D.beckmann", "D.ggx", "attenuation.quadratic")
 LIBRARY = "core.constants"
 
 
@@ -214,7 +217,8 @@ def test_variant_pictures_are_shown_and_rendered_once(tmp_path: Path) -> None:
     ]
 
     times = {path: path.stat().st_mtime_ns for path in cache.iterdir()}
-    assert len(times) == len(PICTURED)
+    renders = [path for path in times if re.fullmatch(r"[0-9a-f]{64}\.png", path.name)]
+    assert len(renders) == len(PICTURED)
     assert variant_pictures(chosen, cache).rendered == 0
     build_docs(
         ROOT / "site" / "docs", docs, ROOT / "README.md", _katex_dir(tmp_path), cache, chosen
@@ -243,3 +247,49 @@ def test_which_pictures_the_environment_asks_for() -> None:
     assert selection_from_env(None) is None and selection_from_env("all") is None
     assert selection_from_env("none") == ()
     assert selection_from_env("D.ggx, sss.sdf_probe") == ("D.ggx", "sss.sdf_probe")
+
+
+def test_variant_and_slot_pages_show_what_is_measured(tmp_path: Path) -> None:
+    """The bench's numbers and the budget on a variant's page, its GLSL plotted against its
+    reference, its float16 survival; the slot's variants side by side with FLIP images."""
+    Image = pytest.importorskip("PIL.Image")
+    docs, cache = tmp_path / "docs", tmp_path / "cache"
+    build_docs(ROOT / "site" / "docs", docs, ROOT / "README.md", _katex_dir(tmp_path), cache,
+               ("D.ggx", "D.beckmann"))  # fmt: skip
+    bench = json.loads((ROOT / "site" / "docs" / "bench" / "bench.json").read_text())
+    row = next(r for r in bench["variants"] if r["id"] == "D.ggx")
+    page = (docs / "catalog" / "D.ggx.md").read_text()
+    section = page[page.index("## Accuracy and cost") : page.index("## Code")]
+    assert f"| SPIR-V instructions | {row['spirv']} |" in section
+    assert f"| RMS error | {row['rms']:.3g} |" in section
+    budget = load_catalog().get("D.ggx").error_budget["max_rel"]
+    assert f"| {row['max_rel']:.3g} | ≤ {budget:.3g} |" in section
+    # GGX's denominator underflows in half precision at the lowest roughness
+    assert "does **not** survive float16" in section
+    with Image.open(docs / "img" / "accuracy" / "D.ggx.png") as plot:
+        assert plot.size[0] > 400 and plot.size[1] > 200
+    assert "](../img/accuracy/D.ggx.png)" in section
+    slot = (docs / "catalog" / "slots" / "D.md").read_text()
+    assert "| [`D.ggx`](../D.ggx.md) |" in slot and "the reference | 0 |" in slot
+    beckmann = re.search(
+        r"\| \[`D\.beckmann`\][^\n]*img/flip/D\.beckmann\.png[^|]*\| ([0-9.]+) \|", slot
+    )
+    assert beckmann is not None and 0.0 < float(beckmann.group(1)) < 0.2
+    with Image.open(docs / "img" / "flip" / "D.beckmann.png") as flip:
+        assert flip.size == (192, 108)
+    assert (docs / "img" / "charts" / "D.png").is_file()
+    assert "★" in slot  # the front
+
+
+def test_accuracy_section_from_plain_data() -> None:
+    row = {"id": "X.y", "reference": "X_y", "error_unit": "degrees", "max_abs": 0.5, "rms": 0.1,
+           "max_rel": None, "worst_at": {"t": 0.25}, "samples": 10, "spirv": 42,
+           "gpu_ns": 1.5, "pareto": False}  # fmt: skip
+    half_fails = {"float16": {"finite": False, "nonfinite_lanes": 3, "max_rel_err_vs_f64": 9.0},
+                  "float32": {"finite": True, "max_rel_err_vs_f64": 1e-7}}  # fmt: skip
+    text = accuracy_section("X.y", Accuracy(row, {"max_abs": 1.0}, half_fails), "a test GPU")
+    assert "| max error | 0.5 (degrees) | ≤ 1 |" in text
+    assert "| worst at | t = 0.25 |" in text
+    assert "| on its slot's cost/error front | no |" in text
+    assert "3 sample(s) turn infinite or NaN" in text and "a test GPU" in text
+    assert accuracy_section("X.y", None, "") == ""

@@ -99,6 +99,15 @@ def load_png(path: str) -> np.ndarray:
 
 def flip_error(reference: np.ndarray, test: np.ndarray) -> float:
     """Mean LDR FLIP error between two images as they are displayed (0 = identical)."""
+    return _flip(reference, test, magma=False)[1]
+
+
+def flip_image(reference: np.ndarray, test: np.ndarray) -> tuple[np.ndarray, float]:
+    """The FLIP error map in the magma colours (RGB in [0, 1]) and its mean."""
+    return _flip(reference, test, magma=True)
+
+
+def _flip(reference: np.ndarray, test: np.ndarray, magma: bool) -> tuple[np.ndarray, float]:
     # Imported here: flip_evaluator is only needed when images are compared.
     import flip_evaluator
 
@@ -108,5 +117,5 @@ def flip_error(reference: np.ndarray, test: np.ndarray) -> float:
             f"cannot compare images of different sizes: {ref.shape[1]}x{ref.shape[0]} "
             f"and {tst.shape[1]}x{tst.shape[0]}"
         )
-    _, mean, _ = flip_evaluator.evaluate(ref, tst, "LDR", applyMagma=False)
-    return float(mean)
+    error_map, mean, _ = flip_evaluator.evaluate(ref, tst, "LDR", applyMagma=magma)
+    return np.asarray(error_map, np.float32), float(mean)

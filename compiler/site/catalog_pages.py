@@ -17,6 +17,7 @@ from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_table
 
 from .markdown import cell, code, fenced, math_block, table, text
+from .measured import Accuracy, accuracy_section
 from .pictures import SIZE, TIME, Picture
 
 CATALOG_DIR = PurePosixPath("catalog")
@@ -61,16 +62,28 @@ def slot_path(slot: str) -> PurePosixPath:
 
 
 def catalog_pages(
-    variants: list[VariantDoc] | None = None, pictures: Mapping[str, Picture] | None = None
+    variants: list[VariantDoc] | None = None,
+    pictures: Mapping[str, Picture] | None = None,
+    accuracy: Mapping[str, Accuracy] | None = None,
+    machine: str = "",
+    slot_sections: Mapping[str, str] | None = None,
 ) -> dict[PurePosixPath, str]:
     """Every catalog page, by its path under the docs folder; a variant in `pictures` shows
-    its picture (or why it has none)."""
+    its picture (or why it has none), one in `accuracy` what is measured of it (on `machine`);
+    a slot's page ends with its section in `slot_sections` (its variants compared)."""
     variants = variant_docs() if variants is None else variants
     pictures = pictures or {}
+    accuracy = accuracy or {}
+    slot_sections = slot_sections or {}
     slots = slot_docs(variants)
     pages = {CATALOG_DIR / "index.md": index_page(variants, slots, pictures)}
-    pages |= {slot_path(slot.name): slot_page(slot) for slot in slots}
-    pages |= {variant_path(doc.id): variant_page(doc, pictures.get(doc.id)) for doc in variants}
+    pages |= {
+        slot_path(slot.name): slot_page(slot) + slot_sections.get(slot.name, "") for slot in slots
+    }
+    pages |= {
+        variant_path(doc.id): variant_page(doc, pictures.get(doc.id), accuracy.get(doc.id), machine)
+        for doc in variants
+    }
     return pages
 
 
@@ -186,8 +199,14 @@ def slot_page(slot: SlotDoc) -> str:
     return "".join(parts)
 
 
-def variant_page(doc: VariantDoc, picture: Picture | None = None) -> str:
-    """One variant: summary, picture, formula, code in tabs, contract, tiers, sources."""
+def variant_page(
+    doc: VariantDoc,
+    picture: Picture | None = None,
+    accuracy: Accuracy | None = None,
+    machine: str = "",
+) -> str:
+    """One variant: summary, picture, formula, accuracy and cost, code in tabs, contract,
+    tiers, sources."""
     parts = [
         f"# {code(doc.id)}\n\n",
         f"{text(doc.summary)}. Slot [{code(doc.slot)}](slots/{doc.slot}.md); file "
@@ -197,6 +216,7 @@ def variant_page(doc: VariantDoc, picture: Picture | None = None) -> str:
         parts += ["## Picture\n\n", picture_block(doc, picture), "\n"]
     if doc.formula:
         parts += ["## Formula\n\n", math_block(doc.formula), "\n"]
+    parts.append(accuracy_section(doc.id, accuracy, machine))
     parts += [
         "## Code\n\n",
         '=== "Snippet"\n\n',

@@ -1,0 +1,209 @@
+"""What a slot's page shows of its variants side by side: each variant's picture with its FLIP
+error image against the variant the reference tier takes for the slot, the slot's cost/error
+chart with its front marked, and its rows of the bench table.
+
+Every variant of a slot is shown in the same scene (pictures.scene_using), so their pictures
+compare pixel for pixel. The chart is drawn with matplotlib from the bench report and cached
+by a hash of the data it shows, like the pictures.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path, PurePosixPath
+from typing import Any
+
+import numpy as np
+from PIL import Image
+
+import glint
+from glint.compiler.catalog.tiers import tier_table
+from glint.compiler.files import write_atomic
+from glint.compiler.render.images import flip_image, png_bytes
+
+from .markdown import cell, code, table
+from .measured import Bench
+from .pictures import Picture
+
+FLIP_DIR = PurePosixPath("img") / "flip"
+CHART_DIR = PurePosixPath("img") / "charts"
+CHART_VERSION = "1"  # bump when the chart's look changes
+
+
+@dataclass
+class SlotComparisons:
+    """Per slot, the Markdown section of its page; the images it shows, by path."""
+
+    sections: dict[str, str] = field(default_factory=dict)
+    files: dict[PurePosixPath, bytes] = field(default_factory=dict)
+
+
+def reference_variant(slot: str, tiers: Mapping[str, Mapping[str, str]]) -> str | None:
+    """The variant the reference tier takes for `slot` (balanced's where it names none)."""
+    chosen = tiers.get("reference", {}).get(slot) or tiers.get("balanced", {}).get(slot)
+    return f"{slot}.{chosen}" if chosen else None
+
+
+def slot_comparisons(
+    slots: Mapping[str, list[str]],
+    pictures: Mapping[str, Picture],
+    picture_files: Mapping[PurePosixPath, bytes],
+    bench: Bench,
+    cache_dir: Path | None,
+) -> SlotComparisons:
+    """The sections of the slots' pages: `slots` maps each slot to its variant ids."""
+    tiers = tier_table()
+    result = SlotComparisons()
+    for slot, ids in slots.items():
+        parts: list[str] = []
+        reference = reference_variant(slot, tiers)
+        flips = _flip_table(ids, reference, pictures, picture_files, result)
+        if flips:
+            parts.append(flips)
+        rows = [bench.variants[i] for i in ids if i in bench.variants]
+        if rows:
+            parts.append(_bench_section(slot, rows, bench.machine, cache_dir, result))
+        if parts:
+            result.sections[slot] = "".join(parts)
+    return result
+
+
+def _decode(png: bytes) -> np.ndarray:
+    with Image.open(io.BytesIO(png)) as image:
+        return np.asarray(image.convert("RGB"), dtype=np.float32) / 255.0
+
+
+def _flip_table(
+    ids: list[str],
+    reference: str | None,
+    pictures: Mapping[str, Picture],
+    files: Mapping[PurePosixPath, bytes],
+    result: SlotComparisons,
+) -> str:
+    """Each variant's picture and its FLIP image against the reference variant's picture."""
+    ref_picture = pictures.get(reference) if reference else None
+    if ref_picture is None or ref_picture.path is None or ref_picture.path not in files:
+        return ""
+    truth = _decode(files[ref_picture.path])
+    rows = []
+    for snippet_id in ids:
+        picture = pictures.get(snippet_id)
+        if picture is None or picture.path is None or picture.path not in files:
+            continue
+        shown = f'![{snippet_id}](../../{picture.path.as_posix()}){{ width="192" }}'
+        if snippet_id == reference:
+            rows.append([f"[{code(snippet_id)}](../{snippet_id}.md)", shown, "the reference", "0"])
+            continue
+        error_map, mean = flip_image(truth, _decode(files[picture.path]))
+        flip_path = FLIP_DIR / f"{snippet_id}.png"
+        result.files[flip_path] = png_bytes(error_map)
+        flip = f'![FLIP error of {snippet_id}](../../{flip_path.as_posix()}){{ width="192" }}'
+        rows.append([f"[{code(snippet_id)}](../{snippet_id}.md)", shown, flip, f"{mean:.4f}"])
+    if len(rows) < 2:
+        return ""
+    scene = ref_picture.scene
+    return (
+        "## Side by side\n\n"
+        f"Each variant in {scene}, and its FLIP error image against {code(reference or '')}, "
+        "the variant the reference tier takes (black: no visible difference; bright: "
+        "large). The last column is the mean FLIP error over the picture.\n\n"
+        + table(["variant", "picture", "FLIP against the reference", "mean FLIP"], rows)
+        + "\n"
+    )
+
+
+def _bench_section(
+    slot: str,
+    rows: list[dict[str, Any]],
+    machine: str,
+    cache_dir: Path | None,
+    result: SlotComparisons,
+) -> str:
+    parts = ["## Cost and error\n\n"]
+    measured = [r for r in rows if r.get("rms") is not None]
+    if len(measured) >= 2:
+        chart = _chart(slot, measured, cache_dir)
+        path = CHART_DIR / f"{slot}.png"
+        result.files[path] = chart
+        parts.append(
+            f"![cost and error of the {slot} variants](../../{path.as_posix()})\n\n"
+            "Each variant's RMS error against its float64 reference over its time per call; "
+            "the variants on the front (filled, joined) are those no other variant measured "
+            "against the same reference beats on both.\n\n"
+        )
+    parts.append(_table(rows))
+    if machine:
+        parts.append(f"\nMeasured by `glint bench` on {cell(machine)}.\n")
+    return "".join(parts) + "\n"
+
+
+def _table(rows: list[dict[str, Any]]) -> str:
+    def num(value: float | None) -> str:
+        return "–" if value is None else f"{value:.3g}"
+
+    body = [
+        [
+            f"[{code(r['id'])}](../{r['id']}.md)",
+            code(str(r["reference"])) if r.get("reference") else "–",
+            num(r.get("max_abs")),
+            num(r.get("rms")),
+            num(r.get("max_rel")),
+            str(r["spirv"]),
+            f"{r['gpu_ns']:.2f}",
+            "★" if r.get("pareto") else "",
+        ]
+        for r in rows
+    ]
+    header = ["variant", "reference", "max abs", "RMS", "max rel", "SPIR-V", "ns", "front"]
+    return table(header, body)
+
+
+def _chart(slot: str, rows: list[dict[str, Any]], cache_dir: Path | None) -> bytes:
+    data = [[r["id"], r["reference"], r["gpu_ns"], r["rms"], bool(r.get("pareto"))] for r in rows]
+    key = hashlib.sha256(
+        json.dumps([glint.__version__, CHART_VERSION, slot, data]).encode("utf-8")
+    ).hexdigest()[:32]
+    cached = cache_dir / f"chart-{key}.png" if cache_dir is not None else None
+    if cached is not None and cached.is_file():
+        return cached.read_bytes()
+    png = _draw_chart(slot, data)
+    if cached is not None:
+        cache_dir.mkdir(parents=True, exist_ok=True)  # type: ignore[union-attr]
+        write_atomic(cached, png)
+    return png
+
+
+def _draw_chart(slot: str, data: list[list[Any]]) -> bytes:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.0, 3.6), dpi=100, layout="constrained")
+    references = sorted({row[1] for row in data})
+    for colour, reference in enumerate(references):
+        group = [row for row in data if row[1] == reference]
+        ns = np.array([max(row[2], 0.01) for row in group])  # 0 ns: below what can be measured
+        rms = np.array([max(row[3], 1e-9) for row in group])
+        front = np.array([row[4] for row in group])
+        ax.scatter(ns[~front], rms[~front], facecolors="none", edgecolors=f"C{colour}")
+        ax.scatter(ns[front], rms[front], color=f"C{colour}", label=f"against {reference}")
+        order = np.argsort(ns[front])
+        ax.step(ns[front][order], rms[front][order], where="post", color=f"C{colour}", alpha=0.5)
+        for row, x, y in zip(group, ns, rms, strict=True):
+            ax.annotate(row[0].split(".", 1)[1], (x, y), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")  # fmt: skip
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("ns per call")
+    ax.set_ylabel("RMS error")
+    ax.set_title(f"slot {slot}: cost against error", fontsize=9)
+    ax.legend(fontsize=7)
+    out = io.BytesIO()
+    fig.savefig(out, format="png", metadata={"Software": None})
+    plt.close(fig)
+    return out.getvalue()
