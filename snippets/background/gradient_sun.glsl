@@ -5,6 +5,7 @@ summary = "The environment gradient plus a glow and a disc around the sun"
 provides = ["background"]
 requires = ["env", "SUN_DIR", "SUN_COLOR"]
 sources = ["lighting-model skill, complete code template (background)"]
+formula = 'L_{\text{bg}}(\boldsymbol{\omega}) = L_{\text{env}}(\boldsymbol{\omega}) + C_{\text{sun}} \left( 0.3\, s^{8} + s^{256} \right), \quad s = \operatorname{clamp}(\boldsymbol{\omega} \cdot \mathbf{l}_{\text{sun}}, 0, 1)'
 --- */
 vec3 background(vec3 rd) {
     float sun = clamp(dot(rd, SUN_DIR), 0.0, 1.0);

@@ -6,6 +6,7 @@ provides = ["cameraRay"]
 requires = []
 params = { CAMERA_POSITION = { type = "vec3", default = [0.0, 1.0, 4.0] }, CAMERA_TARGET = { type = "vec3", default = [0.0, 0.0, 0.0] }, CAMERA_FOCAL = { type = "float", default = 1.5, range = [0.1, 100.0] } }
 sources = ["lighting-model skill, complete code template (main function)"]
+formula = '\boldsymbol{\omega} = \operatorname{normalize}(u\, \mathbf{u} + v\, \mathbf{v} + f\, \mathbf{w}), \quad (u, v) = \frac{2\, \mathbf{x}_{\text{pixel}} - \mathbf{res}}{\text{res}_y}, \quad \mathbf{w} = \operatorname{normalize}(\mathbf{t} - \mathbf{o}), \quad \mathbf{u} = \operatorname{normalize}(\mathbf{w} \times \hat{\mathbf{y}}), \quad \mathbf{v} = \mathbf{u} \times \mathbf{w}, \quad \mathbf{o} = \text{CAMERA\_POSITION}, \quad \mathbf{t} = \text{CAMERA\_TARGET}, \quad f = \text{CAMERA\_FOCAL}'
 --- */
 void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;

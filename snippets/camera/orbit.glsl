@@ -6,6 +6,7 @@ provides = ["cameraRay"]
 requires = []
 params = { CAMERA_RADIUS = { type = "float", default = 3.0, range = [0.01, 1000.0] }, CAMERA_HEIGHT = { type = "float", default = 1.5 }, CAMERA_SPEED = { type = "float", default = 0.3 }, CAMERA_TARGET = { type = "vec3", default = [0.0, 0.0, 0.0] }, CAMERA_FOCAL = { type = "float", default = 1.5, range = [0.1, 100.0] } }
 sources = ["lighting-model skill, complete code template (main function)"]
+formula = '\boldsymbol{\omega} = \operatorname{normalize}(u\, \mathbf{u} + v\, \mathbf{v} + f\, \mathbf{w}), \quad \mathbf{o} = \mathbf{t} + (R \cos\varphi,\ h,\ R \sin\varphi), \quad \varphi = s\, \text{iTime}, \quad (u, v) = \frac{2\, \mathbf{x}_{\text{pixel}} - \mathbf{res}}{\text{res}_y}, \quad \mathbf{w} = \operatorname{normalize}(\mathbf{t} - \mathbf{o}), \quad \mathbf{u} = \operatorname{normalize}(\mathbf{w} \times \hat{\mathbf{y}}), \quad \mathbf{v} = \mathbf{u} \times \mathbf{w}'
 --- */
 // Screen coordinates span [-1, 1] vertically; CAMERA_FOCAL is the distance to that screen.
 void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {

@@ -5,6 +5,7 @@ summary = "Metallic workflow: a metal reflects its albedo and has no diffuse"
 provides = ["applyMetallic"]
 requires = ["Surface", "DIELECTRIC_F0"]
 sources = ["lighting-model skill, step 8", "Filament PBR notes, 4.8 (metallic parameterization)"]
+formula = '\rho_d = (1 - m)\, \rho, \quad F_0 = (1 - m)\, 0.04 + m\, \rho, \quad m = \text{metallic}'
 --- */
 // Turns the dielectric that makeSurface built into a blend toward a metal of the same albedo:
 // metals tint their reflection with the albedo and absorb what they refract, so their diffuse

@@ -5,6 +5,7 @@ summary = "Blinn-Phong exponent from a = roughness², and the cosine power lobe"
 provides = ["blinnPhongExponent", "cosinePower", "MIN_BLINN_PHONG_A"]
 requires = []
 sources = ["Walter et al. 2007, Microfacet models for refraction, section 5.2"]
+formula = 'n = \frac{2}{\max(\alpha, 10^{-3})^2} - 2, \quad \operatorname{cosinePower}(c, n) = \operatorname{clamp}(c, 0, 1)^n \ (\text{with } 0^0 = 1)'
 --- */
 // Smallest a: the exponent is 2/a², and at a = 0 pow(1, ∞) is undefined.
 #define MIN_BLINN_PHONG_A 1e-3

@@ -5,6 +5,7 @@ summary = "Shading point and the dot products a BRDF term needs, computed once"
 provides = ["Surface", "Dots", "makeSurface", "lightDots", "MIN_NOV", "DIELECTRIC_F0"]
 requires = []
 sources = ["lighting-model skill, steps 1 and 8", "Filament PBR notes, 4.4 (parameterization)"]
+formula = '\mathbf{h} = \frac{\mathbf{v} + \mathbf{l}}{\|\mathbf{v} + \mathbf{l}\|}, \quad \alpha = \text{roughness}^2, \quad \mathbf{n} \cdot \mathbf{v} \to \max(\mathbf{n} \cdot \mathbf{v}, 10^{-4}), \quad \mathbf{n} \cdot \mathbf{l},\ \mathbf{n} \cdot \mathbf{h},\ \mathbf{v} \cdot \mathbf{h} \to \max(\cdot, 0), \quad F_0 = 0.04'
 --- */
 // Everything about the point being shaded. Vectors point away from the surface.
 struct Surface {

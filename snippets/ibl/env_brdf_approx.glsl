@@ -10,6 +10,7 @@ sources = [
     "Karis 2014, Physically Based Shading on Mobile (EnvBRDFApprox)",
     "Karis 2013, Real Shading in Unreal Engine 4 (split sum)",
 ]
+formula = 'L_{\text{spec}} = (F_0 A + B)\, L_{\text{env}}(\mathbf{r})\, \text{SO}, \quad (A, B) = (-1.04, 1.04)\left( \min(c_x^2, 2^{-9.28\, \mathbf{n} \cdot \mathbf{v}})\, c_x + c_y \right) + (c_z, c_w), \quad \mathbf{c} = \text{roughness}\,(-1, -0.0275, -0.572, 0.022) + (1, 0.0425, 1.04, -0.04), \quad \mathbf{r} = 2 (\mathbf{n} \cdot \mathbf{v})\, \mathbf{n} - \mathbf{v}'
 --- */
 // The split sum (Karis 2013) factors specular environment light into the environment seen
 // around the mirror direction times the BRDF's directional albedo, f0·A + B. Here A and B

@@ -5,6 +5,7 @@ summary = "Environment seen along the mirror direction, weighted by Fresnel(NoV)
 provides = ["environmentLight"]
 requires = ["Surface", "F", "env", "specocc"]
 sources = ["lighting-model skill, complete code template (environment reflection)"]
+formula = 'L_{\text{spec}} = F(\mathbf{n} \cdot \mathbf{v})\, L_{\text{env}}(\mathbf{r})\, \text{SO}\, (1 - 0.7\, \text{roughness}), \quad \mathbf{r} = 2 (\mathbf{n} \cdot \mathbf{v})\, \mathbf{n} - \mathbf{v}'
 --- */
 // No prefiltering: rough surfaces dim the reflection instead of blurring it.
 vec3 environmentLight(Surface s, float ao) {

@@ -11,6 +11,7 @@ sources = [
     "lighting-model skill, performance notes (simplified IBL: mix(ground, sky, y*0.5+0.5))",
     "Ramamoorthi and Hanrahan 2001 (irradiance of a linear gradient)",
 ]
+formula = '\frac{E(\mathbf{n})}{\pi} = L_{\text{env}}(-\hat{\mathbf{y}}) + \left( L_{\text{env}}(\hat{\mathbf{y}}) - L_{\text{env}}(-\hat{\mathbf{y}}) \right) \frac{1 + n_y}{2}'
 --- */
 // Exact for a two-colour world (sky above the horizon, ground below): the share of the cosine
 // lobe above the horizon is (1 + n.y)/2. For a sky that varies smoothly with height it blends

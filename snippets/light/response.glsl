@@ -5,6 +5,7 @@ summary = "What a surface reflects toward the eye per unit radiance arriving fro
 provides = ["lightResponse"]
 requires = ["Surface", "Dots", "lightDots", "F", "diffuse", "specular"]
 sources = ["lighting-model skill, step 8 and complete code template"]
+formula = 'R(\mathbf{l}) = \left( 1 - F(\mathbf{v} \cdot \mathbf{h}) \right) f_d\, (\mathbf{n} \cdot \mathbf{l}) + f_s\, (\mathbf{n} \cdot \mathbf{l})'
 --- */
 // The diffuse share is what the Fresnel term does not reflect (energy split). Each lobe
 // carries its own cosine factor, so a wrapped diffuse model can light past the terminator.

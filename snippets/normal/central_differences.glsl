@@ -8,6 +8,7 @@ params = { NORMAL_EPS = { type = "float", default = 0.001, range = [1e-6, 0.1] }
 reference = "sdf_normal"
 error_budget = { max_deg = 0.2, mean_deg = 0.005 }
 sources = ["lighting-model skill, step 1"]
+formula = '\mathbf{n} = \operatorname{normalize}\left( d(\mathbf{p} + \varepsilon \mathbf{e}_i) - d(\mathbf{p} - \varepsilon \mathbf{e}_i) \right)_{i = x, y, z}, \quad \varepsilon = \text{NORMAL\_EPS}'
 --- */
 vec3 calcNormal(vec3 p) {
     vec2 e = vec2(NORMAL_EPS, 0.0);

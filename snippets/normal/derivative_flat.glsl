@@ -8,6 +8,7 @@ params = { DERIVATIVE_NORMAL_SIGN = { type = "float", default = 1.0, range = [-1
 reference = "sdf_normal"
 error_budget = { max_deg = 0.02, mean_deg = 0.002 }
 sources = ["OpenGL ES Shading Language 3.00, section 8.9 (derivative functions)", "Inigo Quilez, normals for an SDF (derivative-based normals)"]
+formula = '\mathbf{n} = s\, \frac{\partial_x \mathbf{p} \times \partial_y \mathbf{p}}{\|\partial_x \mathbf{p} \times \partial_y \mathbf{p}\|}, \quad s = \text{DERIVATIVE\_NORMAL\_SIGN}'
 --- */
 // dFdx(p) and dFdy(p) are two vectors across the surface, one pixel apart on screen, so their
 // cross product is perpendicular to the surface as the pixel grid sees it: exact on flat faces,

@@ -8,6 +8,7 @@ params = { NORMAL_EPS = { type = "float", default = 0.001, range = [1e-6, 0.1] }
 reference = "sdf_normal"
 error_budget = { max_deg = 0.5, mean_deg = 0.05 }
 sources = ["Inigo Quilez, normals for an SDF (tetrahedron technique)"]
+formula = '\mathbf{n} = \operatorname{normalize}\left( \sum_{j=1}^{4} \mathbf{k}_j\, d\left( \mathbf{p} + \tfrac{\varepsilon}{\sqrt{3}} \mathbf{k}_j \right) \right), \quad \mathbf{k}_j \in \{ (1, -1, -1), (-1, -1, 1), (-1, 1, -1), (1, 1, 1) \}, \quad \varepsilon = \text{NORMAL\_EPS}'
 --- */
 // The four taps sit at p + h·k for the corners k = (+,-,-), (-,-,+), (-,+,-), (+,+,+) of a
 // regular tetrahedron. The corners sum to zero and Σ k kᵀ = 4·I, so Σ k·map(p + h·k) ≈ 4h·∇map

@@ -5,6 +5,7 @@ summary = "Exact sRGB transfer function (linear toe below 0.0031308)"
 provides = ["outputTransfer"]
 requires = []
 sources = ["IEC 61966-2-1"]
+formula = 'V(c) = \begin{cases} 12.92\, c & c < 0.0031308 \\ 1.055\, c^{1/2.4} - 0.055 & c \ge 0.0031308 \end{cases}, \quad c \ge 0'
 --- */
 vec3 outputTransfer(vec3 color) {
     vec3 c = max(color, 0.0);

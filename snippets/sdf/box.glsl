@@ -5,6 +5,7 @@ summary = "Signed distance to an axis-aligned box with half extents b, centred a
 provides = ["sdBox"]
 requires = []
 sources = ["Inigo Quilez, distance functions"]
+formula = 'd(\mathbf{p}) = \|\max(\mathbf{q}, 0)\| + \min\left( \max(q_x, q_y, q_z), 0 \right), \quad \mathbf{q} = |\mathbf{p}| - \mathbf{b}'
 --- */
 float sdBox(vec3 p, vec3 b) {
     vec3 q = abs(p) - b;
