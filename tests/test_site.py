@@ -10,7 +10,7 @@ import os
 import re
 import subprocess
 import sys
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 import pytest
 
@@ -293,3 +293,38 @@ def test_accuracy_section_from_plain_data() -> None:
     assert "| on its slot's cost/error front | no |" in text
     assert "3 sample(s) turn infinite or NaN" in text and "a test GPU" in text
     assert accuracy_section("X.y", None, "") == ""
+
+
+def test_scene_reference_has_every_key_and_example_scene() -> None:
+    from glint.compiler.compose.scene import Scene
+    from glint.compiler.site.scene_pages import example_scenes, scene_reference_page
+
+    page = scene_reference_page({})
+    schema = Scene.model_json_schema()
+    for model in [schema, *schema["$defs"].values()]:
+        for key in model["properties"]:
+            assert f"| `{key}` |" in page, key
+    for name in schema["$defs"]:
+        assert f"{{ #{name.lower()} }}" in page, name
+    assert "| `roughness` | number (≥ 0, ≤ 1) | `0.5` |" in page
+    for scene in example_scenes():
+        assert f"### {scene.stem}\n" in page
+        assert scene.read_text(encoding="utf-8").strip().splitlines()[-1] in page
+
+
+def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Path) -> None:
+    from glint.compiler.catalog.tiers import TIERS
+    from glint.compiler.site.scene_pages import scene_pages
+
+    built = scene_pages(ROOT / "site" / "docs", tmp_path, pictured=("default",))
+    assert sorted(p.name for p in built.files) == sorted(f"default-{t}.png" for t in TIERS)
+    tiers = built.pages[PurePosixPath("tiers.md")]
+    rows = dict(re.findall(r"\| `(\w+)` \| !\[default at \w+\]\([^)]+\) \| ([0-9.]+) \|", tiers))
+    assert set(rows) == set(TIERS)
+    assert float(rows["reference"]) == 0.0
+    assert 0.0 < float(rows["fast"]) < 0.1  # another normal, marcher and AO: not the same pixels
+    assert "[`ggx`](catalog/D.ggx.md)" in tiers
+    assert (
+        "![the default scene](img/scenes/default-balanced.png)"
+        in built.pages[PurePosixPath("scenes.md")]
+    )

@@ -25,23 +25,32 @@ Color = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
 
 
 class Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", strict=True)
+    # A string under a field is its description: the docs site's scene reference shows it.
+    model_config = ConfigDict(extra="forbid", strict=True, use_attribute_docstrings=True)
 
 
 class OrbitCamera(Strict):
     type: Literal["orbit"]
     target: Vec3 = [0.0, 0.0, 0.0]
+    """The point the camera looks at and circles."""
     radius: Positive = 3.0
+    """Distance from the target, in the ground plane."""
     height: Number = 1.5
+    """Height of the camera above the target."""
     speed: Number = 0.3
+    """Radians per second of the orbit (0 holds still)."""
     focal: Positive = 1.5
+    """Focal length in screen heights: larger zooms in."""
 
 
 class LookAtCamera(Strict):
     type: Literal["lookat"]
     position: Vec3 = [0.0, 1.0, 4.0]
+    """Where the camera stands."""
     target: Vec3 = [0.0, 0.0, 0.0]
+    """The point it looks at."""
     focal: Positive = 1.5
+    """Focal length in screen heights: larger zooms in."""
 
     @model_validator(mode="after")
     def _distinct(self) -> LookAtCamera:
@@ -55,13 +64,17 @@ class Sphere(Strict):
     center: Vec3 = [0.0, 0.0, 0.0]
     radius: Positive = 1.0
     material: str
+    """The name of a table under [materials]."""
 
 
 class Plane(Strict):
     shape: Literal["plane"]
     normal: Vec3 = [0.0, 1.0, 0.0]
-    offset: Number = 0.0  # the plane is dot(p, normal) + offset = 0
+    """The plane's normal; need not be unit length."""
+    offset: Number = 0.0
+    """The plane is dot(p, normal) + offset = 0."""
     material: str
+    """The name of a table under [materials]."""
 
     @model_validator(mode="after")
     def _nonzero(self) -> Plane:
@@ -73,24 +86,31 @@ class Plane(Strict):
 class Box(Strict):
     shape: Literal["box"]
     center: Vec3 = [0.0, 0.0, 0.0]
-    size: Annotated[list[Positive], Field(min_length=3, max_length=3)]  # half extents
+    size: Annotated[list[Positive], Field(min_length=3, max_length=3)]
+    """Half extents along x, y and z."""
     material: str
+    """The name of a table under [materials]."""
 
 
 class Material(Strict):
     albedo: Color
+    """Base colour, linear RGB."""
     roughness: Unit = 0.5
+    """Perceptual roughness: 0 is a mirror, 1 fully rough."""
     metallic: Unit = 0.0
+    """0 for a dielectric, 1 for a metal whose albedo tints its reflection."""
     pattern: Literal["none", "checker"] = "none"
-    pattern_albedo: Color | None = None  # the second colour of a pattern
-    # Oren-Nayar's σ, the slope deviation of the diffuse microfacets in radians (0 is Lambert);
-    # the rough-diffuse variants read it. None: the specular roughness stands in for it.
+    """A procedural pattern mixing albedo and pattern_albedo."""
+    pattern_albedo: Color | None = None
+    """The second colour of a pattern."""
     diffuse_roughness: Unit | None = None
-    # Light that passes through the body and scatters toward the eye (translucency), per
-    # channel: the interior's scattering colour. None: the material is opaque.
+    """Oren-Nayar's σ, the slope deviation of the diffuse microfacets in radians (0 is Lambert);
+    the rough-diffuse variants read it. Absent: the specular roughness stands in for it."""
     subsurface: Color | None = None
-    # Asymmetry g of the interior's phase function: > 0 scatters forward (glows when back-lit).
+    """Light that passes through the body and scatters toward the eye (translucency), per
+    channel: the interior's scattering colour. Absent: the material is opaque."""
     subsurface_g: Annotated[float, Field(strict=True, ge=-1.0, le=1.0)] = 0.5
+    """Asymmetry g of the interior's phase function: > 0 scatters forward (glows when back-lit)."""
 
     @model_validator(mode="after")
     def _pattern(self) -> Material:
@@ -101,13 +121,18 @@ class Material(Strict):
 
 class DirectionalLight(Strict):
     type: Literal["directional"]
-    direction: Vec3  # toward the light
+    direction: Vec3
+    """Toward the light."""
     color: Color = [1.0, 1.0, 1.0]
+    """Linear RGB."""
     intensity: NonNegative = 1.0
+    """Multiplies the colour."""
     shadow: bool = True
+    """Whether it casts shadows (the `shadow` slot)."""
     shadow_distance: Positive = 5.0
-    # Per-channel exponents applied to the shadow, e.g. [1.0, 1.2, 1.5]: penumbrae turn cool.
+    """How far a shadow ray looks for an occluder."""
     penumbra: Annotated[list[Positive], Field(min_length=3, max_length=3)] | None = None
+    """Per-channel exponents applied to the shadow, e.g. [1.0, 1.2, 1.5]: penumbrae turn cool."""
 
     @model_validator(mode="after")
     def _nonzero(self) -> DirectionalLight:
@@ -119,30 +144,34 @@ class DirectionalLight(Strict):
 class PointLight(Strict):
     type: Literal["point"]
     position: Vec3
+    """Where the light is."""
     color: Color = [1.0, 1.0, 1.0]
     intensity: NonNegative = 1.0
-    range: Positive = 10.0  # where the attenuation reaches zero (if the variant has a range)
+    range: Positive = 10.0
+    """Where the attenuation reaches zero (for the attenuation variants that have a range)."""
     shadow: bool = True
+    """Whether it casts shadows (the `shadow` slot)."""
 
 
 class SkyLight(Strict):
     type: Literal["sky"]
     color: Color = [0.2, 0.5, 1.0]
+    """Colour of the light from the sky above."""
     intensity: NonNegative = 1.0
 
 
 class BackLight(Strict):
     type: Literal["back"]
-    # Toward the light; by default the key light's direction mirrored and made horizontal.
     direction: Vec3 | None = None
+    """Toward the light; by default the key light's direction mirrored and made horizontal."""
     color: Color = [0.15, 0.1, 0.08]
     intensity: NonNegative = 1.0
 
 
 class BounceLight(Strict):
     type: Literal["bounce"]
-    # Toward the light; by default the key light's direction mirrored and made horizontal.
     direction: Vec3 | None = None
+    """Toward the light; by default the key light's direction mirrored and made horizontal."""
     color: Color = [0.40, 0.28, 0.20]
     intensity: NonNegative = 1.0
 
@@ -165,50 +194,66 @@ SceneObject = Annotated[Sphere | Plane | Box, Field(discriminator="shape")]
 class Environment(Strict):
     type: Literal["gradient"] = "gradient"
     top: Color = [0.5, 0.7, 1.0]
+    """Colour of the sky straight up."""
     bottom: Color = [0.8, 0.85, 0.9]
+    """Colour toward the horizon and below."""
     reflection: bool = True
+    """Whether surfaces reflect the environment (the `env` slot)."""
 
 
 class Medium(Strict):
     """A homogeneous participating medium between the eye and the surfaces: fog, or water
     below a level. Beer-Lambert extinction with the medium's own glow (the `media` slot)."""
 
-    # σ per unit distance (natural log), per channel; by default the seed's water, which
-    # takes red first and blue last.
     extinction: Color = [2.0794415, 2.4953298, 3.7429947]
-    # What a long path through the medium converges to: its colour under the ambient light.
+    """σ per unit distance (natural log), per channel; by default the seed's water, which takes
+    red first and blue last."""
     inscatter: Color = [0.02, 0.12, 0.16]
-    # Water: the medium fills y < level. None: it fills all of space (fog).
+    """What a long path through the medium converges to: its colour under the ambient light."""
     level: Number | None = None
+    """Water: the medium fills y < level. Absent: it fills all of space (fog)."""
 
 
 class Background(Strict):
-    sun: bool = True  # draw a glow and disc around the key light
+    sun: bool = True
+    """Draw a glow and a disc around the key light."""
 
 
 class Effects(Strict):
     ao: bool = True
+    """Ambient occlusion (the `ao` slot)."""
 
 
 class Post(Strict):
     tonemap: Literal["none", "reinhard", "aces"] = "reinhard"
+    """The tone map applied before output."""
     output: Literal["gamma22", "srgb"] = "gamma22"
+    """The transfer function to the display."""
 
 
 class Quality(Strict):
     tier: Literal["fast", "balanced", "reference"] = "balanced"
-    variants: dict[str, str] = {}  # slot -> variant, overriding the tier
+    """The quality tier: which variant fills each slot."""
+    variants: dict[str, str] = {}
+    """Slot -> variant, overriding the tier, e.g. { shadow = "hard" }."""
 
 
 class Scene(Strict):
     name: str = "scene"
+    """Shown in the shader's header."""
     description: str = ""
     camera: Camera = OrbitCamera(type="orbit")
+    """An orbit or a look-at camera."""
     objects: Annotated[list[SceneObject], Field(min_length=1)]
+    """The shapes, as [[objects]] tables with a shape key."""
     materials: dict[str, Material]
+    """Named materials, as [materials.NAME] tables."""
     lights: list[Light] = []
+    """The lights, as [[lights]] tables with a type key."""
     environment: Environment | None = Environment()
+    """The sky gradient, which the background shows and surfaces reflect."""
     medium: Medium | None = None
+    """Fog or water between the eye and the surfaces."""
     background: Background = Background()
     effects: Effects = Effects()
     post: Post = Post()

@@ -1,0 +1,253 @@
+"""Two pages about scenes as a whole: the scene reference (every key of a scene file, from the
+scene model's JSON schema, and every example scene with its TOML and picture) and the tiers
+(which variant each tier takes for each slot, and every example scene at every tier with its
+FLIP error against the reference tier and its frame time from the bench).
+
+Pictures are glint's own renders at the variant pictures' size, cached the same way.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import logging
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path, PurePosixPath
+from typing import Any
+
+import numpy as np
+from PIL import Image
+
+import glint
+from glint.compiler.catalog.loader import snippets_root
+from glint.compiler.catalog.tiers import TIERS, tier_table
+from glint.compiler.compose.scene import Scene
+from glint.compiler.files import write_atomic
+from glint.compiler.render.images import flip_error
+
+from .markdown import cell, code, fenced, table, text
+from .pictures import SIZE, TIME, cache_key
+
+log = logging.getLogger(__name__)
+
+SCENE_PICTURES = PurePosixPath("img") / "scenes"
+SCENES_PAGE = PurePosixPath("scenes.md")
+TIERS_PAGE = PurePosixPath("tiers.md")
+BENCH_JSON = PurePosixPath("bench") / "bench.json"
+
+
+@dataclass
+class ScenePages:
+    pages: dict[PurePosixPath, str] = field(default_factory=dict)
+    files: dict[PurePosixPath, bytes] = field(default_factory=dict)
+
+
+def example_scenes() -> list[Path]:
+    """The example scenes, the default first, then by name."""
+    files = sorted((snippets_root() / "scenes").glob("*.toml"))
+    return sorted(files, key=lambda f: (f.stem != "default", f.stem))
+
+
+def scene_pages(
+    source: Path, cache_dir: Path | None, pictured: Collection[str] | None = None
+) -> ScenePages:
+    """The scene reference and the tiers page. Pictures only with a cache folder, and only of
+    the scenes (by stem) in `pictured` when given."""
+    out = ScenePages()
+    renders: dict[tuple[str, str], PurePosixPath] = {}
+    pixels: dict[tuple[str, str], np.ndarray] = {}
+    if cache_dir is not None:
+        for scene in example_scenes():
+            if pictured is not None and scene.stem not in pictured:
+                continue
+            for tier in TIERS:
+                png = _render(scene, tier, cache_dir)
+                if png is None:
+                    continue
+                path = SCENE_PICTURES / f"{scene.stem}-{tier}.png"
+                out.files[path] = png
+                renders[(scene.stem, tier)] = path
+                with Image.open(io.BytesIO(png)) as image:
+                    pixels[(scene.stem, tier)] = np.asarray(image.convert("RGB"), np.float32) / 255
+    out.pages[SCENES_PAGE] = scene_reference_page(renders)
+    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, _bench_tiers(source))
+    return out
+
+
+def _render(scene: Path, tier: str, cache_dir: Path) -> bytes | None:
+    try:
+        shader = glint.compose(scene, tier=tier)
+    except glint.InputError as error:
+        log.warning("site: %s does not compose at %s: %s", scene.name, tier, error)
+        return None
+    cached = cache_dir / f"{cache_key(shader.text)}.png"
+    if cached.is_file():
+        return cached.read_bytes()
+    try:
+        png = glint.render(shader, size=SIZE, time=TIME).to_png()
+    except glint.InputError as error:
+        log.warning("site: %s does not render at %s: %s", scene.name, tier, error)
+        return None
+    cache_dir.mkdir(parents=True, exist_ok=True)
+    write_atomic(cached, png)
+    return png
+
+
+# --- the scene reference ------------------------------------------------------------------
+
+
+def scene_reference_page(renders: Mapping[tuple[str, str], PurePosixPath]) -> str:
+    schema = Scene.model_json_schema()
+    defs: dict[str, Any] = schema.get("$defs", {})
+    parts = [
+        "# Scene reference\n\n",
+        "A scene is a TOML file that `glint compose` and `glint render` take (without one they "
+        "use the embedded default scene). Nothing in it runs code. Every key below is "
+        "generated from the scene model, so it is exactly what glint accepts: an unknown key "
+        "or a value out of range is an error that names it.\n\n",
+        "## Top level\n\n",
+        _keys_table(schema, defs),
+        "\n",
+    ]
+    for name in sorted(defs):
+        model = defs[name]
+        parts.append(f"## {name} {{ #{_anchor(name)} }}\n\n")
+        if model.get("description"):
+            parts.append(f"{text(_sentence(model['description']))}\n\n")
+        parts += [_keys_table(model, defs), "\n"]
+    parts.append("## Example scenes\n\n")
+    for scene in example_scenes():
+        parts.append(f"### {scene.stem}\n\n")
+        picture = renders.get((scene.stem, "balanced"))
+        if picture is not None:
+            parts.append(
+                f"![the {scene.stem} scene](img/scenes/{picture.name})\n\n"
+                f"`glint render snippets/scenes/{scene.name}` at the balanced tier "
+                f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n\n"
+            )
+        parts.append(fenced(scene.read_text(encoding="utf-8"), "toml") + "\n")
+    return "".join(parts)
+
+
+def _anchor(name: str) -> str:
+    return name.lower()
+
+
+def _sentence(value: str) -> str:
+    return " ".join(value.split())
+
+
+def _keys_table(model: dict[str, Any], defs: Mapping[str, Any]) -> str:
+    required = set(model.get("required", []))
+    rows = []
+    for key, prop in model.get("properties", {}).items():
+        default = "required" if key in required else _default(prop)
+        description = _sentence(prop.get("description", ""))
+        rows.append([code(key), _type(prop, defs), default, cell(description)])
+    if not rows:
+        return "No keys.\n"
+    return table(["key", "type", "default", "what it is"], rows)
+
+
+def _default(prop: Mapping[str, Any]) -> str:
+    if "default" not in prop:
+        return ""
+    value = prop["default"]
+    if value is None:
+        return "absent"
+    if isinstance(value, dict):
+        return "its defaults" if value else "{}"
+    return code(json.dumps(value))
+
+
+def _type(prop: Mapping[str, Any], defs: Mapping[str, Any]) -> str:
+    """A schema type as a reader reads it: links for tables, ranges and choices inline."""
+    if "$ref" in prop:
+        name = prop["$ref"].rsplit("/", 1)[-1]
+        return f"[{name}](#{_anchor(name)}) table"
+    for union in ("anyOf", "oneOf"):
+        if union in prop:
+            kinds = [k for k in prop[union] if k.get("type") != "null"]
+            shown = " or ".join(_type(k, defs) for k in kinds)
+            return shown + (" (may be absent)" if len(kinds) < len(prop[union]) else "")
+    if "enum" in prop:
+        return "one of " + ", ".join(code(json.dumps(v)) for v in prop["enum"])
+    if "const" in prop:
+        return code(json.dumps(prop["const"]))
+    kind = prop.get("type", "")
+    if kind == "array":
+        item = _type(prop.get("items", {}), defs)
+        size = prop.get("minItems")
+        if size is not None and size == prop.get("maxItems"):
+            return f"{size} × {item}"
+        least = f", at least {size}" if size else ""
+        return f"list of {item}{least}"
+    if kind == "object":
+        values = prop.get("additionalProperties")
+        if isinstance(values, dict):
+            return f"table of {_type(values, defs)}"
+        return "table"
+    bounds = []
+    for key, sign in (("minimum", "≥"), ("exclusiveMinimum", ">"), ("maximum", "≤"),
+                      ("exclusiveMaximum", "<")):  # fmt: skip
+        if key in prop:
+            bounds.append(f"{sign} {prop[key]:g}")
+    shown = {"number": "number", "string": "string", "boolean": "true or false",
+             "integer": "integer"}.get(kind, kind or "any")  # fmt: skip
+    return shown + (f" ({', '.join(bounds)})" if bounds else "")
+
+
+# --- the tiers ---------------------------------------------------------------------------
+
+
+def _bench_tiers(source: Path) -> dict[tuple[str, str], dict[str, Any]]:
+    path = source / BENCH_JSON
+    if not path.is_file():
+        return {}
+    data = json.loads(path.read_text(encoding="utf-8"))
+    return {(row["scene"], row["tier"]): row for row in data.get("tiers", [])}
+
+
+def tiers_page(
+    renders: Mapping[tuple[str, str], PurePosixPath],
+    pixels: Mapping[tuple[str, str], np.ndarray],
+    bench: Mapping[tuple[str, str], Mapping[str, Any]],
+) -> str:
+    table_ = tier_table()
+    slots = sorted({slot for tier in TIERS for slot in table_.get(tier, {})})
+    rows = []
+    for slot in slots:
+        row = [f"[{code(slot)}](catalog/slots/{slot}.md)"]
+        for tier in TIERS:
+            variant = table_.get(tier, {}).get(slot) or table_.get("balanced", {}).get(slot)
+            row.append(f"[{code(variant)}](catalog/{slot}.{variant}.md)" if variant else "–")
+        rows.append(row)
+    parts = [
+        "# Tiers\n\n",
+        "A tier picks one variant per slot: `fast` trades accuracy for time, `reference` "
+        "takes the most accurate, `balanced` sits between (`glint compose --tier`, or "
+        "`[quality] tier` in a scene). A scene only takes the slots its content needs, so a "
+        "slot below may not appear in a given shader (`glint compose --explain` says why).\n\n",
+        "## Slot by tier\n\n",
+        table(["slot", *TIERS], rows),
+        "\n## Example scenes at every tier\n\n",
+        "Each picture is glint's render; FLIP is the mean error against the same scene at the "
+        "reference tier; the frame time is from `glint bench` (see [Benchmark](bench/bench.md) "
+        "for its machine).\n\n",
+    ]
+    for scene in example_scenes():
+        parts.append(f"### {scene.stem}\n\n")
+        cells = []
+        truth = pixels.get((scene.stem, "reference"))
+        for tier in TIERS:
+            picture = renders.get((scene.stem, tier))
+            shown = f"![{scene.stem} at {tier}](img/scenes/{picture.name})" if picture else "–"
+            flip = "–"
+            if truth is not None and (scene.stem, tier) in pixels:
+                flip = f"{flip_error(truth, pixels[(scene.stem, tier)]):.4f}"
+            measured = bench.get((scene.stem, tier))
+            ms = f"{measured['frame_ms']:.2f} ms" if measured else "–"
+            cells.append([code(tier), shown, flip, ms])
+        parts.append(table(["tier", "picture", "FLIP vs reference", "frame time"], cells) + "\n")
+    return "".join(parts)
