@@ -53,10 +53,10 @@
 #define MARCH_PIXEL 0.002
 #define MARCH_FAR 50.0
 
-// source: snippets/core/constants.glsl:9
+// source: snippets/core/constants.glsl:10
 #define PI 3.14159265359
 
-// source: snippets/core/surface.glsl:9
+// source: snippets/core/surface.glsl:10
 // Everything about the point being shaded. Vectors point away from the surface.
 struct Surface {
     vec3 P;             // position
@@ -117,28 +117,28 @@ Dots lightDots(Surface s, vec3 L) {
     return d;
 }
 
-// source: snippets/sdf/plane.glsl:9
+// source: snippets/sdf/plane.glsl:10
 float sdPlane(vec3 p, vec3 n, float h) {
     return dot(p, n) + h;
 }
 
-// source: snippets/sdf/sphere.glsl:9
+// source: snippets/sdf/sphere.glsl:10
 float sdSphere(vec3 p, float radius) {
     return length(p) - radius;
 }
 
-// source: snippets/pattern/checker.glsl:9
+// source: snippets/pattern/checker.glsl:10
 float checker(vec3 p) {
     return mod(floor(p.x) + floor(p.z), 2.0);
 }
 
-// source: snippets/light/back.glsl:9
+// source: snippets/light/back.glsl:10
 vec3 backLight(Surface s, vec3 dir, vec3 color, float occlusion) {
     float wrapped = clamp(dot(s.N, dir) * 0.5 + 0.5, 0.0, 1.0);
     return s.diffuseColor * color * wrapped * occlusion;
 }
 
-// source: snippets/light/sky.glsl:9
+// source: snippets/light/sky.glsl:10
 vec3 skyLight(Surface s, vec3 color, float occlusion) {
     float hemisphere = 0.5 + 0.5 * s.N.y;
     return s.diffuseColor * color * hemisphere * occlusion;
@@ -183,18 +183,18 @@ float visibility(Dots d, float a) {
     return 0.5 / max(gv + gl, MIN_VIS_DENOM);
 }
 
-// source: snippets/diffuse/lambert.glsl:12
+// source: snippets/diffuse/lambert.glsl:13
 vec3 diffuse(Surface s, Dots d) {
     return s.diffuseColor * (d.NoL / PI);
 }
 
-// source: snippets/specular/cook_torrance.glsl:9
+// source: snippets/specular/cook_torrance.glsl:10
 // V already holds G / (4 NoL NoV), so the lobe is a plain product, times its cosine N·L.
 vec3 specular(Surface s, Dots d, vec3 F) {
     return distribution(d.NoH, s.a) * visibility(d, s.a) * F * d.NoL;
 }
 
-// source: snippets/light/response.glsl:9
+// source: snippets/light/response.glsl:10
 // The diffuse share is what the Fresnel term does not reflect (energy split). Each lobe
 // carries its own cosine factor, so a wrapped diffuse model can light past the terminator.
 vec3 lightResponse(Surface s, vec3 L) {
@@ -203,23 +203,23 @@ vec3 lightResponse(Surface s, vec3 L) {
     return (1.0 - F) * diffuse(s, d) + specular(s, d, F);
 }
 
-// source: snippets/light/directional.glsl:9
+// source: snippets/light/directional.glsl:10
 // `visibility` is per channel, so a shadow can tint its penumbra (see the scene's `penumbra`).
 vec3 directionalLight(Surface s, vec3 L, vec3 radiance, vec3 visibility) {
     return lightResponse(s, L) * radiance * visibility;
 }
 
-// source: snippets/specocc/power.glsl:10
+// source: snippets/specocc/power.glsl:11
 float specularOcclusion(float NoV, float ao, float a) {
     return clamp(pow(NoV + ao, a) - 1.0 + ao, 0.0, 1.0);
 }
 
-// source: snippets/env/gradient.glsl:10
+// source: snippets/env/gradient.glsl:11
 vec3 environment(vec3 dir) {
     return mix(ENV_BOTTOM, ENV_TOP, clamp(dir.y * 0.5 + 0.5, 0.0, 1.0));
 }
 
-// source: snippets/ibl/env_brdf_approx.glsl:14
+// source: snippets/ibl/env_brdf_approx.glsl:15
 // The split sum (Karis 2013) factors specular environment light into the environment seen
 // around the mirror direction times the BRDF's directional albedo, f0·A + B. Here A and B
 // come from Karis's analytic fit instead of a lookup table, and the environment is sampled
@@ -250,7 +250,7 @@ vec3 environmentLight(Surface s, float ao) {
     return (s.f0 * AB.x + AB.y) * environment(R) * occlusion;
 }
 
-// source: snippets/camera/orbit.glsl:10
+// source: snippets/camera/orbit.glsl:11
 // Screen coordinates span [-1, 1] vertically; CAMERA_FOCAL is the distance to that screen.
 void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
@@ -262,7 +262,7 @@ void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     rd = normalize(uv.x * uu + uv.y * vv + CAMERA_FOCAL * ww);
 }
 
-// source: snippets/background/gradient_sun.glsl:9
+// source: snippets/background/gradient_sun.glsl:10
 vec3 background(vec3 rd) {
     float sun = clamp(dot(rd, SUN_DIR), 0.0, 1.0);
     vec3 col = environment(rd);
@@ -271,12 +271,12 @@ vec3 background(vec3 rd) {
     return col;
 }
 
-// source: snippets/tonemap/reinhard.glsl:9
+// source: snippets/tonemap/reinhard.glsl:10
 vec3 tonemap(vec3 color) {
     return color / (color + vec3(1.0));
 }
 
-// source: snippets/output/gamma22.glsl:9
+// source: snippets/output/gamma22.glsl:10
 // max() keeps pow defined: its base must not be negative.
 vec3 outputTransfer(vec3 color) {
     return pow(max(color, 0.0), vec3(1.0 / 2.2));
@@ -290,7 +290,7 @@ float map(vec3 p) {
     return d;
 }
 
-// source: snippets/ao/sdf5.glsl:14
+// source: snippets/ao/sdf5.glsl:15
 // Compares the distance field at growing heights h along n with h itself: the shortfall is
 // how much nearby geometry closes in. Nearer taps weigh more.
 float ambientOcclusion(vec3 p, vec3 n) {
@@ -304,7 +304,7 @@ float ambientOcclusion(vec3 p, vec3 n) {
     return clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
 }
 
-// source: snippets/shadow/soft_centered.glsl:16
+// source: snippets/shadow/soft_centered.glsl:17
 // shadow.soft draws the whole penumbra outside the hard shadow: a ray that grazes an occluder
 // gives 0 where a disc light is half hidden. Here the gap h/t is signed. The march goes on into
 // an occluder, where the distance field is negative, so x = k·h/t, the ray's angular distance
@@ -330,7 +330,7 @@ float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
     return 0.25 * (1.0 + res) * (1.0 + res) * (2.0 - res);
 }
 
-// source: snippets/normal/central_differences.glsl:12
+// source: snippets/normal/central_differences.glsl:13
 vec3 calcNormal(vec3 p) {
     vec2 e = vec2(NORMAL_EPS, 0.0);
     return normalize(vec3(
@@ -340,7 +340,7 @@ vec3 calcNormal(vec3 p) {
     ));
 }
 
-// source: snippets/raymarch/cone.glsl:10
+// source: snippets/raymarch/cone.glsl:11
 // A pixel sees a cone about 2 / (iResolution.y · focal) radians wide. Once the scene is nearer
 // the ray than MARCH_PIXEL · t (or MARCH_EPSILON, near the eye) the march stops: more steps
 // would not change which surface the pixel shows. A grazing ray along a plane shrinks its
