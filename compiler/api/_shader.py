@@ -66,6 +66,24 @@ class Shader:
 
         return validate(self.text, f"<{self.scene.name}>", self.target)
 
+    def retarget(self, target: str, params_as_uniforms: bool = False) -> Shader:
+        """The same composition emitted for `target` (with `params_as_uniforms`, webgl2 only),
+        without planning it again: what `compose` with those options gives for the scene."""
+        from glint.compiler.compose.pipeline import emit_shader
+
+        _check_choice("target", target, TARGETS)
+        composed = emit_shader(
+            self.scene.name, self.plan, list(self.units), target, params_as_uniforms
+        )
+        return Shader(
+            composed.text,
+            target,
+            self.scene,
+            self.plan,
+            composed.units,
+            tuple(composed.uniforms),
+        )
+
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the shader to `path` (atomically, like `glint compose -o`); returns the path."""
         from glint.compiler.files import write_atomic

@@ -49,9 +49,6 @@ def compose_scene(
 ) -> Shader:
     """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements;
     `params_as_uniforms` (webgl2 only) makes the ranged parameters uniforms a page can set."""
-    if params_as_uniforms and target != "webgl2":
-        # ShaderToy's Image tab cannot declare uniforms, and only the site's WebGL2 canvas sets them
-        raise UsageError(f"--params-as-uniforms needs --target webgl2, not {target}")
     catalog = load_catalog()
     code = generate(scene)
     the_plan = plan(scene, catalog, tier, overrides, budget, code.units)
@@ -66,10 +63,27 @@ def compose_scene(
     # Units come whole; drop what mainImage never reaches, parameters included, now that the
     # block is written.
     units = prune_unreachable(units)
+    return emit_shader(scene.name, the_plan, units, target, params_as_uniforms, catalog)
+
+
+def emit_shader(
+    scene_name: str,
+    the_plan: Plan,
+    units: list[Unit],
+    target: str,
+    params_as_uniforms: bool = False,
+    catalog: Catalog | None = None,
+) -> Shader:
+    """Emit composed units for `target`: the last step of composing, also used to emit one
+    composition for a second target without planning it again (the site's live canvases)."""
+    if params_as_uniforms and target != "webgl2":
+        # ShaderToy's Image tab cannot declare uniforms, and only the site's WebGL2 canvas sets them
+        raise UsageError(f"--params-as-uniforms needs --target webgl2, not {target}")
     uniforms: list[UniformParam] = []
     if params_as_uniforms:
-        units, uniforms = _params_as_uniforms(scene.name, the_plan, units, catalog, target)
-    text = emit(scene.name, the_plan, units, target, glint_version())
+        catalog = catalog or load_catalog()
+        units, uniforms = _params_as_uniforms(scene_name, the_plan, units, catalog, target)
+    text = emit(scene_name, the_plan, units, target, glint_version())
     return Shader(text=text, units=units, plan=the_plan, uniforms=uniforms)
 
 

@@ -16,6 +16,7 @@ import glint
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_table
 
+from .live_canvas import live_section
 from .markdown import cell, code, fenced, math_block, table, text
 from .measured import Accuracy, accuracy_section
 from .pictures import SIZE, TIME, Picture
@@ -214,6 +215,7 @@ def variant_page(
     ]
     if picture is not None:
         parts += ["## Picture\n\n", picture_block(doc, picture), "\n"]
+    parts.append(live_section(doc.id, picture))  # the picture's shader, live (live_canvas.py)
     if doc.formula:
         parts += ["## Formula\n\n", math_block(doc.formula), "\n"]
     parts.append(accuracy_section(doc.id, accuracy, machine))

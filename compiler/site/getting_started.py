@@ -9,6 +9,7 @@ from pathlib import Path, PurePosixPath
 
 from glint.compiler.errors import InputError
 
+from .live_canvas import home_canvas
 from .markdown import fenced
 
 HOME_PAGE = PurePosixPath("index.md")
@@ -32,6 +33,9 @@ def getting_started_page(readme: str) -> str:
         "\n\n" + fenced(commands, "sh") + "\n"
         "`make demo` composes, validates and renders the default scene:\n\n"
         f"![The default scene rendered by glint]({PICTURE})\n\n"
+        "The same scene live in your browser (WebGL2, composed with `glint compose --target "
+        "webgl2 --params-as-uniforms`): press Play, scrub the time, or move a parameter's "
+        "slider.\n\n" + home_canvas() + "\n"
         "## Python API\n\n"
         "`import glint` gives the commands as functions, for scripts and notebooks:\n\n"
         + fenced(api, "python")

@@ -43,6 +43,7 @@ class Picture:
     scene_file: str | None = None  # e.g. "snippets/scenes/lamp.toml"; None: the default scene
     note: str = ""  # why there is no picture, when `path` is None
     shader: str = ""  # the composed shader the picture shows (ShaderToy Image-tab code)
+    live: str = ""  # the same composition for the live canvas (webgl2, parameters as uniforms)
 
     @property
     def scene(self) -> str:
@@ -119,7 +120,10 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         cache_dir.mkdir(parents=True, exist_ok=True)
         write_atomic(cached, png)
         result.rendered += 1
-    picture = Picture(path=picture_path(snippet_id), scene_file=scene_file, shader=shader.text)
+    live = shader.retarget("webgl2", params_as_uniforms=True).text  # emitted again, not composed
+    picture = Picture(
+        path=picture_path(snippet_id), scene_file=scene_file, shader=shader.text, live=live
+    )
     result.files[picture_path(snippet_id)] = png
     return picture
 

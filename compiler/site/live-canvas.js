@@ -1,0 +1,396 @@
+// Live WebGL2 canvases on glint's docs site.
+//
+// A page holds <canvas class="glint-live-canvas" data-shader="img/live/X.glsl" data-time="1">
+// inside <div class="glint-live">; data-shader is relative to the site's root. The script fetches
+// the shader (its text never goes into the HTML), compiles it (a complete `#version 300 es`
+// shader as `glint compose --target webgl2` writes it, or ShaderToy Image-tab code, which it
+// wraps in ShaderToy's uniforms and a main), and draws one frame at data-time. Play runs the
+// clock; the time slider scrubs it; a mouse drag sets iMouse as ShaderToy does; each parameter
+// of the shader's /* glint-params */ manifest gets a slider that sets its uniform. Compile
+// errors appear in a <pre> under the canvas. Canvases start when scrolled into view, and lose
+// their WebGL context when the page changes, since Chrome keeps only about 16 alive at once.
+(function () {
+  "use strict";
+
+  // The site's root, from this script's own URL (assets/live-canvas.js): pages at any depth,
+  // and pages reached by Material's instant navigation, resolve data-shader the same way.
+  var ROOT = new URL("../", document.currentScript.src);
+
+  var VERTEX =
+    "#version 300 es\n" +
+    "void main() {\n" +
+    "    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));\n" +
+    "    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n" + // one triangle covering the canvas
+    "}\n";
+
+  // ShaderToy's prelude for Image-tab code (compiler/target/shadertoy.py writes the same one).
+  var PRELUDE =
+    "#version 300 es\n" +
+    "precision highp float;\n" +
+    "precision highp int;\n" +
+    "precision mediump sampler3D;\n" +
+    "uniform vec3 iResolution;\n" +
+    "uniform float iTime;\n" +
+    "uniform float iTimeDelta;\n" +
+    "uniform int iFrame;\n" +
+    "uniform float iFrameRate;\n" +
+    "uniform vec4 iMouse;\n" +
+    "uniform vec4 iDate;\n" +
+    "uniform float iChannelTime[4];\n" +
+    "uniform vec3 iChannelResolution[4];\n" +
+    "uniform float iSampleRate;\n" +
+    "uniform sampler2D iChannel0;\n" +
+    "uniform sampler2D iChannel1;\n" +
+    "uniform sampler2D iChannel2;\n" +
+    "uniform sampler2D iChannel3;\n";
+  var PRELUDE_LINES = PRELUDE.split("\n").length - 1;
+  var EPILOGUE =
+    "\nout vec4 glintFragColor;\n" +
+    "void main() {\n" +
+    "    glintFragColor = vec4(0.0, 0.0, 0.0, 1.0);\n" +
+    "    mainImage(glintFragColor, gl_FragCoord.xy);\n" +
+    "}\n";
+  var TIME_MAX = 20; // seconds on the scrub slider
+
+  // The controls' few rules, added once (no stylesheet of its own to list and ship).
+  var STYLE =
+    ".glint-live canvas{display:block;width:100%;max-width:640px;height:auto;cursor:grab;" +
+    "touch-action:none}" + // a drag sets iMouse rather than scrolling the page
+    ".glint-live-controls{display:flex;flex-wrap:wrap;gap:.25em 1em;align-items:center;" +
+    "max-width:640px;font-size:.7rem}" +
+    ".glint-live-slider{display:flex;align-items:center;gap:.5em}" +
+    ".glint-live-name{font-family:var(--md-code-font-family,monospace)}" +
+    ".glint-live-value{min-width:4em}" +
+    ".glint-live-errors{white-space:pre-wrap;color:#c62828}";
+
+  var instances = [];
+  var observer = null;
+
+  function addStyle() {
+    if (document.getElementById("glint-live-style")) return;
+    var style = element("style");
+    style.id = "glint-live-style";
+    style.textContent = STYLE;
+    document.head.appendChild(style);
+  }
+
+  function manifest(text) {
+    var start = text.indexOf("/* glint-params\n");
+    if (start < 0) return [];
+    var body = text.slice(start + 16);
+    try {
+      return JSON.parse(body.slice(0, body.indexOf("*/")));
+    } catch (error) {
+      return []; // a broken manifest costs the sliders, not the picture
+    }
+  }
+
+  function element(tag, className, text) {
+    var node = document.createElement(tag);
+    if (className) node.className = className;
+    if (text !== undefined) node.textContent = text; // text only: never HTML from a shader
+    return node;
+  }
+
+  function slider(label, min, max, step, value, onInput) {
+    var row = element("label", "glint-live-slider");
+    var name = element("span", "glint-live-name", label);
+    var input = element("input");
+    input.type = "range";
+    input.min = String(min);
+    input.max = String(max);
+    input.step = String(step);
+    input.value = String(value);
+    input.setAttribute("aria-label", label);
+    var shown = element("output", "glint-live-value", String(value));
+    input.addEventListener("input", function () {
+      shown.textContent = input.value;
+      onInput(Number(input.value));
+    });
+    row.appendChild(name);
+    row.appendChild(input);
+    row.appendChild(shown);
+    return { row: row, input: input, shown: shown };
+  }
+
+  function Live(canvas) {
+    this.canvas = canvas;
+    this.time = Number(canvas.dataset.time || "0");
+    this.frame = 0;
+    this.mouse = [0, 0, 0, 0];
+    this.playing = false;
+    this.raf = 0;
+    this.last = 0;
+    this.gl = null;
+    this.program = null;
+    this.params = [];
+    this.values = {};
+    this.started = false;
+    this.lost = false;
+  }
+
+  Live.prototype.start = function () {
+    if (this.started) return;
+    this.started = true;
+    var self = this;
+    var canvas = this.canvas;
+    canvas.dataset.state = "loading";
+    this.errors = element("pre", "glint-live-errors");
+    this.errors.hidden = true;
+    this.controls = element("div", "glint-live-controls");
+    canvas.insertAdjacentElement("afterend", this.errors);
+    this.errors.insertAdjacentElement("afterend", this.controls);
+    fetch(new URL(canvas.dataset.shader, ROOT))
+      .then(function (response) {
+        if (!response.ok) throw new Error("cannot load the shader: HTTP " + response.status);
+        return response.text();
+      })
+      .then(function (text) {
+        if (!self.lost) self.compile(text);
+      })
+      .catch(function (error) {
+        self.fail(String(error.message || error));
+      });
+  };
+
+  Live.prototype.fail = function (message) {
+    this.errors.textContent = message;
+    this.errors.hidden = false;
+    this.canvas.dataset.state = "error";
+  };
+
+  Live.prototype.compile = function (text) {
+    var gl = this.canvas.getContext("webgl2", {
+      alpha: false, // ShaderToy ignores alpha; a page must not blend the picture with its own
+      antialias: false,
+      preserveDrawingBuffer: true, // so that a paused frame can be read back (tests, saving)
+    });
+    if (!gl) return this.fail("This browser has no WebGL2.");
+    this.gl = gl;
+    var complete = /^\s*#version/.test(text);
+    var source = complete ? text : PRELUDE + text + EPILOGUE;
+    var offset = complete ? 0 : PRELUDE_LINES; // report Image-tab errors at the user's lines
+    var vertex = this.shader(gl.VERTEX_SHADER, VERTEX, 0);
+    var fragment = this.shader(gl.FRAGMENT_SHADER, source, offset);
+    if (!vertex || !fragment) return;
+    var program = gl.createProgram();
+    gl.attachShader(program, vertex);
+    gl.attachShader(program, fragment);
+    gl.linkProgram(program);
+    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+      return this.fail("link failed:\n" + gl.getProgramInfoLog(program));
+    }
+    this.program = program;
+    this.params = manifest(text);
+    for (var i = 0; i < this.params.length; i++) {
+      this.values[this.params[i].name] = this.params[i].default;
+    }
+    this.buildControls();
+    this.canvas.dataset.state = "ready";
+    this.draw();
+  };
+
+  Live.prototype.shader = function (kind, source, offset) {
+    var gl = this.gl;
+    var shader = gl.createShader(kind);
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (gl.getShaderParameter(shader, gl.COMPILE_STATUS)) return shader;
+    var log = String(gl.getShaderInfoLog(shader) || "compile failed");
+    log = log.replace(/(ERROR: \d+:)(\d+)/g, function (all, head, line) {
+      return head + Math.max(Number(line) - offset, 1);
+    });
+    this.fail(log);
+    return null;
+  };
+
+  Live.prototype.buildControls = function () {
+    var self = this;
+    var play = element("button", "md-button glint-live-play", "Play");
+    play.type = "button";
+    play.addEventListener("click", function () {
+      self.setPlaying(!self.playing);
+    });
+    this.playButton = play;
+    this.controls.appendChild(play);
+    this.timeSlider = slider("iTime", 0, TIME_MAX, 0.01, this.time, function (value) {
+      self.time = value;
+      if (!self.playing) self.draw();
+    });
+    this.controls.appendChild(this.timeSlider.row);
+    this.params.forEach(function (param) {
+      var isInt = param.type === "int";
+      var step = isInt ? 1 : (param.max - param.min) / 200;
+      var control = slider(param.name, param.min, param.max, step, param.default, function (v) {
+        self.values[param.name] = v;
+        if (!self.playing) self.draw();
+      });
+      control.input.dataset.param = param.name;
+      self.controls.appendChild(control.row);
+    });
+    this.bindMouse();
+  };
+
+  // ShaderToy's iMouse: xy the position while a button is down, zw where it went down; z and w
+  // turn negative once it is released (pixels, origin at the bottom left).
+  Live.prototype.bindMouse = function () {
+    var self = this;
+    var canvas = this.canvas;
+    var down = false;
+    function position(event) {
+      var box = canvas.getBoundingClientRect();
+      var x = ((event.clientX - box.left) * canvas.width) / box.width;
+      var y = canvas.height - ((event.clientY - box.top) * canvas.height) / box.height;
+      return [x, y];
+    }
+    canvas.addEventListener("pointerdown", function (event) {
+      down = true;
+      canvas.setPointerCapture(event.pointerId);
+      var p = position(event);
+      self.mouse = [p[0], p[1], p[0], p[1]];
+      if (!self.playing) self.draw();
+    });
+    canvas.addEventListener("pointermove", function (event) {
+      if (!down) return;
+      var p = position(event);
+      self.mouse[0] = p[0];
+      self.mouse[1] = p[1];
+      if (!self.playing) self.draw();
+    });
+    function release() {
+      if (!down) return;
+      down = false;
+      self.mouse[2] = -Math.abs(self.mouse[2]);
+      self.mouse[3] = -Math.abs(self.mouse[3]);
+      if (!self.playing) self.draw();
+    }
+    canvas.addEventListener("pointerup", release);
+    canvas.addEventListener("pointercancel", release);
+  };
+
+  Live.prototype.setPlaying = function (playing) {
+    var self = this;
+    this.playing = playing;
+    this.playButton.textContent = playing ? "Pause" : "Play";
+    cancelAnimationFrame(this.raf);
+    if (!playing) return;
+    this.last = performance.now();
+    function tick(now) {
+      if (!self.playing || self.lost) return;
+      var delta = (now - self.last) / 1000;
+      self.last = now;
+      self.time = (self.time + delta) % TIME_MAX;
+      self.timeSlider.input.value = String(self.time);
+      self.timeSlider.shown.textContent = self.time.toFixed(2);
+      self.draw(delta);
+      self.raf = requestAnimationFrame(tick);
+    }
+    this.raf = requestAnimationFrame(tick);
+  };
+
+  Live.prototype.uniform = function (name) {
+    return this.gl.getUniformLocation(this.program, name); // null for one the shader never reads
+  };
+
+  Live.prototype.draw = function (delta) {
+    var gl = this.gl;
+    if (!gl || !this.program || this.lost) return;
+    var width = this.canvas.width;
+    var height = this.canvas.height;
+    var now = new Date();
+    gl.viewport(0, 0, width, height);
+    gl.useProgram(this.program);
+    gl.uniform3f(this.uniform("iResolution"), width, height, 1);
+    gl.uniform1f(this.uniform("iTime"), this.time);
+    gl.uniform1f(this.uniform("iTimeDelta"), delta || 0);
+    gl.uniform1i(this.uniform("iFrame"), this.frame);
+    gl.uniform1f(this.uniform("iFrameRate"), 60);
+    gl.uniform4fv(this.uniform("iMouse"), this.mouse);
+    gl.uniform4f(
+      this.uniform("iDate"),
+      now.getFullYear(),
+      now.getMonth(),
+      now.getDate(),
+      now.getHours() * 3600 + now.getMinutes() * 60 + now.getSeconds()
+    );
+    gl.uniform1f(this.uniform("iSampleRate"), 44100);
+    for (var i = 0; i < this.params.length; i++) {
+      var param = this.params[i];
+      var value = this.values[param.name];
+      if (param.type === "int") gl.uniform1i(this.uniform(param.name), Math.round(value));
+      else gl.uniform1f(this.uniform(param.name), value);
+    }
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    this.frame += 1;
+    this.canvas.dataset.frames = String(this.frame);
+    this.canvas.dataset.state = "drawn";
+  };
+
+  Live.prototype.release = function () {
+    this.lost = true;
+    this.playing = false;
+    cancelAnimationFrame(this.raf);
+    if (observer) observer.unobserve(this.canvas);
+    if (this.gl) {
+      var lose = this.gl.getExtension("WEBGL_lose_context");
+      if (lose) lose.loseContext();
+      this.gl = null;
+    }
+    this.canvas.dataset.state = "released";
+  };
+
+  function releaseDetached() {
+    instances = instances.filter(function (live) {
+      if (live.canvas.isConnected) return true;
+      live.release();
+      return false;
+    });
+  }
+
+  function setup() {
+    releaseDetached(); // the page before this one, under instant navigation
+    addStyle();
+    if (!observer && "IntersectionObserver" in window) {
+      observer = new IntersectionObserver(function (entries) {
+        entries.forEach(function (entry) {
+          if (!entry.isIntersecting) return;
+          observer.unobserve(entry.target);
+          entry.target.glintLive.start();
+        });
+      });
+    }
+    var canvases = document.querySelectorAll("canvas.glint-live-canvas[data-shader]");
+    Array.prototype.forEach.call(canvases, function (canvas) {
+      if (canvas.glintLive) return;
+      var live = new Live(canvas);
+      canvas.glintLive = live;
+      instances.push(live);
+      if (observer) observer.observe(canvas);
+      else live.start();
+    });
+  }
+
+  // For tests and the curious: how many canvases hold a live WebGL context.
+  window.glintLive = {
+    contexts: function () {
+      return instances.filter(function (live) {
+        return live.gl && !live.lost;
+      }).length;
+    },
+  };
+
+  window.addEventListener("pagehide", function () {
+    instances.forEach(function (live) {
+      live.release();
+    });
+    instances = [];
+  });
+
+  if (typeof document$ !== "undefined" && document$.subscribe) {
+    document$.subscribe(setup); // Material: every page load, instant navigation included
+  } else if (document.readyState === "loading") {
+    document.addEventListener("DOMContentLoaded", setup);
+  } else {
+    setup();
+  }
+})();

@@ -1,0 +1,76 @@
+"""Live WebGL2 canvases on the docs site: the shader of a page's picture, running in the reader's
+browser, with a play button, a time slider and a slider per parameter (live-canvas.js).
+
+Each canvas names its shader by a data attribute, relative to the site's root; the shader is a
+file of its own under `img/live/`, composed with `--target webgl2 --params-as-uniforms` so that
+the sliders set uniforms, and fetched by the script: no shader text goes into a page's HTML.
+The Getting started page shows the default scene; each variant page the scene of its picture,
+emitted again for webgl2 from the same composition (pictures.py), not composed twice.
+"""
+
+from __future__ import annotations
+
+import html
+from collections.abc import Mapping
+from importlib import resources
+from pathlib import PurePosixPath
+
+import glint
+
+from .pictures import TIME, Picture
+
+LIVE_DIR = PurePosixPath("img") / "live"
+SCRIPT = PurePosixPath("assets") / "live-canvas.js"  # mkdocs.yml lists it in extra_javascript
+DEFAULT_SHADER = LIVE_DIR / "default.glsl"
+VARIANT_SIZE = (384, 216)  # twice the picture's: small enough for a software rasteriser
+HOME_SIZE = (640, 360)
+
+
+def live_path(snippet_id: str) -> PurePosixPath:
+    return LIVE_DIR / f"{snippet_id}.glsl"
+
+
+def canvas_html(shader: PurePosixPath, size: tuple[int, int], label: str) -> str:
+    """The raw HTML of one canvas: its drawing size, its shader (root-relative) and its time."""
+    width, height = size
+    return (
+        '<div class="glint-live">\n'
+        f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
+        f'data-shader="{html.escape(shader.as_posix())}" data-time="{TIME:g}" '
+        f'aria-label="{html.escape(label)}"></canvas>\n'
+        "</div>\n"
+    )
+
+
+def live_section(snippet_id: str, picture: Picture | None) -> str:
+    """A variant page's Live section (at the picture's time, so its first frame is the
+    picture), or "" when the variant has no picture and so no live shader."""
+    if picture is None or not picture.live:
+        return ""
+    return (
+        "## Live\n\n"
+        "The picture's shader running in your browser (WebGL2), composed with "
+        "`--target webgl2 --params-as-uniforms`: press Play, scrub the time, drag on it for "
+        "`iMouse`, or move a parameter's slider.\n\n"
+        + canvas_html(live_path(snippet_id), VARIANT_SIZE, f"{snippet_id}, live")
+        + "\n"
+    )
+
+
+def home_canvas() -> str:
+    return canvas_html(DEFAULT_SHADER, HOME_SIZE, "the default scene, live")
+
+
+def live_files(pictures: Mapping[str, Picture] | None = None) -> dict[PurePosixPath, bytes]:
+    """The script, the default scene's live shader and each picture's, by path in the docs
+    folder."""
+    package = resources.files("glint.compiler.site")
+    default = glint.compose(target="webgl2", params_as_uniforms=True).text
+    files = {
+        SCRIPT: (package / "live-canvas.js").read_bytes(),
+        DEFAULT_SHADER: default.encode("utf-8"),
+    }
+    for snippet_id, picture in (pictures or {}).items():
+        if picture.live:
+            files[live_path(snippet_id)] = picture.live.encode("utf-8")
+    return files

@@ -1,0 +1,175 @@
+"""The docs site's live WebGL2 canvases in Debian's Chromium (SwiftShader): a canvas compiles and
+draws what `glint render` draws for the same shader (mean FLIP under 0.01), its sliders change
+the picture, and a page reached by Material's instant navigation starts its canvas.
+
+The site is built here, once, with `site_url` set to the local server's address: Material's
+instant navigation only takes links it finds in the sitemap, which `site_url` fills. The browser
+and its pages come from tests/conftest.py (tests/site_browser.py).
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import os
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+import pytest
+from PIL import Image
+from site_browser import KATEX_DIR, MAKE_TEST, ROOT, PageLog, serve
+
+import glint
+from glint.compiler.compose.uniform_params import read_manifest
+from glint.compiler.render.images import flip_error
+
+if TYPE_CHECKING:
+    from playwright.sync_api import Page
+
+pytestmark = pytest.mark.browser
+
+PICTURES = ("D.ggx",)  # one variant page with a canvas; the home page has the default scene
+FLIP_LIMIT = 0.01
+
+
+class LiveSite:
+    def __init__(self, url: str, docs: Path) -> None:
+        self.url = url
+        self.docs = docs
+
+
+@pytest.fixture(scope="module")
+def live_site(tmp_path_factory: pytest.TempPathFactory) -> Iterator[LiveSite]:
+    """The site built with `site_url` set to where it is served (a folder served before it is
+    built, so that the port is known to the build)."""
+    pytest.importorskip("material", reason=f"mkdocs-material is not installed: {MAKE_TEST}")
+    tmp = tmp_path_factory.mktemp("canvas-site")
+    (tmp / "site").mkdir()
+    with serve(tmp / "site") as url:
+        env = os.environ | {
+            "GLINT_SITE_URL": url,
+            "GLINT_SITE_DOCS": str(tmp / "docs"),
+            "GLINT_SITE_CACHE": str(tmp / "cache"),
+            "GLINT_SITE_PICTURES": ",".join(PICTURES),
+        }
+        if (KATEX_DIR / "katex.min.js").is_file():
+            env["GLINT_KATEX_DIR"] = str(KATEX_DIR)
+        command = [sys.executable, "-m", "mkdocs", "build", "--strict", "-q"]
+        command += ["-f", str(ROOT / "mkdocs.yml"), "-d", str(tmp / "site")]
+        result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=300)
+        assert result.returncode == 0, result.stderr
+        yield LiveSite(url, tmp / "docs")
+
+
+def _drawn(page: Page, selector: str = "canvas.glint-live-canvas") -> dict[str, str]:
+    """Scroll the canvas into view (it starts lazily) and wait until it drew or failed."""
+    canvas = page.locator(selector).first
+    canvas.scroll_into_view_if_needed()
+    page.wait_for_function(
+        """(sel) => { const c = document.querySelector(sel);
+           return c && ["drawn", "error"].includes(c.dataset.state); }""",
+        arg=selector,
+        timeout=60_000,
+    )
+    state: dict[str, str] = page.evaluate(
+        """(sel) => { const c = document.querySelector(sel);
+           const pre = c.parentElement.querySelector(".glint-live-errors");
+           return {state: c.dataset.state, frames: c.dataset.frames || "0",
+                   errors: pre ? pre.textContent : ""}; }""",
+        selector,
+    )
+    assert state["state"] == "drawn", state["errors"]
+    return state
+
+
+def _pixels(page: Page, selector: str = "canvas.glint-live-canvas") -> np.ndarray:
+    """The canvas as float RGB in [0, 1], row 0 at the top (what `glint render` gives)."""
+    url: str = page.evaluate(f"document.querySelector({selector!r}).toDataURL('image/png')")
+    png = base64.b64decode(url.split(",", 1)[1])
+    rgb = Image.open(io.BytesIO(png)).convert("RGB")
+    return np.asarray(rgb, dtype=np.float32) / 255.0
+
+
+def _with_defaults(text: str) -> str:
+    """The live shader with each uniform parameter back to a #define of its manifest default:
+    what the canvas computes before a slider moves."""
+    for param in read_manifest(text):
+        declaration = f"uniform {param.type} {param.name};"
+        text = text.replace(declaration, f"#define {param.name} {param.default!r}")
+    return text
+
+
+def _no_problems(log: PageLog) -> None:
+    assert log.console_errors == [] and log.page_errors == [], log.problems()
+
+
+@pytest.mark.parametrize(("page_path", "shader"), [("", "default"), ("catalog/D.ggx/", "D.ggx")])
+def test_canvas_draws_what_glint_renders(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog], page_path: str, shader: str
+) -> None:
+    page, log = browser_page
+    page.goto(live_site.url + page_path)
+    _drawn(page)
+    seen = _pixels(page)
+    assert seen.mean() > 0.05, "the canvas is black"
+    text = (live_site.docs / "img" / "live" / f"{shader}.glsl").read_text()
+    height, width = seen.shape[:2]
+    reference = glint.render(_with_defaults(text), size=(width, height), time=1.0)
+    error = flip_error(reference.pixels, seen)
+    print(f"{shader}: {width}x{height}, mean FLIP {error:.5f}")
+    assert error < FLIP_LIMIT
+    _no_problems(log)
+
+
+def test_a_parameter_slider_changes_the_picture(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    page, log = browser_page
+    page.goto(live_site.url + "catalog/D.ggx/")
+    state = _drawn(page)
+    before = _pixels(page)
+    names = page.eval_on_selector_all("input[data-param]", "els => els.map(e => e.dataset.param)")
+    assert "CAMERA_FOCAL" in names
+    page.eval_on_selector(
+        "input[data-param='CAMERA_FOCAL']",
+        "el => { el.value = '3'; el.dispatchEvent(new Event('input')); }",
+    )
+    frames = int(state["frames"])
+    page.wait_for_function(
+        f"Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > {frames}"
+    )
+    after = _pixels(page)
+    assert np.abs(after - before).mean() > 0.01, "the slider did not change the picture"
+    _no_problems(log)
+
+
+def test_instant_navigation_starts_the_next_pages_canvas(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    page, log = browser_page
+    page.goto(live_site.url)
+    _drawn(page)
+    assert page.evaluate("window.glintLive.contexts()") == 1
+    # A click on a link of the site: Material's instant navigation fetches the page and swaps
+    # it in, with no load (the flag set on this window survives). The home page links to no
+    # variant page, so the test adds the link a reader would follow.
+    page.evaluate(
+        """url => { window.glintNoReload = true;
+           const link = document.createElement("a");
+           link.href = url; link.textContent = "D.ggx";
+           document.querySelector("article").appendChild(link);
+           link.click(); }""",
+        live_site.url + "catalog/D.ggx/",
+    )
+    # no "load" event under instant navigation: wait for the address and the new content
+    page.wait_for_function("location.pathname.endsWith('/catalog/D.ggx/')")
+    page.wait_for_selector("canvas.glint-live-canvas[data-shader$='D.ggx.glsl']")
+    _drawn(page)
+    assert page.evaluate("window.glintNoReload") is True, "the page was loaded again, not swapped"
+    # the home page's canvas gave its context back; only this page's is alive
+    assert page.evaluate("window.glintLive.contexts()") == 1
+    _no_problems(log)
