@@ -61,4 +61,3 @@ def _codes(codes: str | Sequence[str] | None) -> list[str] | None:
         return None
     items = codes.split(",") if isinstance(codes, str) else codes
     return [c.strip().upper() for c in items if c.strip()]
-

@@ -35,9 +35,16 @@ _TOKEN = re.compile(r"^'(.*?)' :\s*(.*)$")
 _NOISE = re.compile(r"compilation errors?\.|No code generated|compilation terminated")
 # glslang names the unexpected token in syntax errors by its grammar name.
 _GRAMMAR_TOKENS = {
-    "SEMICOLON": ";", "COMMA": ",", "LEFT_BRACE": "{", "RIGHT_BRACE": "}",
-    "LEFT_PAREN": "(", "RIGHT_PAREN": ")", "LEFT_BRACKET": "[", "RIGHT_BRACKET": "]",
-    "DOT": ".", "EQUAL": "=",
+    "SEMICOLON": ";",
+    "COMMA": ",",
+    "LEFT_BRACE": "{",
+    "RIGHT_BRACE": "}",
+    "LEFT_PAREN": "(",
+    "RIGHT_PAREN": ")",
+    "LEFT_BRACKET": "[",
+    "RIGHT_BRACKET": "]",
+    "DOT": ".",
+    "EQUAL": "=",
 }
 _UNEXPECTED = re.compile(r"unexpected ([A-Z_]+)")
 
@@ -228,9 +235,7 @@ def validate_many(
     return results
 
 
-def _validate_batch(
-    batch: Sequence[tuple[str, str]], target: str
-) -> list[list[Diagnostic]] | None:
+def _validate_batch(batch: Sequence[tuple[str, str]], target: str) -> list[list[Diagnostic]] | None:
     """One glslangValidator process for the batch, or None when its output cannot be split."""
     wrapped = [wrap_for_target(source, target) for source, _ in batch]
     validator = find_validator()

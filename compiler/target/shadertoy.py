@@ -27,10 +27,7 @@ UNIFORMS: tuple[tuple[str, str], ...] = (
 UNIFORM_NAMES: frozenset[str] = frozenset(decl.split("[")[0] for _, decl in UNIFORMS)
 
 _HEADER = (
-    "#version 300 es\n"
-    "precision highp float;\n"
-    "precision highp int;\n"
-    "precision mediump sampler3D;\n"
+    "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision mediump sampler3D;\n"
 )
 
 _UNIFORM_BLOCK = "".join(f"uniform {ty} {decl};\n" for ty, decl in UNIFORMS)
