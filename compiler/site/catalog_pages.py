@@ -77,7 +77,7 @@ def catalog_pages(
     accuracy = accuracy or {}
     slot_sections = slot_sections or {}
     slots = slot_docs(variants)
-    pages = {CATALOG_DIR / "index.md": index_page(variants, slots, pictures)}
+    pages = {CATALOG_DIR / "index.md": index_page(variants, slots, pictures, accuracy)}
     pages |= {
         slot_path(slot.name): slot_page(slot) + slot_sections.get(slot.name, "") for slot in slots
     }
@@ -151,26 +151,44 @@ def tier_uses(slot: str, variant: str, tiers: dict[str, dict[str, str]]) -> list
 
 
 def index_page(
-    variants: list[VariantDoc], slots: list[SlotDoc], pictures: Mapping[str, Picture] | None = None
+    variants: list[VariantDoc],
+    slots: list[SlotDoc],
+    pictures: Mapping[str, Picture] | None = None,
+    accuracy: Mapping[str, Accuracy] | None = None,
 ) -> str:
-    """The catalog index: one row per variant, with its picture where it has one."""
+    """The catalog index: one row per variant, with its picture and what the bench measured
+    where known. catalog-cards.js turns the table into cards with filters; without JavaScript
+    the table is the page."""
     pictures = pictures or {}
-    rows = [
-        [
-            f"[{code(doc.id)}]({doc.id}.md)",
-            f"[{code(doc.slot)}](slots/{doc.slot}.md)",
-            cell(doc.summary),
-            _thumbnail(doc.id, pictures.get(doc.id)),
-        ]
-        for doc in variants
-    ]
+    accuracy = accuracy or {}
+    rows = []
+    for doc in variants:
+        measured = accuracy[doc.id].measured if doc.id in accuracy else None
+        measured = measured or {}
+        rms = measured.get("rms")
+        rows.append(
+            [
+                f"[{code(doc.id)}]({doc.id}.md)",
+                f"[{code(doc.slot)}](slots/{doc.slot}.md)",
+                cell(doc.summary),
+                "★" if measured.get("pareto") else "",
+                "" if rms is None else f"{rms:.3g}",
+                f"{measured['gpu_ns']:.2f}" if "gpu_ns" in measured else "",
+                _thumbnail(doc.id, pictures.get(doc.id)),
+            ]
+        )
     slot_links = ", ".join(f"[{code(slot.name)}](slots/{slot.name}.md)" for slot in slots)
+    header = ["id", "slot", "summary", "front", "RMS error", "ns per call", "picture"]
     return (
         "# Catalog\n\n"
         f"{len(variants)} variants in {len(slots)} slots, generated from the snippet files "
         "(`glint catalog` lists the same). Every variant of a slot defines the slot's entry "
-        "function with the same prototype, so any one replaces any other.\n\n"
-        f"Slots: {slot_links}.\n\n" + table(["id", "slot", "summary", "picture"], rows)
+        "function with the same prototype, so any one replaces any other. ★ marks a variant "
+        "on its slot's cost/error front; the RMS error is against the variant's float64 "
+        "reference and the time is per call, both from `glint bench` "
+        "([Benchmark](../bench/bench.md)).\n\n"
+        f"Slots: {slot_links}.\n\n"
+        '<div id="glint-catalog-filter" hidden></div>\n\n' + table(header, rows)
     )
 
 
