@@ -173,3 +173,17 @@ def test_instant_navigation_starts_the_next_pages_canvas(
     # the home page's canvas gave its context back; only this page's is alive
     assert page.evaluate("window.glintLive.contexts()") == 1
     _no_problems(log)
+
+
+def test_every_example_scene_runs_live_on_the_scene_reference(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    from glint.compiler.site.scene_pages import example_scenes
+
+    page, log = browser_page
+    page.goto(live_site.url + "scenes/")
+    for scene in example_scenes():
+        selector = f'canvas[data-shader="img/live/scene-{scene.stem}.glsl"]'
+        _drawn(page, selector)
+        assert _pixels(page, selector).mean() > 0.05, f"{scene.stem}: the canvas is black"
+    _no_problems(log)

@@ -26,6 +26,7 @@ from glint.compiler.compose.scene import Scene
 from glint.compiler.files import write_atomic
 from glint.compiler.render.images import flip_error
 
+from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
 from .markdown import cell, code, fenced, table, text
 from .pictures import SIZE, TIME, cache_key
 
@@ -35,6 +36,7 @@ SCENE_PICTURES = PurePosixPath("img") / "scenes"
 SCENES_PAGE = PurePosixPath("scenes.md")
 TIERS_PAGE = PurePosixPath("tiers.md")
 BENCH_JSON = PurePosixPath("bench") / "bench.json"
+LIVE_SIZE = VARIANT_SIZE  # small: a software rasteriser draws several on one page
 
 
 @dataclass
@@ -70,7 +72,16 @@ def scene_pages(
                 renders[(scene.stem, tier)] = path
                 with Image.open(io.BytesIO(png)) as image:
                     pixels[(scene.stem, tier)] = np.asarray(image.convert("RGB"), np.float32) / 255
-    out.pages[SCENES_PAGE] = scene_reference_page(renders)
+    live: dict[str, PurePosixPath] = {}
+    for scene in example_scenes():
+        try:
+            shader = glint.compose(scene, target="webgl2", params_as_uniforms=True)
+        except glint.InputError as error:
+            log.warning("site: no live canvas for %s: %s", scene.name, error)
+            continue
+        live[scene.stem] = LIVE_DIR / f"scene-{scene.stem}.glsl"
+        out.files[live[scene.stem]] = shader.text.encode("utf-8")
+    out.pages[SCENES_PAGE] = scene_reference_page(renders, live)
     out.pages[TIERS_PAGE] = tiers_page(renders, pixels, _bench_tiers(source))
     return out
 
@@ -97,7 +108,13 @@ def _render(scene: Path, tier: str, cache_dir: Path) -> bytes | None:
 # --- the scene reference ------------------------------------------------------------------
 
 
-def scene_reference_page(renders: Mapping[tuple[str, str], PurePosixPath]) -> str:
+def scene_reference_page(
+    renders: Mapping[tuple[str, str], PurePosixPath],
+    live: Mapping[str, PurePosixPath] | None = None,
+) -> str:
+    """Every key of a scene file, then every example scene with its picture, its live canvas
+    (the shader in `live`, by scene stem) and its TOML."""
+    live = live or {}
     schema = Scene.model_json_schema()
     defs: dict[str, Any] = schema.get("$defs", {})
     parts = [
@@ -126,6 +143,9 @@ def scene_reference_page(renders: Mapping[tuple[str, str], PurePosixPath]) -> st
                 f"`glint render snippets/scenes/{scene.name}` at the balanced tier "
                 f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n\n"
             )
+        if scene.stem in live:
+            parts.append(canvas_html(live[scene.stem], LIVE_SIZE, f"the {scene.stem} scene, live"))
+            parts.append("\n")
         parts.append(fenced(scene.read_text(encoding="utf-8"), "toml") + "\n")
     return "".join(parts)
 
