@@ -314,10 +314,13 @@ def test_scene_reference_has_every_key_and_example_scene() -> None:
 
 def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Path) -> None:
     from glint.compiler.catalog.tiers import TIERS
-    from glint.compiler.site.scene_pages import scene_pages
+    from glint.compiler.site.scene_pages import example_scenes, scene_pages
 
     built = scene_pages(ROOT / "site" / "docs", tmp_path, pictured=("default",))
-    assert sorted(p.name for p in built.files) == sorted(f"default-{t}.png" for t in TIERS)
+    pictures = sorted(p.name for p in built.files if p.suffix == ".png")
+    assert pictures == sorted(f"default-{t}.png" for t in TIERS)
+    live = sorted(p.name for p in built.files if p.suffix == ".glsl")  # every scene runs live
+    assert live == sorted(f"scene-{scene.stem}.glsl" for scene in example_scenes())
     tiers = built.pages[PurePosixPath("tiers.md")]
     rows = dict(re.findall(r"\| `(\w+)` \| !\[default at \w+\]\([^)]+\) \| ([0-9.]+) \|", tiers))
     assert set(rows) == set(TIERS)
