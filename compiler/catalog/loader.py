@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import difflib
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from functools import cache
 from importlib import resources
@@ -92,6 +92,16 @@ class Catalog:
         close = difflib.get_close_matches(snippet_id, self.snippets, n=3)
         hint = f"; did you mean {', '.join(close)}?" if close else "; see `glint catalog`"
         raise InputError(f"unknown snippet '{snippet_id}'{hint}")
+
+    def params_of(self, ids: Iterable[str]) -> dict[str, Param]:
+        """The parameters of the snippets among `ids` (others, generated code, are skipped),
+        in order; a name two snippets share is the first one's."""
+        params: dict[str, Param] = {}
+        for snippet_id in ids:
+            snippet = self.snippets.get(snippet_id)
+            for name, param in snippet.params.items() if snippet else ():
+                params.setdefault(name, param)
+        return params
 
     def in_slot(self, slot: str) -> list[Snippet]:
         return [s for s in self.snippets.values() if s.slot == slot]

@@ -41,13 +41,10 @@ def parameter_block(units: list[Unit], catalog: Catalog, plan: Plan, lights: dic
     """`#define` lines for the scene's lights and every parameter of the units taken."""
     lines = ["// Scene constants (light directions point toward the light)."]
     lines += [f"#define {name} {value}" for name, value in lights.items()]
-    knobs: dict[str, str] = {}
-    for unit in units:
-        snippet = catalog.snippets.get(unit.id)
-        if snippet is None:
-            continue
-        for name, param in snippet.params.items():
-            knobs.setdefault(name, plan.params.get(name, glsl_value(param.default, param.type)))
+    knobs = {
+        name: plan.params.get(name, glsl_value(param.default, param.type))
+        for name, param in catalog.params_of(u.id for u in units).items()
+    }
     if knobs:
         lines.append("// Parameters of the snippets below.")
         lines += [f"#define {name} {value}" for name, value in knobs.items()]

@@ -57,18 +57,14 @@ def candidates(units: list[Unit], catalog: Catalog, plan: Plan) -> dict[str, Uni
     """The parameters of `units` that a slider could set (a range, a float or int type), with
     the value the parameter block gives them (the scene's baked value, else the default)."""
     result: dict[str, UniformParam] = {}
-    for unit in units:
-        snippet = catalog.snippets.get(unit.id)
-        if snippet is None:
+    for name, param in catalog.params_of(u.id for u in units).items():
+        if param.range is None or param.type not in UNIFORM_TYPES:
             continue
-        for name, param in snippet.params.items():
-            if name in result or param.range is None or param.type not in UNIFORM_TYPES:
-                continue
-            number = int if param.type == "int" else float
-            value = plan.params.get(name)
-            default = number(value) if value is not None else number(param.default)
-            low, high = (number(v) for v in param.range)
-            result[name] = UniformParam(name, param.type, default, low, high)
+        number = int if param.type == "int" else float
+        value = plan.params.get(name)
+        default = number(value) if value is not None else number(param.default)
+        low, high = (number(v) for v in param.range)
+        result[name] = UniformParam(name, param.type, default, low, high)
     return result
 
 

@@ -92,9 +92,19 @@ def load_png(path: str) -> np.ndarray:
     """Read a PNG as float32 RGB in [0, 1] (golden images are stored this way)."""
     try:
         with Image.open(path) as image:
-            return np.asarray(image.convert("RGB"), dtype=np.float32) / 255.0
+            return _rgb_of(image)
     except OSError as exc:
         raise InputError(f"cannot read image {path}: {exc}") from exc
+
+
+def png_pixels(data: bytes) -> np.ndarray:
+    """A PNG's bytes (png_bytes, a cached picture) as float32 RGB in [0, 1]."""
+    with Image.open(io.BytesIO(data)) as image:
+        return _rgb_of(image)
+
+
+def _rgb_of(image: Image.Image) -> np.ndarray:
+    return np.asarray(image.convert("RGB"), dtype=np.float32) / 255.0
 
 
 def flip_error(reference: np.ndarray, test: np.ndarray) -> float:

@@ -14,7 +14,7 @@ from pathlib import PurePosixPath
 
 import glint
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.catalog.tiers import TIERS, tier_table
+from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
 
 from .live_canvas import live_section
 from .markdown import cell, code, fenced, math_block, table, text
@@ -141,8 +141,7 @@ def tier_uses(slot: str, variant: str, tiers: dict[str, dict[str, str]]) -> list
     balanced's, as the planner's does; rough-diffuse materials take `[rough_diffuse]`."""
     uses = []
     for tier in TIERS:
-        chosen = tiers.get(tier, {}).get(slot, tiers.get("balanced", {}).get(slot))
-        if chosen == variant:
+        if tier_choice(tiers, tier, slot) == variant:
             uses.append(tier)
     if slot == "diffuse":
         rough = tiers.get("rough_diffuse", {})

@@ -48,10 +48,12 @@ SLICES = 3  # curves per plot: the second axis at its ends and middle
 
 @dataclass(frozen=True)
 class Bench:
-    """The bench report's variant rows, by id, and the machine that measured them."""
+    """The bench report's rows (variants by id, scene tiers by scene and tier) and the
+    machine that measured them."""
 
     machine: str = ""
     variants: dict[str, dict[str, Any]] = field(default_factory=dict)
+    tiers: dict[tuple[str, str], dict[str, Any]] = field(default_factory=dict)  # (scene, tier)
 
 
 @dataclass(frozen=True)
@@ -81,7 +83,9 @@ def load_bench(source: Path) -> Bench:
     label = str(machine.get("renderer", "")).split(";")[0].strip()
     if machine.get("platform"):
         label = f"{label}, {machine['platform']}" if label else str(machine["platform"])
-    return Bench(label, {row["id"]: row for row in data.get("variants", [])})
+    variants = {row["id"]: row for row in data.get("variants", [])}
+    tiers = {(row["scene"], row["tier"]): row for row in data.get("tiers", [])}
+    return Bench(label, variants, tiers)
 
 
 def variant_accuracy(
@@ -225,11 +229,7 @@ def _figure(
     truth: np.ndarray,
     error: np.ndarray,
 ) -> bytes:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib import pyplot as plt
-
+    plt = pyplot()
     worst = np.unravel_index(
         int(np.argmax(np.where(np.isfinite(error), error, np.inf))), error.shape
     )
@@ -269,9 +269,25 @@ def _figure(
         right.set_xlabel(names[1])
         right.set_ylabel(names[0])
     right.set_title(f"error, worst {float(error[worst]):.3g} (x)", fontsize=9)
+    return figure_png(fig)
+
+
+def pyplot() -> Any:
+    """matplotlib's pyplot drawing into files only (Agg), imported when a build draws."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot as plt
+
+    return plt
+
+
+def figure_png(fig: Any) -> bytes:
+    """The figure as PNG bytes, then closed. No software version in the metadata, so the
+    same figure gives the same bytes and a rebuild rewrites no file."""
     out = io.BytesIO()
     fig.savefig(out, format="png", metadata={"Software": None})
-    plt.close(fig)
+    pyplot().close(fig)
     return out.getvalue()
 
 

@@ -108,24 +108,31 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         return Picture(scene_file=scene_file, note=f"No picture: {label} fails to compose with it.")
     if shader.plan.choices.get(slot) != snippet_id:
         return Picture(scene_file=scene_file, note=f"No picture: {label} does not take it.")
-    cached = cache_dir / f"{cache_key(shader.text)}.png"
-    if cached.is_file():
-        png = cached.read_bytes()
-    else:
-        try:
-            png = glint.render(shader, size=SIZE, time=TIME).to_png()
-        except glint.InputError as error:
-            log.warning("site: no picture for %s: %s", snippet_id, error)
-            return Picture(scene_file=scene_file, note=f"No picture: {label} fails to render.")
-        cache_dir.mkdir(parents=True, exist_ok=True)
-        write_atomic(cached, png)
-        result.rendered += 1
+    try:
+        png, rendered = render_cached(shader, cache_dir)
+    except glint.InputError as error:
+        log.warning("site: no picture for %s: %s", snippet_id, error)
+        return Picture(scene_file=scene_file, note=f"No picture: {label} fails to render.")
+    result.rendered += rendered
     live = shader.retarget("webgl2", params_as_uniforms=True).text  # emitted again, not composed
     picture = Picture(
         path=picture_path(snippet_id), scene_file=scene_file, shader=shader.text, live=live
     )
     result.files[picture_path(snippet_id)] = png
     return picture
+
+
+def render_cached(shader: glint.Shader, cache_dir: Path) -> tuple[bytes, bool]:
+    """glint's render of `shader` at the pictures' size and time as PNG, from `cache_dir`
+    where it holds it, and whether it had to be rendered. Raises glint.InputError when the
+    shader does not render."""
+    cached = cache_dir / f"{cache_key(shader.text)}.png"
+    if cached.is_file():
+        return cached.read_bytes(), False
+    png = glint.render(shader, size=SIZE, time=TIME).to_png()
+    cache_dir.mkdir(parents=True, exist_ok=True)
+    write_atomic(cached, png)
+    return png, True
 
 
 def cache_key(text: str) -> str:

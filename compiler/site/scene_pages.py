@@ -8,7 +8,6 @@ Pictures are glint's own renders at the variant pictures' size, cached the same 
 
 from __future__ import annotations
 
-import io
 import json
 import logging
 from collections.abc import Collection, Mapping
@@ -17,25 +16,23 @@ from pathlib import Path, PurePosixPath
 from typing import Any
 
 import numpy as np
-from PIL import Image
 
 import glint
 from glint.compiler.catalog.loader import snippets_root
-from glint.compiler.catalog.tiers import TIERS, tier_table
+from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
 from glint.compiler.compose.scene import Scene
-from glint.compiler.files import write_atomic
-from glint.compiler.render.images import flip_error
+from glint.compiler.render.images import flip_error, png_pixels
 
 from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
 from .markdown import cell, code, fenced, table, text
-from .pictures import SIZE, TIME, cache_key
+from .measured import load_bench
+from .pictures import SIZE, TIME, render_cached
 
 log = logging.getLogger(__name__)
 
 SCENE_PICTURES = PurePosixPath("img") / "scenes"
 SCENES_PAGE = PurePosixPath("scenes.md")
 TIERS_PAGE = PurePosixPath("tiers.md")
-BENCH_JSON = PurePosixPath("bench") / "bench.json"
 LIVE_SIZE = VARIANT_SIZE  # small: a software rasteriser draws several on one page
 
 
@@ -70,8 +67,7 @@ def scene_pages(
                 path = SCENE_PICTURES / f"{scene.stem}-{tier}.png"
                 out.files[path] = png
                 renders[(scene.stem, tier)] = path
-                with Image.open(io.BytesIO(png)) as image:
-                    pixels[(scene.stem, tier)] = np.asarray(image.convert("RGB"), np.float32) / 255
+                pixels[(scene.stem, tier)] = png_pixels(png)
     live: dict[str, PurePosixPath] = {}
     for scene in example_scenes():
         try:
@@ -82,27 +78,16 @@ def scene_pages(
         live[scene.stem] = LIVE_DIR / f"scene-{scene.stem}.glsl"
         out.files[live[scene.stem]] = shader.text.encode("utf-8")
     out.pages[SCENES_PAGE] = scene_reference_page(renders, live)
-    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, _bench_tiers(source))
+    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, load_bench(source).tiers)
     return out
 
 
 def _render(scene: Path, tier: str, cache_dir: Path) -> bytes | None:
     try:
-        shader = glint.compose(scene, tier=tier)
+        return render_cached(glint.compose(scene, tier=tier), cache_dir)[0]
     except glint.InputError as error:
-        log.warning("site: %s does not compose at %s: %s", scene.name, tier, error)
+        log.warning("site: %s does not compose or render at %s: %s", scene.name, tier, error)
         return None
-    cached = cache_dir / f"{cache_key(shader.text)}.png"
-    if cached.is_file():
-        return cached.read_bytes()
-    try:
-        png = glint.render(shader, size=SIZE, time=TIME).to_png()
-    except glint.InputError as error:
-        log.warning("site: %s does not render at %s: %s", scene.name, tier, error)
-        return None
-    cache_dir.mkdir(parents=True, exist_ok=True)
-    write_atomic(cached, png)
-    return png
 
 
 # --- the scene reference ------------------------------------------------------------------
@@ -221,14 +206,6 @@ def _type(prop: Mapping[str, Any], defs: Mapping[str, Any]) -> str:
 # --- the tiers ---------------------------------------------------------------------------
 
 
-def _bench_tiers(source: Path) -> dict[tuple[str, str], dict[str, Any]]:
-    path = source / BENCH_JSON
-    if not path.is_file():
-        return {}
-    data = json.loads(path.read_text(encoding="utf-8"))
-    return {(row["scene"], row["tier"]): row for row in data.get("tiers", [])}
-
-
 def tiers_page(
     renders: Mapping[tuple[str, str], PurePosixPath],
     pixels: Mapping[tuple[str, str], np.ndarray],
@@ -240,7 +217,7 @@ def tiers_page(
     for slot in slots:
         row = [f"[{code(slot)}](catalog/slots/{slot}.md)"]
         for tier in TIERS:
-            variant = table_.get(tier, {}).get(slot) or table_.get("balanced", {}).get(slot)
+            variant = tier_choice(table_, tier, slot)
             row.append(f"[{code(variant)}](catalog/{slot}.{variant}.md)" if variant else "–")
         rows.append(row)
     parts = [

@@ -10,7 +10,6 @@ by a hash of the data it shows, like the pictures.
 from __future__ import annotations
 
 import hashlib
-import io
 import json
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -18,15 +17,14 @@ from pathlib import Path, PurePosixPath
 from typing import Any
 
 import numpy as np
-from PIL import Image
 
 import glint
-from glint.compiler.catalog.tiers import tier_table
+from glint.compiler.catalog.tiers import tier_choice, tier_table
 from glint.compiler.files import write_atomic
-from glint.compiler.render.images import flip_image, png_bytes
+from glint.compiler.render.images import flip_image, png_bytes, png_pixels
 
 from .markdown import cell, code, table
-from .measured import Bench
+from .measured import Bench, figure_png, pyplot
 from .pictures import Picture
 
 FLIP_DIR = PurePosixPath("img") / "flip"
@@ -44,7 +42,7 @@ class SlotComparisons:
 
 def reference_variant(slot: str, tiers: Mapping[str, Mapping[str, str]]) -> str | None:
     """The variant the reference tier takes for `slot` (balanced's where it names none)."""
-    chosen = tiers.get("reference", {}).get(slot) or tiers.get("balanced", {}).get(slot)
+    chosen = tier_choice(tiers, "reference", slot)
     return f"{slot}.{chosen}" if chosen else None
 
 
@@ -72,11 +70,6 @@ def slot_comparisons(
     return result
 
 
-def _decode(png: bytes) -> np.ndarray:
-    with Image.open(io.BytesIO(png)) as image:
-        return np.asarray(image.convert("RGB"), dtype=np.float32) / 255.0
-
-
 def _flip_table(
     ids: list[str],
     reference: str | None,
@@ -88,7 +81,7 @@ def _flip_table(
     ref_picture = pictures.get(reference) if reference else None
     if ref_picture is None or ref_picture.path is None or ref_picture.path not in files:
         return ""
-    truth = _decode(files[ref_picture.path])
+    truth = png_pixels(files[ref_picture.path])
     rows = []
     for snippet_id in ids:
         picture = pictures.get(snippet_id)
@@ -98,7 +91,7 @@ def _flip_table(
         if snippet_id == reference:
             rows.append([f"[{code(snippet_id)}](../{snippet_id}.md)", shown, "the reference", "0"])
             continue
-        error_map, mean = flip_image(truth, _decode(files[picture.path]))
+        error_map, mean = flip_image(truth, png_pixels(files[picture.path]))
         flip_path = FLIP_DIR / f"{snippet_id}.png"
         result.files[flip_path] = png_bytes(error_map)
         flip = f'![FLIP error of {snippet_id}](../../{flip_path.as_posix()}){{ width="192" }}'
@@ -178,11 +171,7 @@ def _chart(slot: str, rows: list[dict[str, Any]], cache_dir: Path | None) -> byt
 
 
 def _draw_chart(slot: str, data: list[list[Any]]) -> bytes:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib import pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.0, 3.6), dpi=100, layout="constrained")
     references = sorted({row[1] for row in data})
     for colour, reference in enumerate(references):
@@ -203,7 +192,4 @@ def _draw_chart(slot: str, data: list[list[Any]]) -> bytes:
     ax.set_ylabel("RMS error")
     ax.set_title(f"slot {slot}: cost against error", fontsize=9)
     ax.legend(fontsize=7)
-    out = io.BytesIO()
-    fig.savefig(out, format="png", metadata={"Software": None})
-    plt.close(fig)
-    return out.getvalue()
+    return figure_png(fig)
