@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import PurePosixPath
 
 from glint.compiler.compose.uniform_params import read_manifest
@@ -12,6 +13,7 @@ from glint.compiler.site.live_canvas import (
     live_files,
     live_path,
     live_section,
+    slot_live_section,
 )
 from glint.compiler.site.pictures import Picture
 
@@ -39,3 +41,40 @@ def test_files_hold_the_script_and_each_live_shader() -> None:
     assert b"WEBGL_lose_context" in files[SCRIPT]
     default = files[DEFAULT_SHADER].decode()
     assert default.startswith("#version 300 es") and read_manifest(default)
+
+
+def test_a_slot_page_has_one_canvas_with_a_selector_of_its_live_variants() -> None:
+    pictures = {
+        "D.ggx": Picture(live="// ggx"),
+        "D.beckmann": Picture(live="// beckmann"),
+        "D.gaussian": Picture(note="no picture"),  # no live shader: not offered
+    }
+    ids = ["D.beckmann", "D.gaussian", "D.ggx"]
+    section = slot_live_section("D", ids, pictures, "D.ggx")
+    assert section.count("<canvas") == 1 and section.count("<select") == 1
+    assert 'data-shader="img/live/D.ggx.glsl"' in section  # starts on the reference's variant
+    options = re.findall(r'<option value="([^"]+)"( selected)?>([^<]+)</option>', section)
+    assert options == [
+        ("img/live/D.beckmann.glsl", "", "D.beckmann"),
+        ("img/live/D.ggx.glsl", " selected", "D.ggx"),
+    ]
+    # without the reference's picture it starts on the first variant that has one
+    first = slot_live_section("D", ids, pictures, "D.blinn_phong")
+    assert 'data-shader="img/live/D.beckmann.glsl"' in first
+    assert slot_live_section("D", ["D.gaussian"], pictures, "D.ggx") == ""
+
+
+def test_the_tiers_page_has_a_live_tab_per_tier_for_each_scene() -> None:
+    from glint.compiler.catalog.tiers import TIERS
+    from glint.compiler.site.scene_pages import example_scenes, tiers_page
+
+    stems = [scene.stem for scene in example_scenes()]
+    live = {(stem, tier): live_path(f"scene-{stem}-{tier}") for stem in stems for tier in TIERS}
+    del live[(stems[0], TIERS[0])]  # a scene that did not compose at a tier has no tab for it
+    page = tiers_page({}, {}, {}, live)
+    for stem in stems:
+        section = page.split(f"### {stem}\n", 1)[1].split("### ", 1)[0]
+        tabs = re.findall(r'^=== "(\w+)"\n\n    <div class="glint-live">', section, re.M)
+        assert tabs == [t for t in TIERS if (stem, t) in live]
+        for tier in tabs:
+            assert f'data-shader="img/live/scene-{stem}-{tier}.glsl"' in section

@@ -319,8 +319,13 @@ def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Pa
     built = scene_pages(ROOT / "site" / "docs", tmp_path, pictured=("default",))
     pictures = sorted(p.name for p in built.files if p.suffix == ".png")
     assert pictures == sorted(f"default-{t}.png" for t in TIERS)
-    live = sorted(p.name for p in built.files if p.suffix == ".glsl")  # every scene runs live
-    assert live == sorted(f"scene-{scene.stem}.glsl" for scene in example_scenes())
+    # every scene runs live as written (scene reference) and at every tier (tiers page's tabs)
+    live = sorted(p.name for p in built.files if p.suffix == ".glsl")
+    stems = [scene.stem for scene in example_scenes()]
+    expected = [f"scene-{s}.glsl" for s in stems] + [
+        f"scene-{s}-{t}.glsl" for s in stems for t in TIERS
+    ]
+    assert live == sorted(expected)
     tiers = built.pages[PurePosixPath("tiers.md")]
     rows = dict(re.findall(r"\| `(\w+)` \| !\[default at \w+\]\([^)]+\) \| ([0-9.]+) \|", tiers))
     assert set(rows) == set(TIERS)

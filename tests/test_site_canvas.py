@@ -1,6 +1,8 @@
 """The docs site's live WebGL2 canvases in Debian's Chromium (SwiftShader): a canvas compiles and
 draws what `glint render` draws for the same shader (mean FLIP under 0.01), its sliders change
-the picture, and a page reached by Material's instant navigation starts its canvas.
+the picture, a slot page's selector swaps the variant, a compile error shows at the user's line,
+a tier's tab starts its canvas when opened, and a page reached by Material's instant navigation
+starts its canvas.
 
 The site is built here, once, with `site_url` set to the local server's address: Material's
 instant navigation only takes links it finds in the sitemap, which `site_url` fills. The browser
@@ -32,7 +34,7 @@ if TYPE_CHECKING:
 
 pytestmark = pytest.mark.browser
 
-PICTURES = ("D.ggx",)  # one variant page with a canvas; the home page has the default scene
+PICTURES = ("D.ggx", "D.beckmann")  # variant pages with a canvas, two for the D slot's selector
 FLIP_LIMIT = 0.01
 
 
@@ -186,4 +188,61 @@ def test_every_example_scene_runs_live_on_the_scene_reference(
         selector = f'canvas[data-shader="img/live/scene-{scene.stem}.glsl"]'
         _drawn(page, selector)
         assert _pixels(page, selector).mean() > 0.05, f"{scene.stem}: the canvas is black"
+    _no_problems(log)
+
+
+def test_a_slot_pages_selector_swaps_the_variant_on_its_canvas(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    page, log = browser_page
+    page.goto(live_site.url + "catalog/slots/D/")
+    _drawn(page)
+    chosen = "img/live/D.beckmann.glsl"
+    assert page.get_attribute("canvas.glint-live-canvas", "data-shader") != chosen
+    page.select_option("select.glint-live-choice", chosen)
+    page.wait_for_function(
+        """(path) => { const c = document.querySelector("canvas.glint-live-canvas");
+           return c.dataset.shader === path && c.dataset.state === "drawn"; }""",
+        arg=chosen,
+        timeout=60_000,
+    )
+    seen = _pixels(page)
+    text = (live_site.docs / chosen).read_text()
+    height, width = seen.shape[:2]
+    reference = glint.render(_with_defaults(text), size=(width, height), time=1.0)
+    assert flip_error(reference.pixels, seen) < FLIP_LIMIT
+    # the new shader's parameters got sliders, and only one set of them
+    assert page.locator(".glint-live-controls button").count() == 1
+    _no_problems(log)
+
+
+def test_a_compile_error_shows_under_the_canvas_at_the_users_line(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    page, log = browser_page
+    broken = "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n    c = nowhere;\n}\n"
+    page.route("**/img/live/D.ggx.glsl", lambda route: route.fulfill(body=broken))
+    page.goto(live_site.url + "catalog/D.ggx/")
+    page.locator("canvas.glint-live-canvas").scroll_into_view_if_needed()
+    page.wait_for_function(
+        "document.querySelector('canvas.glint-live-canvas').dataset.state === 'error'",
+        timeout=60_000,
+    )
+    shown = page.text_content(".glint-live-errors") or ""
+    assert "nowhere" in shown and ":3:" in shown, shown  # line 3 of the Image-tab code
+    assert page.is_visible(".glint-live-errors")
+    _no_problems(log)
+
+
+def test_the_tiers_page_runs_a_tier_when_its_tab_is_opened(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    page, log = browser_page
+    page.goto(live_site.url + "tiers/")
+    # the reference tier's tab is not the first: its canvas waits, hidden, until it is opened
+    selector = 'canvas[data-shader="img/live/scene-default-reference.glsl"]'
+    assert page.eval_on_selector(selector, "c => c.dataset.state || ''") == ""
+    page.locator(".tabbed-labels label", has_text="reference").first.click()
+    _drawn(page, selector)
+    assert _pixels(page, selector).mean() > 0.05, "the reference tier's canvas is black"
     _no_problems(log)

@@ -6,8 +6,9 @@
 // shader as `glint compose --target webgl2` writes it, or ShaderToy Image-tab code, which it
 // wraps in ShaderToy's uniforms and a main), and draws one frame at data-time. Play runs the
 // clock; the time slider scrubs it; a mouse drag sets iMouse as ShaderToy does; each parameter
-// of the shader's /* glint-params */ manifest gets a slider that sets its uniform. Compile
-// errors appear in a <pre> under the canvas. Canvases start when scrolled into view, and lose
+// of the shader's /* glint-params */ manifest gets a slider that sets its uniform. A
+// <select class="glint-live-choice"> beside the canvas swaps its shader for the chosen one
+// (a slot's variants). Compile errors appear in a <pre> under the canvas. Canvases start when scrolled into view, and lose
 // their WebGL context when the page changes, since Chrome keeps only about 16 alive at once.
 (function () {
   "use strict";
@@ -61,7 +62,8 @@
     ".glint-live-slider{display:flex;align-items:center;gap:.5em}" +
     ".glint-live-name{font-family:var(--md-code-font-family,monospace)}" +
     ".glint-live-value{min-width:4em}" +
-    ".glint-live-errors{white-space:pre-wrap;color:#c62828}";
+    ".glint-live-errors{white-space:pre-wrap;color:#c62828}" +
+    ".glint-live-choice{margin:0 0 .5em;font-size:.75rem}";
 
   var instances = [];
   var observer = null;
@@ -132,25 +134,38 @@
   Live.prototype.start = function () {
     if (this.started) return;
     this.started = true;
-    var self = this;
-    var canvas = this.canvas;
-    canvas.dataset.state = "loading";
     this.errors = element("pre", "glint-live-errors");
     this.errors.hidden = true;
     this.controls = element("div", "glint-live-controls");
-    canvas.insertAdjacentElement("afterend", this.errors);
+    this.canvas.insertAdjacentElement("afterend", this.errors);
     this.errors.insertAdjacentElement("afterend", this.controls);
-    fetch(new URL(canvas.dataset.shader, ROOT))
+    this.bindMouse();
+    this.load();
+  };
+
+  // Fetch the shader that data-shader names and compile it, in place of any shader before it.
+  Live.prototype.load = function () {
+    var self = this;
+    var path = this.canvas.dataset.shader;
+    this.canvas.dataset.state = "loading";
+    fetch(new URL(path, ROOT))
       .then(function (response) {
         if (!response.ok) throw new Error("cannot load the shader: HTTP " + response.status);
         return response.text();
       })
       .then(function (text) {
-        if (!self.lost) self.compile(text);
+        // a later choice may have been made while this one loaded: only the last one counts
+        if (!self.lost && self.canvas.dataset.shader === path) self.compile(text);
       })
       .catch(function (error) {
         self.fail(String(error.message || error));
       });
+  };
+
+  // A selector's choice: another shader on the same canvas, at the same time and mouse.
+  Live.prototype.choose = function (path) {
+    this.canvas.dataset.shader = path;
+    if (this.started && !this.lost) this.load();
   };
 
   Live.prototype.fail = function (message) {
@@ -167,6 +182,7 @@
     });
     if (!gl) return this.fail("This browser has no WebGL2.");
     this.gl = gl;
+    this.reset();
     var complete = /^\s*#version/.test(text);
     var source = complete ? text : PRELUDE + text + EPILOGUE;
     var offset = complete ? 0 : PRELUDE_LINES; // report Image-tab errors at the user's lines
@@ -177,6 +193,8 @@
     gl.attachShader(program, vertex);
     gl.attachShader(program, fragment);
     gl.linkProgram(program);
+    gl.deleteShader(vertex); // the program keeps what it needs
+    gl.deleteShader(fragment);
     if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
       return this.fail("link failed:\n" + gl.getProgramInfoLog(program));
     }
@@ -188,6 +206,18 @@
     this.buildControls();
     this.canvas.dataset.state = "ready";
     this.draw();
+  };
+
+  // Forget the shader before this one: its program, its parameters and their controls.
+  Live.prototype.reset = function () {
+    if (this.program) this.gl.deleteProgram(this.program);
+    this.program = null;
+    this.params = [];
+    this.values = {};
+    if (this.playing) this.setPlaying(false);
+    this.controls.textContent = "";
+    this.errors.textContent = "";
+    this.errors.hidden = true;
   };
 
   Live.prototype.shader = function (kind, source, offset) {
@@ -228,7 +258,6 @@
       control.input.dataset.param = param.name;
       self.controls.appendChild(control.row);
     });
-    this.bindMouse();
   };
 
   // ShaderToy's iMouse: xy the position while a button is down, zw where it went down; z and w
@@ -364,6 +393,12 @@
       if (canvas.glintLive) return;
       var live = new Live(canvas);
       canvas.glintLive = live;
+      var choice = canvas.parentElement.querySelector("select.glint-live-choice");
+      if (choice) {
+        choice.addEventListener("change", function () {
+          live.choose(choice.value);
+        });
+      }
       instances.push(live);
       if (observer) observer.observe(canvas);
       else live.start();

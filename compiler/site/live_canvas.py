@@ -5,13 +5,15 @@ Each canvas names its shader by a data attribute, relative to the site's root; t
 file of its own under `img/live/`, composed with `--target webgl2 --params-as-uniforms` so that
 the sliders set uniforms, and fetched by the script: no shader text goes into a page's HTML.
 The Getting started page shows the default scene; each variant page the scene of its picture,
-emitted again for webgl2 from the same composition (pictures.py), not composed twice.
+emitted again for webgl2 from the same composition (pictures.py), not composed twice. A slot's
+page has one canvas with a selector of its variants' shaders, and the tiers page one canvas per
+scene and tier, in tabs.
 """
 
 from __future__ import annotations
 
 import html
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from importlib import resources
 from pathlib import PurePosixPath
 
@@ -30,12 +32,30 @@ def live_path(snippet_id: str) -> PurePosixPath:
     return LIVE_DIR / f"{snippet_id}.glsl"
 
 
-def canvas_html(shader: PurePosixPath, size: tuple[int, int], label: str) -> str:
-    """The raw HTML of one canvas: its drawing size, its shader (root-relative) and its time."""
+def canvas_html(
+    shader: PurePosixPath,
+    size: tuple[int, int],
+    label: str,
+    choices: Sequence[tuple[str, PurePosixPath]] = (),
+) -> str:
+    """The raw HTML of one canvas: its drawing size, its shader (root-relative) and its time.
+    With `choices` (a name and a shader each), a selector above it swaps the shader."""
     width, height = size
+    chooser = ""
+    if choices:
+        options = "".join(
+            f'<option value="{html.escape(path.as_posix())}"'
+            f"{' selected' if path == shader else ''}>{html.escape(name)}</option>"
+            for name, path in choices
+        )
+        chooser = (
+            f'<select class="glint-live-choice" aria-label="{html.escape(label)}: shader">'
+            f"{options}</select>\n"
+        )
     return (
         '<div class="glint-live">\n'
-        f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
+        + chooser
+        + f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
         f'data-shader="{html.escape(shader.as_posix())}" data-time="{TIME:g}" '
         f'aria-label="{html.escape(label)}"></canvas>\n'
         "</div>\n"
@@ -53,6 +73,25 @@ def live_section(snippet_id: str, picture: Picture | None) -> str:
         "`--target webgl2 --params-as-uniforms`: press Play, scrub the time, drag on it for "
         "`iMouse`, or move a parameter's slider.\n\n"
         + canvas_html(live_path(snippet_id), VARIANT_SIZE, f"{snippet_id}, live")
+        + "\n"
+    )
+
+
+def slot_live_section(
+    slot: str, ids: Sequence[str], pictures: Mapping[str, Picture], first: str | None
+) -> str:
+    """A slot page's Live section: one canvas and a selector of the variants that have a live
+    shader, starting on `first` (the reference tier's variant) where it has one."""
+    choices = [(id_, live_path(id_)) for id_ in ids if id_ in pictures and pictures[id_].live]
+    if not choices:
+        return ""
+    start = live_path(first) if first is not None and first in dict(choices) else choices[0][1]
+    return (
+        "## Live\n\n"
+        "Each variant's picture shader running in your browser (WebGL2): pick a variant to "
+        "swap it in; Play, the time slider, a drag for `iMouse` and the parameter sliders work "
+        "as on the variant pages.\n\n"
+        + canvas_html(start, VARIANT_SIZE, f"slot {slot}, live", choices)
         + "\n"
     )
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import logging
+import textwrap
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
@@ -69,17 +70,31 @@ def scene_pages(
                 renders[(scene.stem, tier)] = path
                 pixels[(scene.stem, tier)] = png_pixels(png)
     live: dict[str, PurePosixPath] = {}
+    live_tiers: dict[tuple[str, str], PurePosixPath] = {}
     for scene in example_scenes():
-        try:
-            shader = glint.compose(scene, target="webgl2", params_as_uniforms=True)
-        except glint.InputError as error:
-            log.warning("site: no live canvas for %s: %s", scene.name, error)
-            continue
-        live[scene.stem] = LIVE_DIR / f"scene-{scene.stem}.glsl"
-        out.files[live[scene.stem]] = shader.text.encode("utf-8")
+        # the scene as written (its own tier), then at every tier for the tiers page's tabs
+        for tier in (None, *TIERS):
+            path = LIVE_DIR / f"scene-{scene.stem}{'-' + tier if tier else ''}.glsl"
+            shader = _live_shader(scene, tier)
+            if shader is None:
+                continue
+            out.files[path] = shader.encode("utf-8")
+            if tier is None:
+                live[scene.stem] = path
+            else:
+                live_tiers[(scene.stem, tier)] = path
     out.pages[SCENES_PAGE] = scene_reference_page(renders, live)
-    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, load_bench(source).tiers)
+    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, load_bench(source).tiers, live_tiers)
     return out
+
+
+def _live_shader(scene: Path, tier: str | None) -> str | None:
+    """The scene for a live canvas (webgl2, parameters as uniforms), at `tier` when given."""
+    try:
+        return glint.compose(scene, tier=tier, target="webgl2", params_as_uniforms=True).text
+    except glint.InputError as error:
+        log.warning("site: no live canvas for %s at %s: %s", scene.name, tier or "its tier", error)
+        return None
 
 
 def _render(scene: Path, tier: str, cache_dir: Path) -> bytes | None:
@@ -210,7 +225,11 @@ def tiers_page(
     renders: Mapping[tuple[str, str], PurePosixPath],
     pixels: Mapping[tuple[str, str], np.ndarray],
     bench: Mapping[tuple[str, str], Mapping[str, Any]],
+    live: Mapping[tuple[str, str], PurePosixPath] | None = None,
 ) -> str:
+    """The slot-by-tier table, then per example scene its pictures at every tier with FLIP and
+    frame time, and its live canvases (by scene stem and tier, in `live`) in one tab per tier."""
+    live = live or {}
     table_ = tier_table()
     slots = sorted({slot for tier in TIERS for slot in table_.get(tier, {})})
     rows = []
@@ -247,4 +266,18 @@ def tiers_page(
             ms = f"{measured['frame_ms']:.2f} ms" if measured else "–"
             cells.append([code(tier), shown, flip, ms])
         parts.append(table(["tier", "picture", "FLIP vs reference", "frame time"], cells) + "\n")
+        parts.append(_live_tabs(scene.stem, live))
     return "".join(parts)
+
+
+def _live_tabs(stem: str, live: Mapping[tuple[str, str], PurePosixPath]) -> str:
+    """One tab per tier, each with the scene at that tier running live (a canvas starts only
+    when its tab is shown: live-canvas.js starts canvases as they come into view)."""
+    tabs = []
+    for tier in TIERS:
+        if (stem, tier) in live:
+            canvas = canvas_html(live[(stem, tier)], LIVE_SIZE, f"the {stem} scene at {tier}, live")
+            tabs.append(f'=== "{tier}"\n\n' + textwrap.indent(canvas, "    ") + "\n")
+    if not tabs:
+        return ""
+    return "Live, one tab per tier:\n\n" + "".join(tabs)

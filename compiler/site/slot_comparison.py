@@ -1,6 +1,7 @@
 """What a slot's page shows of its variants side by side: each variant's picture with its FLIP
 error image against the variant the reference tier takes for the slot, the slot's cost/error
-chart with its front marked, and its rows of the bench table.
+chart with its front marked, its rows of the bench table, and one live canvas with a selector
+of the variants (live_canvas.py).
 
 Every variant of a slot is shown in the same scene (pictures.scene_using), so their pictures
 compare pixel for pixel. The chart is drawn with matplotlib from the bench report and cached
@@ -23,6 +24,7 @@ from glint.compiler.catalog.tiers import tier_choice, tier_table
 from glint.compiler.files import write_atomic
 from glint.compiler.render.images import flip_image, png_bytes, png_pixels
 
+from .live_canvas import slot_live_section
 from .markdown import cell, code, table
 from .measured import Bench, figure_png, pyplot
 from .pictures import Picture
@@ -57,15 +59,15 @@ def slot_comparisons(
     tiers = tier_table()
     result = SlotComparisons()
     for slot, ids in slots.items():
-        parts: list[str] = []
         reference = reference_variant(slot, tiers)
-        flips = _flip_table(ids, reference, pictures, picture_files, result)
-        if flips:
-            parts.append(flips)
+        parts = [
+            _flip_table(ids, reference, pictures, picture_files, result),
+            slot_live_section(slot, ids, pictures, reference),
+        ]
         rows = [bench.variants[i] for i in ids if i in bench.variants]
         if rows:
             parts.append(_bench_section(slot, rows, bench.machine, cache_dir, result))
-        if parts:
+        if any(parts):
             result.sections[slot] = "".join(parts)
     return result
 
