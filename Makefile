@@ -69,8 +69,9 @@ site: setup system-site $(VENV)/.installed-site
 	$(BIN)/mkdocs build --strict -f mkdocs.yml -d $(BUILD)/site
 	@echo "site: $(BUILD)/site/index.html"
 
+# Instant navigation needs site_url (mkdocs.yml): mkdocs serve's own address, unless set.
 serve: setup system-site $(VENV)/.installed-site
-	$(BIN)/mkdocs serve -f mkdocs.yml
+	GLINT_SITE_URL=$${GLINT_SITE_URL:-http://127.0.0.1:8000/} $(BIN)/mkdocs serve -f mkdocs.yml
 
 # The picture in the README: D.ggx's page of the site just built, in headless Chromium.
 screenshot: site system-test

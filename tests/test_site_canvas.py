@@ -246,3 +246,36 @@ def test_the_tiers_page_runs_a_tier_when_its_tab_is_opened(
     _drawn(page, selector)
     assert _pixels(page, selector).mean() > 0.05, "the reference tier's canvas is black"
     _no_problems(log)
+
+
+def test_a_drag_orbits_the_camera_and_play_runs_the_clock(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    page, log = browser_page
+    page.goto(live_site.url)
+    state = _drawn(page)
+    before = _pixels(page)
+    box = page.locator("canvas.glint-live-canvas").bounding_box()
+    assert box is not None
+    x, y = box["x"] + box["width"] * 0.8, box["y"] + box["height"] * 0.3
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(x - box["width"] * 0.3, y + 5, steps=4)
+    page.mouse.up()
+    page.wait_for_function(
+        f"Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > "
+        f"{int(state['frames']) + 2}"
+    )
+    dragged = _pixels(page)
+    assert np.abs(dragged - before).mean() > 0.01, "the drag did not move the camera"
+    # Play: frames keep coming and the time slider moves on its own
+    time_before = float(page.input_value(".glint-live-slider input"))
+    page.click(".glint-live-play")
+    frames = int(page.get_attribute("canvas.glint-live-canvas", "data-frames") or "0")
+    page.wait_for_function(
+        f"Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > {frames + 3}",
+        timeout=60_000,
+    )
+    page.click(".glint-live-play")  # pause
+    assert float(page.input_value(".glint-live-slider input")) != time_before
+    _no_problems(log)

@@ -29,6 +29,7 @@ PROBE_PRELUDE = (
     "precision highp int;\n"
     "uniform vec3 iResolution;\n"
     "uniform float iTime;\n"  # read by camera.orbit; 0 in a probe
+    "uniform vec4 iMouse;\n"  # read by camera.orbit; 0 in a probe
     "uniform highp sampler2D iChannel0;\n"
     "uniform highp sampler2D iChannel1;\n"
     "uniform highp sampler2D iChannel2;\n"

@@ -18,7 +18,7 @@
 //   specocc.power               Specular occlusion from AO: clamp((NoV + ao)^a − 1 + ao)
 //   env.gradient                Environment as a vertical gradient from ENV_BOTTOM (down) to ENV_TOP (up)
 //   ibl.env_brdf_approx         Environment along the mirror direction times Karis's analytic split-sum fit f0·A + B, with specular occlusion
-//   camera.orbit                Pinhole camera orbiting CAMERA_TARGET with iTime, looking at it
+//   camera.orbit                Pinhole camera orbiting CAMERA_TARGET with iTime, or where a mouse drag puts it, looking at it
 //   background.gradient_sun     The environment gradient plus a glow and a disc around the sun
 //   tonemap.reinhard            Reinhard tone map, c / (c + 1) per channel
 //   output.gamma22              Display encoding with a pure 2.2 gamma
@@ -252,10 +252,17 @@ vec3 environmentLight(Surface s, float ao) {
 
 // source: snippets/camera/orbit.glsl:11
 // Screen coordinates span [-1, 1] vertically; CAMERA_FOCAL is the distance to that screen.
+// A mouse drag orbits: ShaderToy keeps iMouse.xy where the button was last held and gives 0
+// before any drag, so a render (no mouse) follows iTime and the picture does not change.
 void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
     float angle = iTime * CAMERA_SPEED;
-    ro = CAMERA_TARGET + vec3(CAMERA_RADIUS * cos(angle), CAMERA_HEIGHT, CAMERA_RADIUS * sin(angle));
+    float height = CAMERA_HEIGHT;
+    if (iMouse.x > 0.0 || iMouse.y > 0.0) {
+        angle = 6.28318531 * iMouse.x / iResolution.x;
+        height = 2.0 * CAMERA_HEIGHT * iMouse.y / iResolution.y;
+    }
+    ro = CAMERA_TARGET + vec3(CAMERA_RADIUS * cos(angle), height, CAMERA_RADIUS * sin(angle));
     vec3 ww = normalize(CAMERA_TARGET - ro);
     vec3 uu = normalize(cross(ww, vec3(0.0, 1.0, 0.0)));
     vec3 vv = cross(uu, ww);
