@@ -336,3 +336,27 @@ def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Pa
         "![the default scene](img/scenes/default-balanced.png)"
         in built.pages[PurePosixPath("scenes.md")]
     )
+
+
+def test_a_variant_measured_on_samples_is_plotted_as_the_bench_measures_it(
+    tmp_path: Path,
+) -> None:
+    """AO is measured on points of its reference scenes, not a grid of inputs: its page plots
+    each sample's GLSL output against the reference, and the worst error it plots is the one
+    the bench reported (same samples, same GPU path)."""
+    pytest.importorskip("PIL.Image")
+    from glint.compiler.site.measured import load_bench, sample_errors, variant_accuracy
+
+    bench = load_bench(ROOT / "site" / "docs")
+    built = variant_accuracy(["ao.sdf3"], bench, tmp_path)
+    accuracy = built.by_id["ao.sdf3"]
+    assert accuracy.plot_kind == "samples" and accuracy.plot in built.files
+    section = accuracy_section("ao.sdf3", accuracy, bench.machine)
+    assert "Measured on the bench's samples" in section
+    measured = sample_errors(load_catalog().get("ao.sdf3"))
+    assert measured is not None and measured.value is not None and measured.truth is not None
+    row = bench.variants["ao.sdf3"]
+    assert len(measured.error) == row["samples"]
+    assert float(measured.error.max()) == pytest.approx(row["max_abs"], rel=1e-3, abs=1e-4)
+    # a variant whose error comes from a render, not probes, gets no sample plot
+    assert sample_errors(load_catalog().get("normal.derivative_flat")) is None

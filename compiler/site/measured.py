@@ -5,6 +5,8 @@
   machine it ran on, next to the error budget of the snippet's front matter;
 - a plot of the snippet's own GLSL output, run on the GPU over its domain, against the
   reference for a few parameter values, and of the error over the domain with its worst point;
+  for a variant measured on sampled rays, points or scenes (shadows, AO, normals, subsurface)
+  instead, its output against the reference sample by sample and the spread of its errors;
 - whether it survives half precision, from the evaluator run at float16, float32 and float64.
 
 Plots and precision results are cached by a hash of what they depend on (the snippet's code
@@ -42,7 +44,7 @@ log = logging.getLogger(__name__)
 
 BENCH_JSON = PurePosixPath("bench") / "bench.json"  # under the docs source folder
 PLOT_DIR = PurePosixPath("img") / "accuracy"
-PLOT_VERSION = "1"  # bump when the plot's look changes, so cached plots are redrawn
+PLOT_VERSION = "2"  # bump when the plot's look changes, so cached plots are redrawn
 SLICES = 3  # curves per plot: the second axis at its ends and middle
 
 
@@ -64,6 +66,7 @@ class Accuracy:
     budget: dict[str, float] = field(default_factory=dict)  # the front matter's error_budget
     precision: dict[str, dict[str, Any]] | None = None  # precision_report, where it runs
     plot: PurePosixPath | None = None  # under the docs folder
+    plot_kind: str = ""  # "domain" (over a grid of its inputs) or "samples" (rays and points)
 
 
 @dataclass
@@ -116,18 +119,18 @@ def _computed(
     if cached.is_file():
         data = json.loads(cached.read_text(encoding="utf-8"))
     else:
-        png = _plot(snippet)
-        data = {"precision": _precision(snippet), "plot": png is not None}
+        drawn = _plot(snippet)
+        data = {"precision": _precision(snippet), "plot": drawn[1] if drawn else ""}
         cache_dir.mkdir(parents=True, exist_ok=True)
-        if png is not None:
-            write_atomic(picture, png)
+        if drawn is not None:
+            write_atomic(picture, drawn[0])
         write_atomic(cached, json.dumps(data, sort_keys=True).encode("utf-8"))
         build.computed += 1
     plot = None
     if data["plot"] and picture.is_file():
         plot = PLOT_DIR / f"{snippet.id}.png"
         build.files[plot] = picture.read_bytes()
-    return Accuracy(accuracy.measured, accuracy.budget, data["precision"], plot)
+    return Accuracy(accuracy.measured, accuracy.budget, data["precision"], plot, data["plot"])
 
 
 def _cache_key(snippet: Snippet) -> str:
@@ -180,10 +183,20 @@ def _domain_set(snippet: Snippet) -> tuple[ProbeSet, list[str], list[np.ndarray]
     return case, names, axes
 
 
-def _plot(snippet: Snippet) -> bytes | None:
+def _plot(snippet: Snippet) -> tuple[bytes, str] | None:
+    """The PNG and its kind: "domain" (`_domain_plot`) for a variant measured on a grid of its
+    domain, "samples" (`_sample_plot`) for one measured on rays and points; None where the bench
+    measures no error of it."""
+    domain = _domain_plot(snippet)
+    if domain is not None:
+        return domain, "domain"
+    samples = _sample_plot(snippet)
+    return (samples, "samples") if samples is not None else None
+
+
+def _domain_plot(snippet: Snippet) -> bytes | None:
     """Two panels: output against reference along the first axis for a few values of the
-    second; the error over the first two axes with its worst point. None where there is no
-    domain to plot."""
+    second; the error over the first two axes with its worst point."""
     found = _domain_set(snippet)
     if found is None:
         return None
@@ -209,6 +222,94 @@ def _plot(snippet: Snippet) -> bytes | None:
         [axes[i] for i in order],
         *(np.transpose(a, order) for a in (value, truth, error)),
     )
+
+
+@dataclass(frozen=True)
+class SampleErrors:
+    """A variant run on the bench's sample sets: per sample its error (in `unit`), and, where
+    the error is a difference of values (not an angle), its output and the reference's."""
+
+    reference: str
+    unit: str
+    error: np.ndarray
+    value: np.ndarray | None = None
+    truth: np.ndarray | None = None
+
+
+def sample_errors(snippet: Snippet) -> SampleErrors | None:
+    """The variant's GLSL run on the GPU over the bench's sample sets (rays and points in its
+    reference scenes), as the bench runs it; None where the bench measures no error of it on
+    probes (only its cost, or errors taken from a render)."""
+    try:
+        plan = plan_for(snippet)
+    except glint.InputError:
+        return None
+    cases = [case for case in plan.sets if case.exact is not None]
+    if plan.reference is None or not cases:
+        return None
+    catalog = load_catalog()
+    values, truths, errors = [], [], []
+    for case in cases:
+        try:
+            gpu = np.asarray(run_probe(snippet.id, case.inputs, catalog, case.scene_stub))
+        except glint.InputError as error:
+            log.warning("site: no accuracy plot for %s: %s", snippet.id, error)
+            return None
+        error = set_errors(case, gpu)
+        errors.append(error if error.ndim == 1 else error.max(axis=1))
+        if case.metric == "abs":  # a value to set against the reference (not an angle)
+            exact = np.asarray(case.exact, np.float64)
+            values.append(gpu if gpu.ndim == 1 else gpu[:, 0])
+            truths.append(exact if exact.ndim == 1 else exact[:, 0])
+    return SampleErrors(
+        plan.reference,
+        plan.unit,
+        np.concatenate(errors),
+        np.concatenate(values) if values else None,
+        np.concatenate(truths) if truths else None,
+    )
+
+
+def _sample_plot(snippet: Snippet) -> bytes | None:
+    """Its output against the reference sample by sample, and the share of samples under
+    each error, with the worst."""
+    measured = sample_errors(snippet)
+    return _sample_figure(snippet, measured) if measured is not None else None
+
+
+def _sample_figure(snippet: Snippet, measured: SampleErrors) -> bytes:
+    value, truth, error, unit = measured.value, measured.truth, measured.error, measured.unit
+    plt = pyplot()
+    fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.0), dpi=100, layout="constrained")
+    if value is not None and truth is not None:
+        left.scatter(truth, value, s=3, alpha=0.3, color="C0", linewidths=0)
+        low, high = float(np.nanmin(truth)), float(np.nanmax(truth))
+        left.plot([low, high], [low, high], color="k", linestyle="--", linewidth=1,
+                  label="equal to the reference")  # fmt: skip
+        left.set_xlabel(f"float64 reference ({unit})")
+        left.set_ylabel("GLSL (GPU, float32)")
+        left.legend(fontsize=7)
+    finite = np.sort(np.where(np.isfinite(error), error, np.inf))
+    worst = float(finite[-1])
+    # Errors a millionth of the worst and below (exact samples among them) sit at the left edge.
+    floor = max(worst * 1e-6, 1e-12) if np.isfinite(worst) and worst > 0 else 1e-12
+    shown = np.maximum(finite, floor)
+    counted = shown[np.isfinite(shown)]
+    if (value is None or truth is None) and counted.size:  # an angle: its spread, not values
+        bins = np.geomspace(floor, max(float(counted.max()), floor * 10), 40)
+        left.hist(counted, bins=bins, color="C0")
+        left.set_xscale("log")
+        left.set_xlabel(f"|error| ({unit})")
+        left.set_ylabel("samples")
+    left.set_title(f"{snippet.id} against {measured.reference}, per sample", fontsize=9)
+    share = np.arange(1, len(finite) + 1) / len(finite)
+    right.plot(shown, share, color="C3")
+    right.set_xscale("log")
+    right.plot(max(worst, floor), 1.0, "kx", markersize=8)
+    right.set_xlabel(f"|error| ({unit}); at most {floor:.2g} at the left edge")
+    right.set_ylabel("share of samples at most this")
+    right.set_title(f"{len(finite)} samples, worst {worst:.3g} (x)", fontsize=9)
+    return figure_png(fig)
 
 
 def _liveliest_axis(truth: np.ndarray) -> int:
@@ -302,7 +403,17 @@ def accuracy_section(snippet_id: str, accuracy: Accuracy | None, machine: str) -
     row = accuracy.measured
     if row is not None:
         parts.append(_measured_table(row, accuracy.budget, machine))
-    if accuracy.plot is not None:
+    if accuracy.plot is not None and accuracy.plot_kind == "samples":
+        parts.append(
+            f"\n![{snippet_id}: its GLSL against the float64 reference, sample by sample, and "
+            f"the spread of its errors](../{accuracy.plot.as_posix()})\n\n"
+            "Measured on the bench's samples (rays and points in its reference scenes) rather "
+            "than a grid of inputs. Left: the snippet's own GLSL, run on the GPU in float32, "
+            "against its float64 reference for each sample (on the dashed line where they "
+            "agree); for an angle, how many samples have each error. Right: the share of "
+            "samples within each error; the cross marks the worst.\n"
+        )
+    elif accuracy.plot is not None:
         parts.append(
             f"\n![{snippet_id}: its GLSL against the float64 reference, and the error over "
             f"its domain](../{accuracy.plot.as_posix()})\n\n"
