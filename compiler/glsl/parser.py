@@ -478,6 +478,8 @@ class _FastParser:
     def _lex(self, text: str) -> list[Token] | None:
         """lark's basic lexer: the same matches, types and positions."""
         ignore, newlines, keywords = self._ignore, self._newlines, self._keywords
+        # `Token(...)` checks its keyword arguments for a deprecated name, then calls this
+        new_token = getattr(Token, "_future_new", Token)
         tokens: list[Token] = []
         line, line_start, pos = 1, 0, 0
         for match in self._scan(text):
@@ -493,10 +495,11 @@ class _FastParser:
                     line_start = start + value.rindex("\n") + 1
             if kind in ignore:
                 continue
-            tok = Token(kind, value, start, first_line, column, line, pos - line_start + 1, pos)  # type: ignore[arg-type]
             if kind in keywords:
-                tok.type = keywords[kind].get(value, kind)
-            tokens.append(tok)
+                kind = keywords[kind].get(value, kind)
+            tokens.append(
+                new_token(kind, value, start, first_line, column, line, pos - line_start + 1, pos)
+            )
         return tokens if pos == len(text) else None
 
     def _run(self, tokens: list[Token]) -> Tree | None:
