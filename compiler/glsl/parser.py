@@ -7,15 +7,20 @@ syntax errors at the original file:line.
 
 from __future__ import annotations
 
+import contextlib
 import functools
+import gc
 import operator
-from collections import deque
-from collections.abc import Iterator
+import re
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+from lark.grammar import Rule
 from lark.lark import PostLex
+from lark.parsers.lalr_analysis import Shift
+from lark.tree import Meta
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl.keywords import BUILTIN_TYPES, QUALIFIER_GROUPS, RESERVED_WORDS, words
@@ -71,7 +76,20 @@ class _TypeNamePostLex(PostLex):
     always_accept = ()
 
     def process(self, stream: Iterator[Token]) -> Iterator[Token]:
-        return _Retyper(stream).run()
+        # The retyper looks ahead, so it takes the whole token list; a lexer error is raised
+        # after the tokens before it, where the parser would have met it.
+        tokens: list[Token] = []
+        error: UnexpectedInput | None = None
+        try:
+            tokens.extend(stream)
+        except UnexpectedInput as exc:
+            error = exc
+        retyper = _Retyper(tokens)
+        for index, tok in enumerate(tokens):
+            retyper.retype(index, tok)
+            yield tok
+        if error is not None:
+            raise error
 
 
 # How far to look past an unknown name's `[...]` for the identifier that makes it a type.
@@ -106,12 +124,13 @@ class _Retyper:
     A name declared nowhere in this source (a struct from another snippet or from ShaderToy's
     Common tab) is a type where only a type can be: before another identifier (`Material m`),
     before `[...]` and an identifier (`Material[2] ms`), at the start of a parameter (also
-    an unnamed one) or of a struct member. It is then remembered as a global type."""
+    an unnamed one) or of a struct member. It is then remembered as a global type.
 
-    def __init__(self, stream: Iterator[Token]) -> None:
-        self.stream = iter(stream)
-        self.buffer: deque[Token] = deque()
-        self.error: BaseException | None = None  # a lexer error met while looking ahead
+    `retype` is called for each token of `tokens` in order (it looks ahead in the list)."""
+
+    def __init__(self, tokens: list[Token]) -> None:
+        self.tokens = tokens
+        self.ahead = 0  # index of the token after the one being retyped
         self.frames: list[_Frame] = [_Frame("block")]
         self.prev: Token | None = None
         self.after_type = False  # the next identifier, outside brackets, is a declarator
@@ -125,50 +144,19 @@ class _Retyper:
         self.carried: dict[str, bool] | None = None  # names of a `(...)` just closed
         self.parens = 0
 
-    # -- the token stream with lookahead ----------------------------------------------------
-
-    def _fill(self, count: int) -> bool:
-        """Have at least `count` tokens buffered; False at the end (or at a lexer error,
-        which is raised once the tokens before it are consumed)."""
-        while len(self.buffer) < count:
-            if self.error is not None:
-                return False
-            try:
-                tok = next(self.stream)
-            except StopIteration:
-                return False
-            except UnexpectedInput as exc:
-                self.error = exc
-                return False
-            self.buffer.append(tok)
-        return True
+    def retype(self, index: int, tok: Token) -> None:
+        """Retype `tok`, the token at `index`; raises _ReservedWord for a reserved word."""
+        self.ahead = index + 1
+        if tok.type == "IDENTIFIER":
+            self._identifier(tok)
+        else:
+            self._other(tok)
+        self.prev = tok
 
     def _peek(self, index: int) -> Token | None:
-        return self.buffer[index] if self._fill(index + 1) else None
-
-    def run(self) -> Iterator[Token]:
-        buffer, stream = self.buffer, self.stream
-        while True:  # _fill(1) inlined: this loop runs once per token of every file
-            if buffer:
-                tok = buffer.popleft()
-            elif self.error is not None:
-                break
-            else:
-                try:
-                    tok = next(stream)
-                except StopIteration:
-                    break
-                except UnexpectedInput as exc:
-                    self.error = exc
-                    break
-            if tok.type == "IDENTIFIER":
-                self._identifier(tok)
-            else:
-                self._other(tok)
-            self.prev = tok
-            yield tok
-        if self.error is not None:
-            raise self.error
+        """The token `index` places after the one being retyped, None past the end."""
+        index += self.ahead
+        return self.tokens[index] if index < len(self.tokens) else None
 
     # -- scopes -----------------------------------------------------------------------------
 
@@ -405,18 +393,295 @@ def _pass_unit_rules_through(parser: Lark) -> None:
     if not isinstance(table, dict):
         return
     for rule in table:
-        options = getattr(rule, "options", None)
-        if rule.alias or options is None or not options.expand1 or len(rule.expansion) != 1:
-            continue
-        symbol = rule.expansion[0]
-        if symbol.name.startswith("_") or getattr(symbol, "filter_out", False):
-            continue  # inlined into its parent, or a token lark drops: not one child
-        table[rule] = operator.itemgetter(0)
+        if _is_unit_rule(rule):
+            table[rule] = operator.itemgetter(0)
+
+
+def _is_unit_rule(rule: Rule) -> bool:
+    """A `?rule: symbol` alternative that hands its one child on as it is."""
+    options = getattr(rule, "options", None)
+    if rule.alias or options is None or not options.expand1 or len(rule.expansion) != 1:
+        return False
+    symbol = rule.expansion[0]
+    # inlined into its parent, or a token lark drops: not one child
+    return not (symbol.name.startswith("_") or getattr(symbol, "filter_out", False))
+
+
+# A value on the parser's stack, and what a reduction does with the values it pops.
+_Value = Tree | Token
+_Build = Callable[[list[_Value]], _Value]
+
+
+class _FastParser:
+    """The parser of `glsl_parser()` without lark's machinery around it: the same terminals,
+    LALR table, rules and tree shaping, run by one tight loop each (lexing, `_Retyper`, LALR).
+
+    lark spends most of a parse in its generality: a generator per token, three wrapper calls
+    per reduction (child filter, single-child expansion, position propagation), `getattr`
+    with defaults for every position. Here each rule gets one closure (`_builder`) doing
+    what those wrappers do, and unit rules (`_is_unit_rule`) only change the parser state.
+
+    `parse` returns None where it cannot parse; `parse()` then runs lark itself, which
+    raises the error with all its details (errors are rare, so they may be slow).
+    tests/glsl/test_fast_parser.py checks the trees against plain lark's, positions included.
+    """
+
+    def __init__(self, lark: Lark) -> None:
+        lexer = lark.parser.lexer.lexer  # lark's BasicLexer, under the postlexer
+        terminals = lexer.scanner.terminals  # in lark's order: the first that matches wins
+        self._scan = re.compile(
+            "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in terminals),
+            lexer.g_regex_flags,
+        ).finditer
+        self._ignore: frozenset[str] = lexer.ignore_types
+        self._newlines: frozenset[str] = lexer.newline_types
+        # lark retypes a terminal's match that is one of the keywords it hides (IDENTIFIER
+        # `if` is IF) with a second regex; a literal keyword is a dict lookup
+        self._keywords: dict[str, dict[str, str]] = {}
+        for name, callback in lexer.callback.items():
+            words = callback.scanner.terminals
+            if not all(w.pattern.type == "str" and not w.pattern.flags for w in words):
+                raise TypeError(f"lexer callback for {name} is not keywords")
+            self._keywords[name] = {w.pattern.value: w.name for w in words}
+
+        parser = lark.parser.parser.parser
+        table = parser.parse_table
+        self._start: int = table.start_states["start"]
+        self._end: int = table.end_states["start"]
+        shape = lark.options.transformer
+        reductions = {rule: (len(rule.expansion), str(rule.origin.name), _builder(rule, shape))
+                      for rule in parser.callbacks}  # fmt: skip
+        # per state: terminal -> the state to shift to, or (size, rule name, build) to
+        # reduce by; rule name -> the state to go to after that reduction. lark names rules
+        # with Tokens, whose `==` runs in Python: the keys are plain strings.
+        self._table: list[dict[str, int | tuple[int, str, _Build | None]]] = [
+            {} for _ in range(max(table.states) + 1)
+        ]
+        self._units: dict[tuple[int, str, str], int] = {}
+        for state, actions in table.states.items():
+            for symbol, (action, arg) in actions.items():
+                self._table[state][str(symbol)] = arg if action is Shift else reductions[arg]
+
+    def parse(self, text: str) -> Tree | None:
+        with _no_cycle_collection():
+            tokens = self._lex(text)
+            if tokens is None:
+                return None
+            retyper = _Retyper(tokens)
+            try:
+                for index, tok in enumerate(tokens):
+                    retyper.retype(index, tok)
+            except _ReservedWord:
+                return None
+            return self._run(tokens)
+
+    def _lex(self, text: str) -> list[Token] | None:
+        """lark's basic lexer: the same matches, types and positions."""
+        ignore, newlines, keywords = self._ignore, self._newlines, self._keywords
+        # `Token(...)` checks its keyword arguments for a deprecated name, then calls this
+        new_token = getattr(Token, "_future_new", Token)
+        tokens: list[Token] = []
+        line, line_start, pos = 1, 0, 0
+        for match in self._scan(text):
+            start = match.start()
+            if start != pos:
+                return None  # a character no terminal matches
+            kind, value, pos = match.lastgroup, match.group(), match.end()
+            first_line, column = line, start - line_start + 1
+            if kind in newlines:
+                count = value.count("\n")
+                if count:
+                    line += count
+                    line_start = start + value.rindex("\n") + 1
+            if kind in ignore:
+                continue
+            if kind in keywords:
+                kind = keywords[kind].get(value, kind)
+            tokens.append(
+                new_token(kind, value, start, first_line, column, line, pos - line_start + 1, pos)
+            )
+        return tokens if pos == len(text) else None
+
+    def _run(self, tokens: list[Token]) -> Tree | None:
+        """lark's LALR loop (`ParserState.feed_token`) over the tokens and `$END`."""
+        table, end, units = self._table, self._end, self._units
+        states = [self._start]
+        values: list[_Value] = []
+        for kind, tok in [(t.type, t) for t in tokens] + [("$END", None)]:
+            while True:
+                action = table[states[-1]].get(kind)
+                if action is None:
+                    return None
+                if action.__class__ is int:
+                    if tok is None:
+                        return None  # lark does not shift `$END`
+                    states.append(action)  # type: ignore[arg-type]
+                    values.append(tok)
+                    break
+                size, origin, build = action  # type: ignore[misc]
+                if build is None:  # unit rules: the child stays the value, the state changes
+                    key = (states[-2], origin, kind)
+                    state = units.get(key)
+                    if state is None:
+                        state = units[key] = self._after_units(*key)
+                    states[-1] = state
+                else:
+                    if size:
+                        children = values[-size:]
+                        del values[-size:]
+                        del states[-size:]
+                    else:
+                        children = []
+                    values.append(build(children))
+                    states.append(table[states[-1]][origin])  # type: ignore[arg-type]
+                if tok is None and states[-1] == end:
+                    return values[-1]  # type: ignore[return-value]
+        return None
+
+    def _after_units(self, below: int, origin: str, kind: str) -> int:
+        """The state after a unit rule's reduction to `origin` over state `below`, and after
+        the unit reductions that follow it at the lookahead `kind`. Unit reductions only
+        replace the top state, so that depends on these three alone: `_units` caches it."""
+        state = self._table[below][origin]
+        while state != self._end:
+            action = self._table[state].get(kind)
+            if action.__class__ is int or action is None or action[2] is not None:  # type: ignore[index]
+                break
+            state = self._table[below][action[1]]  # type: ignore[index,assignment]
+        return state  # type: ignore[return-value]
+
+
+def _builder(rule: Rule, shape: object) -> _Build | None:
+    """What lark's tree builder does for a reduction by `rule` (None for a unit rule):
+    drop filtered tokens, splice in the children of inlined `_rules`, hand on a single child
+    of a `?rule`, call the transformer's method or build a `Tree`, and propagate positions
+    (`PropagatePositions`: a node spans from its first child's container to its last's)."""
+    if _is_unit_rule(rule):
+        return None
+    options = rule.options
+    name = str(rule.alias or options.template_source or rule.origin.name)
+    make: Callable[[list[_Value]], _Value] | None = getattr(shape, name, None)
+    expand1 = options.expand1 and not rule.alias
+    keep = _keeper(rule)
+    if not expand1 and make is None:  # most rules: always a new node
+
+        def build_node(children: list[_Value]) -> _Value:
+            meta = Meta()
+            _propagate(meta, children, True)
+            return Tree(name, children if keep is None else keep(children), meta)
+
+        return build_node
+
+    def build(children: list[_Value]) -> _Value:
+        nodes = children if keep is None else keep(children)
+        node = (
+            nodes[0]
+            if expand1 and len(nodes) == 1
+            else make(nodes)
+            if make
+            else Tree(name, nodes, Meta())
+        )
+        if isinstance(node, Tree):
+            _propagate(node.meta, children, not hasattr(node.meta, "line"))
+        return node
+
+    return build
+
+
+def _keeper(rule: Rule) -> Callable[[list[_Value]], list[_Value]] | None:
+    """lark's child filter for `rule`: the children a node keeps (None: all of them), the
+    tokens it drops left out and the children of inlined `_rules` spliced in."""
+    include = [
+        (index, not symbol.is_term and symbol.name.startswith("_"))
+        for index, symbol in enumerate(rule.expansion)
+        if rule.options.keep_all_tokens or not (symbol.is_term and symbol.filter_out)
+    ]
+    if not any(inline for _, inline in include):
+        if len(include) == len(rule.expansion):
+            return None
+        indices = [index for index, _ in include]
+        if indices == list(range(indices[0], indices[-1] + 1)) if indices else True:
+            return operator.itemgetter(slice(indices[0], indices[-1] + 1) if indices else slice(0))
+
+    def keep(children: list[_Value]) -> list[_Value]:
+        kept: list[_Value] = []
+        for index, inline in include:
+            if not inline:
+                kept.append(children[index])
+            elif kept:
+                kept += children[index].children  # type: ignore[union-attr]
+            else:  # lark's shortcut for left recursion: reuse the list
+                kept = children[index].children  # type: ignore[union-attr]
+        return kept
+
+    return keep
+
+
+def _propagate(meta: Meta, children: list[_Value], new: bool) -> None:
+    """lark's `PropagatePositions`, on a `new` node or on one handed on (which keeps its
+    own span, and only takes the container's). Every non-empty node's meta has container
+    positions (this function or `_nest` set them): they are read without `getattr` defaults."""
+    for child in children:
+        if isinstance(child, Token):
+            line, column, start_pos = child.line, child.column, child.start_pos
+            break
+        first = child.meta
+        if not first.empty:
+            line, column = first.container_line, first.container_column
+            start_pos = first.container_start_pos
+            break
+    else:
+        return  # no child takes up space: neither does the node
+    for child in reversed(children):
+        if isinstance(child, Token):
+            end_line, end_column, end_pos = child.end_line, child.end_column, child.end_pos
+            break
+        last = child.meta
+        if not last.empty:
+            end_line, end_column = last.container_end_line, last.container_end_column
+            end_pos = last.container_end_pos
+            break
+    if new:
+        meta.line, meta.column, meta.start_pos = line, column, start_pos
+        meta.end_line, meta.end_column, meta.end_pos = end_line, end_column, end_pos
+        meta.empty = False
+    meta.container_line, meta.container_column = line, column
+    meta.container_start_pos = start_pos
+    meta.container_end_line, meta.container_end_column = end_line, end_column
+    meta.container_end_pos = end_pos
+
+
+@contextlib.contextmanager
+def _no_cycle_collection() -> Iterator[None]:
+    """Pause Python's cycle collector. A parse allocates a few objects per token, none of
+    them in a reference cycle, and every few hundred allocations the collector would walk
+    the young objects (the growing tree) again: a third of the parse's time, for nothing."""
+    if not gc.isenabled():
+        yield
+        return
+    gc.disable()
+    try:
+        yield
+    finally:
+        gc.enable()
+
+
+@functools.cache
+def _fast_parser() -> _FastParser | None:
+    """The fast parser, or None where this lark keeps its parts elsewhere than 1.x does."""
+    try:
+        return _FastParser(glsl_parser())
+    except (AttributeError, KeyError, TypeError):
+        return None
 
 
 def parse(text: str, filename: str = "<input>") -> Tree:
     """Parse preprocessed GLSL; raise GLSLSyntaxError with the position in `text`."""
-    try:
+    fast = _fast_parser()
+    tree = fast.parse(text) if fast is not None else None
+    if tree is not None:
+        return tree
+    try:  # lark itself: the tree where the fast parser has none, else the error's details
         return glsl_parser().parse(text)
     except _ReservedWord as exc:
         tok = exc.token

@@ -64,6 +64,9 @@ class PreprocessorError(InputError):
 _BUILTIN_DEFINES = {"GL_ES": "1", "__VERSION__": "300", "GL_FRAGMENT_PRECISION_HIGH": "1"}
 
 _COMMENT_START = re.compile(r"//|/\*")
+# Every identifier of a line (pptokens' `ident`), and names inside numbers: a quick way to
+# see that a line has no macro to expand without making its tokens.
+_NAME = re.compile(r"[A-Za-z_]\w*")
 _CONDITIONALS = frozenset({"if", "ifdef", "ifndef", "elif", "else", "endif"})
 
 
@@ -160,10 +163,12 @@ class _Preprocessor:
 
     def _expand_line(self, lines: list[str], i: int) -> tuple[int, str]:
         """Expand one code line, pulling in following lines while a macro call is open."""
-        tokens = tokenize(lines[i])
         self.expander.used.clear()
-        if not any(t.kind == "ident" and self._expandable(t.text) for t in tokens):
+        if not any(self._expandable(name) for name in _NAME.findall(lines[i])):
             return 0, lines[i]  # fast path: nothing to expand, text untouched
+        tokens = tokenize(lines[i])
+        if not any(t.kind == "ident" and self._expandable(t.text) for t in tokens):
+            return 0, lines[i]  # a macro's name inside a number (`0x1Fu`, `2.f`)
         consumed = 0
         while True:
             nxt = i + consumed + 1
