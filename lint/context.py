@@ -3,9 +3,11 @@ helpers rules use to turn tree nodes into spans, findings and edits of the user'
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from operator import itemgetter
 from typing import Any
 
 from lark import Token, Tree
@@ -61,6 +63,7 @@ class LintContext:
     cache: dict[str, Any] = field(default_factory=dict)
     _glslang: list[Diagnostic] | None = None
     _index: dict[str, list[Tree]] | None = None
+    _all_kinds: bool = False  # whether `_index` holds every kind (the tree is not indexed)
     _parents: dict[int, Tree] | None = None
 
     def __post_init__(self) -> None:
@@ -80,12 +83,20 @@ class LintContext:
     def nodes(self, kind: str) -> list[Tree]:
         """Every subtree of this kind (`call`, `variable`, ...), in source order. The tree is
         walked once per file for all rules, which would otherwise each walk it again."""
+        if self.tree is None:
+            return []
         if self._index is None:
             self._index = {}
-            if self.tree is not None:
-                for node in walk(self.tree):
+            if not _is_indexed(self.tree):
+                for node in _walk(self.tree):
                     self._index.setdefault(node.data, []).append(node)
-        return self._index.get(kind, [])
+                self._all_kinds = True
+        found = self._index.get(kind)
+        if found is None:
+            # Indexed (an `indexed` block): each kind is sliced from the index when asked for.
+            found = [] if self._all_kinds else walk_kind(self.tree, kind)
+            self._index[kind] = found
+        return found
 
     def parents(self) -> dict[int, Tree]:
         """The parent of every subtree and token of the file, by id() (lark nodes hash by
@@ -93,9 +104,9 @@ class LintContext:
         if self._parents is None:
             self._parents = {}
             if self.tree is not None:
-                for node in walk(self.tree):
-                    for child in node.children:
-                        self._parents[id(child)] = node
+                self._parents = {
+                    id(child): node for node in walk(self.tree) for child in node.children
+                }
         return self._parents
 
     # --- positions ------------------------------------------------------------------------
@@ -169,13 +180,137 @@ def _pre_lines(node: Node) -> tuple[int, int]:
 
 def walk(node: Node) -> Iterator[Tree]:
     """Every subtree, parents before children, without recursion (deeply nested input must
-    not exhaust the stack)."""
+    not exhaust the stack). Within `indexed(tree)`, a subtree of that tree is a slice of the
+    walk made once for the whole tree."""
+    for index in _INDEXES:
+        found = index.subtrees(node)
+        if found is not None:
+            return iter(found)
+    return _walk(node)
+
+
+def walk_kind(node: Node, *kinds: str) -> list[Tree]:
+    """The subtrees of these kinds, in `walk` order: `[n for n in walk(node) if n.data in
+    kinds]`. Within `indexed(tree)`, found without looking at the other subtrees."""
+    for index in _INDEXES:
+        found = index.of_kind(node, kinds)
+        if found is not None:
+            return found
+    return [item for item in _walk(node) if item.data in kinds]
+
+
+def _walk(node: Node) -> Iterator[Tree]:
     stack: list[Node] = [node]
     while stack:
         item = stack.pop()
         if isinstance(item, Tree):
             yield item
             stack.extend(reversed(item.children))
+
+
+class TreeIndex:
+    """Every subtree of one tree in pre-order (as `walk` yields them), and for each subtree
+    the slice of that list its own walk is: rules and analyses walk the same file's tree and
+    its subtrees dozens of times, and slicing a list is far cheaper than walking again.
+
+    Subtrees are keyed by id() (lark trees hash and compare by value: two equal `x` variables
+    are different nodes). The index keeps every node alive, so no other object can take one
+    of those ids while it exists. The tree must not change while indexed."""
+
+    __slots__ = ("order", "_starts", "_ends", "_kinds")
+
+    def __init__(self, root: Tree) -> None:
+        order: list[Tree] = []
+        starts: dict[int, int] = {}
+        ends: list[int] = []
+        # The stack holds nodes still to visit, and (as ints) the positions of subtrees whose
+        # walk ends when the stack is popped down to them. Ints rather than tuples: tens of
+        # thousands of small containers per file would wake the garbage collector.
+        stack: list[Node | int] = [root]
+        while stack:
+            item = stack.pop()
+            if isinstance(item, int):
+                ends[item] = len(order)
+            elif isinstance(item, Tree):
+                position = len(order)
+                starts[id(item)] = position
+                order.append(item)
+                ends.append(0)
+                stack.append(position)
+                stack.extend(item.children[::-1])
+        self.order = order
+        self._starts = starts
+        self._ends = ends
+        # By kind: the positions in `order` of the subtrees of that kind, and the subtrees.
+        self._kinds: dict[str, tuple[list[int], list[Tree]]] | None = None
+
+    def subtrees(self, node: Node) -> list[Tree] | None:
+        """`list(walk(node))` for a subtree of the indexed tree; None for any other node."""
+        start = self._starts.get(id(node))
+        if start is None:
+            return None
+        return self.order[start : self._ends[start]]
+
+    def of_kind(self, node: Node, kinds: tuple[str, ...]) -> list[Tree] | None:
+        """`walk_kind(node, *kinds)` for a subtree of the indexed tree; None for any other
+        node. The subtrees of a kind under `node` are those whose positions fall in node's
+        slice: two bisections of that kind's positions."""
+        start = self._starts.get(id(node))
+        if start is None:
+            return None
+        end = self._ends[start]
+        if self._kinds is None:
+            self._kinds = {}
+            for position, item in enumerate(self.order):
+                entry = self._kinds.get(item.data)
+                if entry is None:
+                    self._kinds[item.data] = ([position], [item])
+                else:
+                    entry[0].append(position)
+                    entry[1].append(item)
+        found: list[tuple[list[int], list[Tree]]] = []
+        for kind in dict.fromkeys(kinds):  # each kind once, as the plain walk gives it
+            entry = self._kinds.get(kind)
+            if entry is None:
+                continue
+            positions, items = entry
+            low = bisect_left(positions, start)
+            high = bisect_left(positions, end, low)
+            if low < high:
+                found.append((positions[low:high], items[low:high]))
+        if len(found) == 1:
+            return found[0][1]
+        # Several kinds: merged back into walk order by position.
+        pairs = [pair for positions, items in found for pair in zip(positions, items, strict=True)]
+        return [n for _, n in sorted(pairs, key=itemgetter(0))]
+
+
+def _is_indexed(tree: Tree) -> bool:
+    return any(index.order[0] is tree for index in _INDEXES)
+
+
+# The indexes `walk` looks in: those of the trees inside an `indexed` block (one per file being
+# linted; a few if linting nests). Dropped when the block ends, so nothing outlives the file.
+_INDEXES: list[TreeIndex] = []
+
+
+@contextmanager
+def indexed(tree: Tree | None) -> Iterator[TreeIndex | None]:
+    """Within the block, `walk` of the tree or any of its subtrees slices one pre-order list
+    built on entry. The tree must not be changed inside the block."""
+    if tree is None:
+        yield None
+        return
+    for known in _INDEXES:
+        if known.order[0] is tree:  # already indexed by an enclosing block
+            yield known
+            return
+    index = TreeIndex(tree)
+    _INDEXES.append(index)
+    try:
+        yield index
+    finally:
+        _INDEXES.remove(index)
 
 
 def tokens(node: Node) -> Iterator[Token]:

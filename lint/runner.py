@@ -12,7 +12,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.glsl import parse, preprocess, symbols_of
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
-from .context import MAX_NESTING, LintContext
+from .context import MAX_NESTING, LintContext, indexed
 from .finding import Finding
 from .fixes import apply_fixes
 from .options import Options
@@ -99,15 +99,16 @@ def lint_source(
         findings: list[Finding] = []
         # Rules that report on what the others found out (C006: too deep) run last.
         rules = sorted(all_rules().items(), key=lambda item: item[1].runs_last)
-        for code, rule in rules:
-            if code == UNUSED_SUPPRESSION or not options.enabled(code, file):
-                continue
-            if rule.needs_tree and ctx.tree is None:
-                continue
-            try:
-                findings.extend(rule().check(ctx))
-            except RecursionError:
-                ctx.too_deep = True
+        with indexed(ctx.tree):  # the rules and analyses walk the tree many times
+            for code, rule in rules:
+                if code == UNUSED_SUPPRESSION or not options.enabled(code, file):
+                    continue
+                if rule.needs_tree and ctx.tree is None:
+                    continue
+                try:
+                    findings.extend(rule().check(ctx))
+                except RecursionError:
+                    ctx.too_deep = True
     findings = _without_explained_glslang_errors(findings)
     suppressions = parse_suppressions(text)
     kept = apply_suppressions(findings, suppressions)

@@ -8,7 +8,7 @@ from lark import Tree
 
 from ...analysis.flow import function_flows, mask_names
 from ...analysis.syntax import call_args, root_variable
-from ...context import LintContext, walk
+from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ._data_flow import main_colour
@@ -16,7 +16,7 @@ from ._data_flow import main_colour
 
 def _assigns(definition: Tree, name: str) -> bool:
     """Whether any statement assigns to `name` (or a component of it), on any path."""
-    for node in walk(definition):
+    for node in walk_kind(definition, "assignment", "postfix", "prefix", "call"):
         if node.data in ("assignment", "postfix"):
             target = node.children[0]
         elif node.data == "prefix":
@@ -33,8 +33,8 @@ def _assigns(definition: Tree, name: str) -> bool:
 
 
 def _writes_gl_fragcolor(definition: Tree) -> bool:
-    return any(n.data == "variable" and n.children[0] in ("gl_FragColor", "gl_FragData")
-               for n in walk(definition))  # fmt: skip
+    return any(n.children[0] in ("gl_FragColor", "gl_FragData")
+               for n in walk_kind(definition, "variable"))  # fmt: skip
 
 
 @register

@@ -20,7 +20,7 @@ from ...analysis.syntax import (
     root_var,
     var_name,
 )
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk_kind
 from ._terms import cosine_of, vector_role
 
 COSINE_TEXT = {"NL": "N·L", "NH": "N·H", "NV": "N·V", "VH": "V·H", "LV": "L·V"}
@@ -94,8 +94,8 @@ class ColourOutput:
             return False
         if ENCODE_NAME.search(fn.name) and fn.name != "mainImage":
             return True
-        for node in walk(fn.body):
-            if node.data == "jump_statement" and len(node.children) == 2:
+        for node in walk_kind(fn.body, "jump_statement"):
+            if len(node.children) == 2:
                 value = self._peel(resolve(node.children[1], fn))
                 if self.gamma_of(value, fn, direct=True) is not None:
                     return True
@@ -184,7 +184,8 @@ class ColourOutput:
         for fn in functions(self.ctx):
             if TONEMAP_NAME.search(fn.name):
                 return True
-            for node in walk(fn.body):
+            # Only calls have a name and only binary operators have a tone-mapping form.
+            for node in walk_kind(fn.body, "call", "binary"):
                 if TONEMAP_NAME.search(call_name(node) or "") or self._tonemap_form(node):
                     return True
         return False
@@ -205,7 +206,7 @@ class ColourOutput:
 
 
 def output_writes(fn: Function, out: str) -> list[Tree]:
-    return [n for n in walk(fn.body) if n.data == "assignment" and root_var(n.children[0]) == out]
+    return [n for n in walk_kind(fn.body, "assignment") if root_var(n.children[0]) == out]
 
 
 def product_factors(node: Node) -> tuple[list[Node], list[Node]]:
@@ -305,15 +306,13 @@ def _state_store(fn: Function, coord: str | None) -> bool:
     frame (a buffer pass)."""
     if coord is None:
         return False
-    for node in walk(fn.body):
-        if node.data != "if_statement":
-            continue
+    for node in walk_kind(fn.body, "if_statement"):
         cond = node.children[0]
-        if not any(binary_op(c) == "==" for c in walk(cond) if isinstance(c, Tree)):
+        if not any(binary_op(c) == "==" for c in walk_kind(cond, "binary")):
             continue
         if coord not in names_of(cond):
             continue
-        if any(n.data == "assignment" for n in walk(node.children[1])):
+        if walk_kind(node.children[1], "assignment"):
             return True
     return False
 
@@ -321,12 +320,12 @@ def _state_store(fn: Function, coord: str | None) -> bool:
 def names_of(node: Node) -> set[str]:
     if not isinstance(node, Tree):
         return set()
-    return {str(s.children[0]) for s in walk(node) if s.data == "variable"}
+    return {str(s.children[0]) for s in walk_kind(node, "variable")}
 
 
 def _packed_normal(node: Node, fn: Function) -> bool:
     """`n * 0.5 + 0.5` (or 0.5 + 0.5 * n) of a normal: a normal stored as data."""
-    for sub in walk(node) if isinstance(node, Tree) else ():
+    for sub in walk_kind(node, "binary"):
         if binary_op(sub) != "+":
             continue
         parts = operands(sub, "+")
@@ -352,8 +351,8 @@ def _sources(ctx: LintContext, fn: Function, value: Node) -> list[tuple[Function
     callee = call_name(value)
     if callee in defined:
         other = defined[callee]
-        for node in walk(other.body):
-            if node.data == "jump_statement" and len(node.children) == 2:
+        for node in walk_kind(other.body, "jump_statement"):
+            if len(node.children) == 2:
                 returned = var_name(node.children[1])
                 if returned is not None and returned in other.locals:
                     found += [(other, w) for w in output_writes(other, returned)]
@@ -379,14 +378,14 @@ def _palette(ctx: LintContext, node: Node, fn: Function, depth: int = 10) -> boo
         return all(_palette(ctx, p, fn, depth - 1) for p in parts)
     callee = function_map(ctx).get(name or "")
     if callee is not None:  # a function of the shader that returns palette colours only
-        returned = [r.children[1] for r in walk(callee.body)
-                    if r.data == "jump_statement" and len(r.children) == 2]  # fmt: skip
+        returned = [r.children[1] for r in walk_kind(callee.body, "jump_statement")
+                    if len(r.children) == 2]  # fmt: skip
         return bool(returned) and all(_palette(ctx, r, callee, depth - 1) for r in returned)
     local = var_name(node)
     if local is None or local not in fn.locals:
         return False
     values: list[Node] = []
-    for sub in walk(fn.body):
+    for sub in walk_kind(fn.body, "declarator", "assignment"):
         if sub.data == "declarator" and str(sub.children[0]) == local and len(sub.children) > 1:
             values.append(sub.children[-1])
         elif sub.data == "assignment" and root_var(sub.children[0]) == local:

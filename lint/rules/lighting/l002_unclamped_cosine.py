@@ -11,7 +11,7 @@ from ...analysis.constants import const_value
 from ...analysis.functions import Function, functions, resolve
 from ...analysis.model import is_unit, may_be_negative
 from ...analysis.syntax import binary_op, call_name, names_in, operands, root_var, var_name
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk_kind
 from ...finding import Finding, Fix
 from .. import Rule, register
 from ._common import COSINE_TEXT, short_text
@@ -72,8 +72,8 @@ class UnclampedCosine(Rule):
         self._ctx = ctx
         up = ctx.parents()
         for fn in functions(ctx):
-            compared = self._compared(fn)
-            for node in walk(fn.body):
+            compared: set[str] | None = None  # found when a candidate needs it (few do)
+            for node in walk_kind(fn.body, "jump_statement", "binary"):
                 if node.data == "jump_statement" and len(node.children) == 2:
                     candidates = [node.children[1]]
                     # a bare cosine returned by a diffuse-named function is its diffuse term;
@@ -94,6 +94,8 @@ class UnclampedCosine(Rule):
                     continue
                 if not colour:
                     continue
+                if compared is None:
+                    compared = self._compared(fn)
                 for operand in candidates:
                     if (
                         self._raw(operand, fn, compared)
@@ -135,7 +137,7 @@ class UnclampedCosine(Rule):
 
     def _compared(self, fn: Function) -> set[str]:
         found: set[str] = set()
-        for node in walk(fn.body):
+        for node in walk_kind(fn.body, "binary"):
             if binary_op(node) in ("<", ">", "<=", ">="):
                 found |= names_in(node)
         return found

@@ -16,7 +16,7 @@ from ...analysis.syntax import (
     names_in,
     operands,
 )
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node
 from ...finding import Finding
 from .. import Rule, register
 from ._common import short_text
@@ -114,7 +114,7 @@ class UnnormalizedBlinnPhong(Rule):
     def _normalized(self, ctx: LintContext, fn: Function, exponent: Node) -> bool:
         wanted = " ".join(ctx.node_text(exponent).split())
         assert ctx.tree is not None
-        for node in walk(ctx.tree):
+        for node in ctx.nodes("binary"):
             if binary_op(node) == "+":
                 parts = operands(node, "+")
                 texts = {" ".join(ctx.node_text(p).split()) for p in parts}

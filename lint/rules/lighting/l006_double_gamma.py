@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from ...analysis.functions import functions
 from ...analysis.syntax import calls_in, names_in, root_var
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ._common import ColourOutput, main_image, short_text
@@ -62,7 +62,7 @@ class DoubleGamma(Rule):
             return
         fn, _ = found
         encoded: set[str] = set()
-        for node in walk(fn.body):
+        for node in walk_kind(fn.body, "declarator", "assignment"):
             if node.data == "declarator" and len(node.children) > 1:
                 target, value = str(node.children[0]), node.children[-1]
             elif node.data == "assignment" and str(node.children[1]) == "=":

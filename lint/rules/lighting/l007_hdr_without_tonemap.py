@@ -18,7 +18,7 @@ from ...analysis.syntax import (
     operands,
     root_var,
 )
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ._common import (
@@ -38,7 +38,7 @@ from ._terms import cosine_of, lights_surface
 def _light_terms(fn: Function, up: dict[int, Tree]) -> list[Node]:
     """Whole products (chains of * and /) that carry a lighting cosine or a specular lobe."""
     terms = []
-    for node in walk(fn.body):
+    for node in walk_kind(fn.body, "binary"):
         if binary_op(node) not in ("*", "/") or binary_op(up.get(id(node))) in ("*", "/"):
             continue
         top, _ = product_factors(node)
@@ -152,7 +152,7 @@ class HdrWithoutTonemap(Rule):
             return sum(1.0 if h is None else h for h in his) > 1.0
 
         per_target: dict[str, list[Node]] = {}
-        for node in walk(fn.body):
+        for node in walk_kind(fn.body, "binary", "assignment"):
             if binary_op(node) == "+":
                 parts = operands(node, "+")
                 if sum(1 for p in parts if carries(p)) >= 2 and may_exceed(parts):
@@ -178,8 +178,8 @@ def _clip(ctx: LintContext, node: Node) -> bool:
 def _returns_clipped(ctx: LintContext, fn: Function) -> bool:
     """Whether the function returns a clipped colour: a clip (inside a constructor too), or a
     variable last given one."""
-    for node in walk(fn.body):
-        if node.data != "jump_statement" or len(node.children) != 2:
+    for node in walk_kind(fn.body, "jump_statement"):
+        if len(node.children) != 2:
             continue
         value = node.children[1]
         while isinstance(value, Tree) and value.data == "constructor" and call_args(value):
@@ -189,8 +189,8 @@ def _returns_clipped(ctx: LintContext, fn: Function) -> bool:
         name = root_var(value)
         if name is None:
             continue
-        writes = [w.children[2] for w in walk(fn.body)
-                  if w.data == "assignment" and root_var(w.children[0]) == name]  # fmt: skip
+        writes = [w.children[2] for w in walk_kind(fn.body, "assignment")
+                  if root_var(w.children[0]) == name]  # fmt: skip
         if writes and _clip(ctx, writes[-1]):
             return True
     return False

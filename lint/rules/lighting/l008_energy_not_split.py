@@ -18,7 +18,7 @@ from ...analysis.syntax import (
     names_in,
     operands,
 )
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ._common import is_lobe, product_factors, short_text
@@ -85,13 +85,15 @@ class EnergyNotSplit(Rule):
         defined = function_map(ctx)
         for fn in functions(ctx):
             fresnel_vars = self._fresnel_vars(fn)
-            for node in walk(fn.body):
+            for node in walk_kind(fn.body, "binary"):
                 if binary_op(node) != "+" or binary_op(up.get(id(node))) == "+":
                     continue
                 parts = operands(node, "+")
                 spec = [p for p in parts if self._has_fresnel(p, fn, fresnel_vars)]
+                if not spec:
+                    continue  # no specular term: the diffuse ones need not be looked for
                 diffuse = [p for p in parts if p not in spec and self._diffuse(p, fn)]
-                if not spec or not diffuse:
+                if not diffuse:
                     continue
                 for part in diffuse:
                     if not self._split(part, fn, fresnel_vars, defined):
@@ -111,7 +113,7 @@ class EnergyNotSplit(Rule):
         return found
 
     def _has_fresnel(self, node: Node, fn: Function, fresnel_vars: set[str]) -> bool:
-        if names_in(node) & fresnel_vars:
+        if fresnel_vars and names_in(node) & fresnel_vars:
             return True
         return any(schlick_base(c) is not None or is_fresnel_name(call_name(c))
                    for c in calls_in(node))  # fmt: skip
@@ -133,8 +135,7 @@ class EnergyNotSplit(Rule):
         for part in self._expand(node, fn):
             if any(_DIFFUSE_NAME.match(n) for n in names_in(part)):
                 return True
-            if any(_DIFFUSE_NAME.match(str(f.children[-1])) for f in walk(part)
-                   if f.data == "field") if isinstance(part, Tree) else False:  # fmt: skip
+            if any(_DIFFUSE_NAME.match(str(f.children[-1])) for f in walk_kind(part, "field")):
                 return True
             if any(_DIFFUSE_CALL.search(call_name(c) or "") for c in calls_in(part)):
                 return True
@@ -169,9 +170,7 @@ class EnergyNotSplit(Rule):
         names = names_in(right)
         if names & fresnel_vars or any(_METAL_NAME.search(n) for n in names):
             return True
-        if isinstance(right, Tree) and any(
-            _METAL_NAME.search(str(f.children[-1])) for f in walk(right) if f.data == "field"
-        ):
+        if any(_METAL_NAME.search(str(f.children[-1])) for f in walk_kind(right, "field")):
             return True
         return self._has_fresnel(right, fn, fresnel_vars) or any(
             n.upper().startswith("F") or n.lower().startswith("ks") for n in names

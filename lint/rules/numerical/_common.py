@@ -49,8 +49,12 @@ def is_raw_dot(v: Value) -> bool:
 
 def builtin_calls(ctx: LintContext, model: Model, *names: str) -> Iterator[tuple[Tree, str]]:
     """Calls of these builtins (a user function of the same name is not the builtin)."""
-    for node in ctx.nodes("call"):
-        name = callee_name(node)
+    named = ctx.cache.get("numerical.named_calls")
+    if named is None:  # every numerical rule looks at every call: name them once per file
+        named = ctx.cache["numerical.named_calls"] = [
+            (node, callee_name(node)) for node in ctx.nodes("call")
+        ]
+    for node, name in named:
         if name in names and name not in model.functions:
             yield node, name
 

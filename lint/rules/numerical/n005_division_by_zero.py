@@ -8,7 +8,7 @@ from lark import Tree
 
 from ...analysis.model import semantic_model
 from ...analysis.types import components
-from ...context import LintContext, walk
+from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import register
 from ._common import Node, NumericalRule, reaches_zero, text, wrap_fix
@@ -49,7 +49,7 @@ class DivisionByZero(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
-        for node in walk(ctx.tree):  # type: ignore[arg-type]
+        for node in walk_kind(ctx.tree, "binary", "assignment"):  # type: ignore[arg-type]
             divisor = _divisor(node)
             if divisor is None:
                 continue

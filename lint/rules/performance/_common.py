@@ -12,6 +12,11 @@ from ...context import Node
 _OPEN_PARENTS = {"arguments", "declarator", "jump_statement", "expression_statement", "ternary"}
 
 
+# The kinds of node in which `writes_of` (analysis/functions.py) finds writes: the others need
+# not be looked at when collecting what a part of the code writes.
+WRITERS = ("assignment", "prefix", "postfix", "call")
+
+
 def needs_parens(node: Node, parent: Tree | None) -> bool:
     if parent is None or parent.data in _OPEN_PARENTS:
         return False

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from ...analysis.constants import const_value, folded
 from ...analysis.functions import Function, function_map
 from ...analysis.syntax import call_args, call_name, is_simple
-from ...context import LintContext, walk
+from ...context import LintContext, walk_kind
 from ...finding import Finding, Fix
 from .. import Rule, register
 from ._common import needs_parens
@@ -17,9 +17,8 @@ def _owners(ctx: LintContext) -> dict[int, Function]:
     """The function each call sits in, by id."""
     owner: dict[int, Function] = {}
     for fn in function_map(ctx).values():
-        for node in walk(fn.body):
-            if node.data == "call":
-                owner[id(node)] = fn
+        for node in walk_kind(fn.body, "call"):
+            owner[id(node)] = fn
     return owner
 
 

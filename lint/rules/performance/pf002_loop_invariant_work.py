@@ -10,11 +10,11 @@ from lark import Tree
 from ...analysis.constants import const_value, global_constants
 from ...analysis.functions import Function, functions, out_param_map, writes_of
 from ...analysis.syntax import call_args, call_name, names_in
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ..lighting._common import macros_used, short_text
-from ._common import BUILTINS
+from ._common import BUILTINS, WRITERS
 
 # Builtins worth hoisting: transcendental, square roots, texture fetches, normalisation.
 _EXPENSIVE = {
@@ -83,9 +83,7 @@ def _global_names(ctx: LintContext) -> tuple[set[str], set[str]]:
 
 def _local_consts(fn: Function) -> set[str]:
     found = set()
-    for node in walk(fn.body):
-        if node.data != "variable_declaration":
-            continue
+    for node in walk_kind(fn.body, "variable_declaration"):
         spec = node.children[0]
         if (isinstance(spec, Tree) and isinstance(spec.children[0], Tree)
                 and spec.children[0].data == "type_qualifier"
@@ -184,8 +182,8 @@ def calls_per_pixel(ctx: LintContext, up: dict[int, Tree]) -> dict[str, int]:
     defined = {f.name: f for f in functions(ctx)}
     sites: dict[str, list[tuple[Function, Tree]]] = {}
     for fn in defined.values():
-        for node in walk(fn.body):
-            if node.data == "call" and call_name(node) in defined:
+        for node in walk_kind(fn.body, "call"):
+            if call_name(node) in defined:
                 sites.setdefault(call_name(node) or "", []).append((fn, node))
     runs: dict[str, int] = {}
 
@@ -269,11 +267,9 @@ class LoopInvariant(Rule):
         runs = calls_per_pixel(ctx, up)
         for fn in functions(ctx):
             fixed = constants | _local_consts(fn)
-            for loop in walk(fn.body):
-                if loop.data not in _LOOPS:
-                    continue
+            for loop in walk_kind(fn.body, *_LOOPS):
                 varying = set(global_writes)
-                for node in walk(loop):
+                for node in walk_kind(loop, *WRITERS, "declarator", "condition_declaration"):
                     varying |= writes_of(node, outs)
                     if node.data == "declarator":
                         varying.add(str(node.children[0]))

@@ -10,10 +10,10 @@ from ...analysis.constants import folded
 from ...analysis.functions import Function, functions, out_param_map, resolve, writes_of
 from ...analysis.model import is_unit
 from ...analysis.syntax import call_args, call_name, names_in, var_name
-from ...context import LintContext, Node, walk
+from ...context import LintContext, Node, walk_kind
 from ...finding import Finding, Fix
 from .. import Rule, register
-from ._common import needs_parens
+from ._common import WRITERS, needs_parens
 
 
 def _unit_by_form(node: Node, fn: Function | None, consts: dict[str, Node], depth: int = 4) -> bool:
@@ -71,9 +71,7 @@ def _written_earlier_in_sequence(
             for operand in parent.children:
                 if operand is current:
                     break
-                if isinstance(operand, Tree) and any(
-                    writes_of(sub, outs) & reads for sub in walk(operand)
-                ):
+                if any(writes_of(sub, outs) & reads for sub in walk_kind(operand, *WRITERS)):
                     return True
         current = parent
     return False
@@ -124,7 +122,7 @@ class RedundantNormalize(Rule):
         consts = _const_values(ctx)
         outs = out_param_map(ctx)
         for fn in functions(ctx):
-            for node in walk(fn.body):
+            for node in walk_kind(fn.body, "call"):
                 if call_name(node) != "normalize":
                     continue
                 args = call_args(node)

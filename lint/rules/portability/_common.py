@@ -6,7 +6,7 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from ...analysis.syntax import parameter_parts
-from ...context import LintContext, walk
+from ...context import LintContext, walk_kind
 
 
 def is_es1(ctx: LintContext) -> bool:
@@ -33,9 +33,8 @@ def defined_names(ctx: LintContext) -> set[str]:
 def declares_name(node: Tree, name: str) -> bool:
     """Whether a local of that name is declared anywhere under the node."""
     return any(
-        sub.data in ("declarator", "condition_declaration")
-        and any(isinstance(c, Token) and c == name for c in sub.children)
-        for sub in walk(node)
+        any(isinstance(c, Token) and c == name for c in sub.children)
+        for sub in walk_kind(node, "declarator", "condition_declaration")
     )
 
 

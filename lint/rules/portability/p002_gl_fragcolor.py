@@ -67,14 +67,17 @@ class FragColor(Rule):
         assert ctx.tree is not None
         if is_es1(ctx):
             return
+        uses = [
+            n for n in ctx.nodes("variable") if n.children[0] in ("gl_FragColor", "gl_FragData")
+        ]
+        if not uses:
+            return  # most files: nothing to look up
         main = _main_image_out(ctx)
         inside: set[int] = set()
         if main is not None and not declares_name(main[0].children[1], main[1]):  # type: ignore[arg-type]
             inside = {id(n) for n in walk(main[0])}
         parents = ctx.parents()
-        for node in ctx.nodes("variable"):
-            if node.children[0] not in ("gl_FragColor", "gl_FragData"):
-                continue
+        for node in uses:
             target: Node = node
             if node.children[0] == "gl_FragData":
                 parent = parents.get(id(node))

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from ...context import LintContext, walk
+from ...context import LintContext, walk_kind
 from ...finding import Finding, Fix
 from .. import Rule, register
 from ._common import declares_name, defined_names
@@ -51,7 +51,7 @@ class OldShadertoyUniform(Rule):
         if "iGlobalTime" in own:
             return  # the file declares it itself
         shadowed = declares_name(ctx.tree, "iTime") or "iTime" in own
-        for node in walk(ctx.tree):
+        for node in walk_kind(ctx.tree, "variable", "field"):
             if node.data == "variable" and node.children[0] == "iGlobalTime":
                 edit = None if shadowed else ctx.replace(node, "iTime")
                 fix = Fix("use `iTime`", (edit,)) if edit else None

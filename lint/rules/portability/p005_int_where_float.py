@@ -12,7 +12,7 @@ from glint.compiler.glsl.keywords import words
 from ...analysis.model import Model, semantic_model
 from ...analysis.syntax import prototype_parts, type_of_declaration
 from ...analysis.types import is_float_like
-from ...context import LintContext, walk
+from ...context import LintContext, walk_kind
 from ...finding import Finding, Fix
 from .. import Rule, register
 from ._common import function_prototypes
@@ -77,7 +77,7 @@ class IntWhereFloat(Rule):
         model = semantic_model(ctx)
         types = model.type_of
         parents = ctx.parents()
-        for node in walk(ctx.tree):
+        for node in walk_kind(ctx.tree, "int_literal", "variable"):
             if node.data == "int_literal":
                 if str(node.children[0])[-1] in "uU":
                     continue
