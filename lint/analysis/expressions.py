@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import replace
 from typing import Protocol
 
 from lark import Tree
@@ -56,6 +55,10 @@ class ModelView(Protocol):
 
     def refine(self, env: Env, cond: Node, truth: bool) -> Env: ...
 
+    def polynomial(self, node: Tree) -> tuple[Node, list[float]] | None: ...
+
+    def same_operands(self, node: Tree) -> bool: ...
+
 
 ASSIGN_OPS = {"+=": "+", "-=": "-", "*=": "*", "/=": "/"}
 
@@ -72,14 +75,13 @@ class Evaluator:
     def eval(self, node: Node) -> Value:
         if not isinstance(node, Tree):
             return Value()
-        if self.memo is not None:
-            key = id(node)
-            if key in self.memo:
-                return self.memo[key]
-        handler = getattr(self, "_" + node.data, None)
-        value = handler(node) if handler is not None else Value()
-        if self.memo is not None:
-            self.memo[id(node)] = value
+        memo = self.memo
+        if memo is not None and (known := memo.get(id(node))) is not None:
+            return known
+        handler = _HANDLERS.get(node.data)
+        value = handler(self, node) if handler is not None else Value()
+        if memo is not None:
+            memo[id(node)] = value
         return value
 
     def _sub(self, node: Node) -> Value:
@@ -113,7 +115,7 @@ class Evaluator:
         op, operand = str(node.children[0]), self._sub(node.children[1])
         if op == "-":
             comps = tuple(-c for c in operand.comps) if operand.comps is not None else None
-            return replace(operand, range=-operand.range, comps=comps)
+            return operand.but(range=-operand.range, comps=comps)
         if op == "+":
             return operand
         if op == "!":
@@ -135,7 +137,7 @@ class Evaluator:
             return Value("bool", BOOL)
         both_units = a.unit and b.unit and T.is_vector(a.type)
         if op in _ARITH:
-            rng, comps = self._arith(op, a, b, ty, same_expression(left, right))
+            rng, comps = self._arith(op, a, b, ty, op == "*" and self.model.same_operands(node))
             if op != "/":
                 rng, comps = self._polynomial(node, ty, rng, comps)
             if comps is None:
@@ -173,7 +175,7 @@ class Evaluator:
                 return Interval(5e-324, INF)  # y > x: y - x is a positive float (no underflow)
             if _related(env, right, "<=", left):
                 return NONNEG
-            squares = [_square_root_node(n) for n in (left, right)]
+            squares = [self._square_root_node(n) for n in (left, right)]
             if None not in squares:
                 y, x = squares
                 lower = self._sub(x).range  # type: ignore[arg-type]
@@ -183,13 +185,19 @@ class Evaluator:
             return ZERO_ONE  # 0 <= x <= y (so y > 0 where x > 0): x / y in [0, 1]
         return UNKNOWN
 
+    def _square_root_node(self, node: Node) -> Node | None:
+        """x for `x * x`."""
+        if not (is_tree(node, "binary") and str(node.children[1]) == "*"):  # type: ignore
+            return None
+        return node.children[0] if self.model.same_operands(node) else None  # type: ignore
+
     def _polynomial(
         self, node: Tree, ty: str | None, rng: Interval, comps: Comps
     ) -> tuple[Interval, Comps]:
         """Tighter bounds for a polynomial in one variable (written more than once): interval
         arithmetic treats each occurrence as independent, so t*t*(3.0 - 2.0*t), the Hermite
         weight of value noise, comes out [0, 3] for t in [0, 1] instead of [0, 1]."""
-        found = _as_polynomial(node)
+        found = self.model.polynomial(node)
         if found is None:
             return rng, comps
         atom, coeffs = found
@@ -212,14 +220,14 @@ class Evaluator:
             a = Evaluator(self.model, self.model.refine(self.env, cond, True)).eval(then)
             b = Evaluator(self.model, self.model.refine(self.env, cond, False)).eval(other)
         value = a.join(b)
-        return value if value.type else replace(value, type=a.type or b.type)
+        return value if value.type else value.but(type=a.type or b.type)
 
     def _assignment(self, node: Tree) -> Value:
         target, op_token, rhs = node.children
         op = str(op_token)
         old, new = self._sub(target), self._sub(rhs)
         if op == "=":
-            return replace(new, type=old.type or new.type)
+            return new.but(type=old.type or new.type)
         if op in ASSIGN_OPS:
             arith = ASSIGN_OPS[op]
             rng, comps = self._arith(arith, old, new, old.type, False)
@@ -311,7 +319,7 @@ class Evaluator:
         fn = self.model.function(name, len(args))
         if fn is not None:
             result = fn.result or Value(fn.return_type)
-            return replace(result, type=fn.return_type)
+            return result.but(type=fn.return_type)
         if name not in BUILTIN_FUNCTIONS:
             return Value()
         ty = T.builtin_return(name, [v.type for v in values])
@@ -328,6 +336,14 @@ class Evaluator:
             ortho = values[0].ortho  # the same direction
         return Value(ty, rng, unit, origin, zero, comps, why=why, ortho=ortho)
 
+
+# The evaluator's method for each kind of expression node (`_binary` for "binary" ...).
+_HANDLERS: dict[str, Callable[[Evaluator, Tree], Value]] = {
+    kind: getattr(Evaluator, "_" + kind)
+    for kind in ("float_literal", "int_literal", "bool_literal", "variable", "unary", "prefix",
+                 "postfix", "binary", "ternary", "assignment", "sequence", "field", "index",
+                 "constructor", "call")
+}  # fmt: skip
 
 _ARITH: dict[str, Callable[[Interval, Interval], Interval]] = {
     "+": Interval.__add__,
@@ -371,7 +387,7 @@ _POLY_SIZE = 64  # nodes: longer expressions are left to interval arithmetic
 _POLY_DEGREE = 8
 
 
-def _as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
+def as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
     """(x, coefficients) when `node` is a polynomial with constant coefficients in one
     expression x that occurs at least twice (+, -, *, unary minus, division by a constant);
     None otherwise."""
@@ -430,15 +446,6 @@ def _as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
     if coeffs is None or len(atoms) < 2:
         return None
     return atoms[0], coeffs
-
-
-def _square_root_node(node: Node) -> Node | None:
-    """x for `x * x`."""
-    if is_tree(node, "binary") and str(node.children[1]) == "*":  # type: ignore[union-attr]
-        left, _, right = node.children  # type: ignore[union-attr]
-        if same_expression(left, right):
-            return left
-    return None
 
 
 def _related(env: Env, a: Node, op: str, b: Node) -> bool:

@@ -20,7 +20,7 @@ statements), expressions.py (the evaluator) and builtin_rules.py (the builtins' 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
@@ -28,16 +28,17 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk
 from . import types as T
-from .expressions import Evaluator
+from .expressions import Evaluator, as_polynomial
 from .ranges import INF, NONNEG, UNKNOWN, Interval
 from .scopes import Scopes, names_of
-from .statements import ForwardPass, written_targets
+from .statements import WRITING, ForwardPass, written_targets
 from .syntax import (
     array_text,
     call_args,
     callee_name,
     is_tree,
     root_variable,
+    same_expression,
     spec_text,
     swizzle_index,
     var_key,
@@ -83,11 +84,25 @@ class Model:
         self._memo: dict[int, Value] = {}
         self._globals = Scopes([dict(_shadertoy_values())])
         self._params: dict[tuple[str, int], list[Value]] = {}  # call-site facts
-        self._names: dict[int, frozenset[str]] = {}  # names_of, by id: the rounds ask again
+        # Facts of the tree's shape, by id of the node: the rounds and a loop's passes ask again.
+        self._names: dict[int, frozenset[str]] = {}  # names_of
+        self._writers: dict[int, tuple[Tree, ...]] = {}  # the nodes that may write a variable
+        self._plans: dict[int, _Region] = {}  # how `record` goes through an expression
+        self._polynomials: dict[int, tuple[Node, list[float]] | None] = {}
+        self._same_operands: dict[int, bool] = {}
         self._analysed: dict[int, _Analysed] = {}  # a function's last pass, by id of its node
         self._callees: dict[int, tuple[str, ...]] = {}  # the names a function calls, by id
         self._calls: list[tuple[tuple[str, int], list[Value]]] = []  # this pass's call sites
-        self._nodes = list(walk(tree))  # every subtree, for the passes over the whole file
+        # Every subtree (in walk order), for the passes over the whole file; each function's
+        # own, for the functions it calls: one walk for both.
+        self._nodes: list[Tree] = [tree]
+        for child in tree.children:
+            if isinstance(child, Tree):
+                nodes = list(walk(child))
+                self._nodes += nodes
+                if child.data == "function_definition":
+                    called = {callee_name(c) for c in nodes if c.data == "call"}
+                    self._callees[id(child)] = tuple(sorted(n for n in called if n))
         self._collect_structs()
         self._written = self._written_names()
         self._analyse()
@@ -178,6 +193,8 @@ class Model:
         """Names assigned anywhere in a function: such globals are unknown in every function."""
         names: set[str] = set()
         for node in self._nodes:
+            if node.data not in WRITING:
+                continue
             for target in written_targets(node, self):
                 if (name := root_variable(target)) is not None:
                     names.add(name)
@@ -204,7 +221,7 @@ class Model:
             if name == "mainImage" and pname == "fragCoord":
                 value = Value(ptype, NONNEG)
             elif facts is not None and "out" not in qualifier.split():
-                value = replace(facts[i], type=ptype, rel=(), ortho=())
+                value = facts[i].but(type=ptype, rel=(), ortho=())
             declared.append((pname, value))
         # A pass over the body depends only on what it is given: its parameters, the globals
         # and what the functions it calls return. Given the same as in the round before, it
@@ -232,12 +249,10 @@ class Model:
 
     def _callee_results(self, node: Tree) -> tuple[tuple[str, tuple[Value | None, ...]], ...]:
         """What the file's functions that `node` calls return, as far as known now."""
-        names = self._callees.get(id(node))
-        if names is None:
-            called = {callee_name(c) for c in walk(node) if c.data == "call"}
-            names = self._callees[id(node)] = tuple(sorted(n for n in called if n))
         return tuple(
-            (n, tuple(f.result for f in self.functions[n])) for n in names if n in self.functions
+            (n, tuple(f.result for f in self.functions[n]))
+            for n in self._callees[id(node)]
+            if n in self.functions
         )
 
     def declaration(self, node: Tree, scopes: Scopes, is_global: bool = False) -> None:
@@ -260,7 +275,7 @@ class Model:
                 env = scopes.env_for(init, self.names_of(init))
                 self.record(init, env)
                 got = Evaluator(self, env).eval(init)
-                value = replace(got, type=dtype)
+                value = got.but(type=dtype)
                 if is_global and not const and name in self._written:
                     value = Value(dtype)  # some function assigns it
             scopes.declare(name, value)
@@ -272,52 +287,67 @@ class Model:
             names = self._names[id(expr)] = names_of(expr)
         return names
 
+    def writers(self, expr: Tree) -> tuple[Tree, ...]:
+        """The nodes of `expr` that may write a variable (statements.WRITING), in walk order."""
+        found = self._writers.get(id(expr))
+        if found is None:
+            found = self._writers[id(expr)] = tuple(n for n in walk(expr) if n.data in WRITING)
+        return found
+
+    def polynomial(self, node: Tree) -> tuple[Node, list[float]] | None:
+        """expressions.as_polynomial, once per node."""
+        key = id(node)
+        if key not in self._polynomials:
+            self._polynomials[key] = as_polynomial(node)
+        return self._polynomials[key]
+
+    def same_operands(self, node: Tree) -> bool:
+        """Whether a binary node's operands are the same expression (syntax.same_expression)."""
+        same = self._same_operands.get(id(node))
+        if same is None:
+            same = self._same_operands[id(node)] = same_expression(
+                node.children[0], node.children[2]
+            )
+        return same
+
     # --- remembering where each expression is evaluated ------------------------------------
 
     def record(self, expr: Node, env: Env) -> None:
         """Remember the environment of every node of `expr`; branches of `?:`, `&&` and `||`
-        get the environment narrowed by the condition. Also gathers call-site facts."""
-        stack: list[tuple[Node, Env]] = [(expr, env)]
-        while stack:
-            node, here = stack.pop()
-            if not isinstance(node, Tree):
-                continue
-            self._env_of[id(node)] = here
-            kids = node.children
-            if node.data == "ternary":
-                stack += [(kids[0], here), (kids[1], self.refine(here, kids[0], True)),
-                          (kids[2], self.refine(here, kids[0], False))]  # fmt: skip
-                continue
-            if node.data == "binary" and str(kids[1]) in ("&&", "||"):
-                stack += self._short_circuit_operands(node, here)
-                continue
-            if node.data == "call" and self._collecting:
-                self._call_site(node, here)
-            stack.extend((child, here) for child in kids)
+        get the environment narrowed by the condition. Also gathers call-site facts.
 
-    def _short_circuit_operands(self, node: Tree, env: Env) -> list[tuple[Node, Env]]:
-        """The operands of `a && b && c ...` (or of `||`), each with the environment where it
-        is evaluated: narrowed by every operand before it being true (false for `||`).
+        Goes through the expression's plan (`_plan`): its regions of nodes that share an
+        environment, and in between the call sites and the branches, in the order of a
+        depth-first walk (the call sites' order is the order their facts are joined in)."""
+        work: list[tuple[_Region | Tree, Env]] = [(self._plan(expr), env)]
+        while work:
+            item, here = work.pop()
+            if isinstance(item, Tree):
+                if self._collecting:
+                    self._call_site(item, here)
+                continue
+            self._env_of.update(dict.fromkeys(item.ids, here))
+            for event in reversed(item.events):
+                if isinstance(event, Tree):
+                    work.append((event, here))
+                elif event.operator == "?:":
+                    cond = event.operands[0]
+                    work += [(event.regions[0], here),
+                             (event.regions[1], self.refine(here, cond, True)),
+                             (event.regions[2], self.refine(here, cond, False))]  # fmt: skip
+                else:
+                    # `a && b && c`: each operand where every one before it is true (false
+                    # for `||`); refining by `x && y` is refining by x, then by y.
+                    truth, envs = event.operator == "&&", [here]
+                    for operand in event.operands[:-1]:
+                        envs.append(self.refine(envs[-1], operand, truth))
+                    work += zip(event.regions, envs, strict=True)
 
-        The chain parses left-nested, `((a && b) && c)`, so narrowing each right operand by its
-        whole left side would refine the chain's prefix again at every level: quadratic in the
-        chain's length. Walking the left spine once and threading the environment gives the
-        same environments (refining by `x && y` is refining by x, then by y) in linear time."""
-        op = str(node.children[1])
-        truth = op == "&&"
-        spine = [node]  # the `&&` nodes of the chain, outermost first
-        first = node.children[0]
-        while is_tree(first, "binary") and str(first.children[1]) == op:  # type: ignore
-            spine.append(first)  # type: ignore[arg-type]
-            self._env_of[id(first)] = env
-            first = first.children[0]  # type: ignore[union-attr]
-        out: list[tuple[Node, Env]] = [(first, env)]
-        before = first
-        for link in reversed(spine):
-            env = self.refine(env, before, truth)
-            before = link.children[2]
-            out.append((before, env))
-        return out
+    def _plan(self, expr: Node) -> _Region:
+        plan = self._plans.get(id(expr))
+        if plan is None:
+            plan = self._plans[id(expr)] = _plan(expr)
+        return plan
 
     def _call_site(self, call: Tree, env: Env) -> None:
         name = callee_name(call)
@@ -379,22 +409,82 @@ class Model:
             bound = Interval(-INF, limit.hi) if op == "<=" else Interval(limit.lo, INF)
         part = "" if component is None else "." + str(target_field)
         if component is None:
-            narrowed = replace(old, range=old.range.meet(bound))
+            narrowed = old.but(range=old.range.meet(bound))
         else:
             n = T.size(old.type)
             if component >= n:
                 return env
             parts = old.parts(n)
             parts[component] = parts[component].meet(bound)
-            narrowed = replace(old, comps=tuple(parts))
+            narrowed = old.but(comps=tuple(parts))
         key = var_key(other)
         if key is not None and key[1] in env and key[1] != name:
             # x < y: y - x > 0 however y varies (while y keeps this value)
-            narrowed = replace(narrowed, rel=(*narrowed.rel, (part, op, key[0], env[key[1]])))
+            narrowed = narrowed.but(rel=(*narrowed.rel, (part, op, key[0], env[key[1]])))
         return {**env, name: narrowed} if narrowed != old else env
 
 
 _ROUNDS = 3
+
+
+@dataclass
+class _Region:
+    """Nodes of an expression evaluated in one environment (`ids`), and what `record` meets
+    among them in depth-first order (`events`): the calls of the file's functions (call sites)
+    and the branches (`?:`, `&&` and `||`), whose parts are regions of their own."""
+
+    ids: list[int] = field(default_factory=list)
+    events: list[Tree | _Branches] = field(default_factory=list)
+
+
+@dataclass
+class _Branches:
+    """A `?:` (condition, then, else) or a chain `a && b && c` (or `||`) and its operands,
+    each operand's nodes a region."""
+
+    operator: str  # "?:", "&&" or "||"
+    operands: list[Node]
+    regions: list[_Region]
+
+
+def _plan(expr: Node) -> _Region:
+    """The regions of `expr` (see _Region). A depth-first walk that takes children last first
+    (a stack), the order `record` follows; without recursion, as deep input needs."""
+    root = _Region()
+    stack: list[tuple[Node, _Region]] = [(expr, root)]
+    while stack:
+        node, region = stack.pop()
+        if not isinstance(node, Tree):
+            continue
+        region.ids.append(id(node))
+        kids = node.children
+        if node.data == "ternary":
+            branches = _Branches("?:", kids[:3], [_Region(), _Region(), _Region()])
+            stack += zip(kids, branches.regions, strict=True)
+            region.events.append(branches)
+            continue
+        if node.data == "binary" and str(kids[1]) in ("&&", "||"):
+            # The chain parses left-nested, `((a && b) && c)`: its inner links share the
+            # environment of the whole; the operands are the right sides and the innermost left.
+            op = str(kids[1])
+            operands = [kids[2]]
+            first = kids[0]
+            while is_tree(first, "binary") and str(first.children[1]) == op:  # type: ignore
+                region.ids.append(id(first))
+                operands.append(first.children[2])  # type: ignore[union-attr]
+                first = first.children[0]  # type: ignore[union-attr]
+            operands.append(first)
+            operands.reverse()
+            branches = _Branches(op, operands, [_Region() for _ in operands])
+            stack += zip(operands, branches.regions, strict=True)
+            region.events.append(branches)
+            continue
+        if node.data == "call":
+            name = callee_name(node)
+            if name is not None and name not in BUILTIN_FUNCTIONS:
+                region.events.append(node)  # a call site, if it calls a function of the file
+        stack.extend((child, region) for child in kids)
+    return root
 
 
 @dataclass
@@ -416,7 +506,7 @@ def _passed(value: Value, arg: Node) -> Value:
         line = getattr(first, "line", None)
         where = f" at line {line}" if line else ""
         what = {"dot": "dot product"}.get(value.origin, value.origin)
-        return replace(value, why=f"an unclamped {what} passed as an argument{where}")
+        return value.but(why=f"an unclamped {what} passed as an argument{where}")
     return value
 
 

@@ -18,17 +18,18 @@ INF = math.inf
 HALF_PI = math.pi / 2
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Interval:
     lo: float = -INF
     hi: float = INF
 
-    def __post_init__(self) -> None:
-        # A NaN bound (inf - inf, 0 * inf) would make every comparison false: widen instead.
-        if math.isnan(self.lo):
-            object.__setattr__(self, "lo", -INF)
-        if math.isnan(self.hi):
-            object.__setattr__(self, "hi", INF)
+    def __init__(self, lo: float = -INF, hi: float = INF) -> None:
+        # A NaN bound (inf - inf, 0 * inf) would make every comparison false: widen instead
+        # (x != x only for NaN). Written out rather than the frozen dataclass's __init__ and a
+        # __post_init__: the model makes intervals by the million, and this is a third of it.
+        fields = self.__dict__
+        fields["lo"] = -INF if lo != lo else lo
+        fields["hi"] = INF if hi != hi else hi
 
     # --- construction ----------------------------------------------------------------------
 

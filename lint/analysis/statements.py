@@ -6,14 +6,14 @@ into what the function returns."""
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Protocol
 
 from lark import Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
-from ..context import Node, walk
+from ..context import Node
 from .expressions import ASSIGN_OPS, Evaluator, ModelView
 from .scopes import Scopes, join_scopes, widen
 from .syntax import call_args, callee_name, is_tree, root_variable, spec_text
@@ -34,6 +34,8 @@ class ModelForPass(ModelView, Protocol):
 
     def names_of(self, expr: Node) -> frozenset[str]: ...
 
+    def writers(self, expr: Tree) -> tuple[Tree, ...]: ...
+
 
 @dataclass
 class _Loop:
@@ -43,7 +45,7 @@ class _Loop:
 
 
 # The nodes that may write a variable (written_targets).
-_WRITING = frozenset({"assignment", "postfix", "prefix", "call"})
+WRITING = frozenset({"assignment", "postfix", "prefix", "call"})
 
 
 def written_targets(node: Tree, model: ModelForPass | None) -> Iterable[Node]:
@@ -101,7 +103,7 @@ class ForwardPass:
         result = self.returns[0]
         for r in self.returns[1:]:
             result = result.join(r)
-        return replace(result, type=self.fn.return_type)
+        return result.but(type=self.fn.return_type)
 
     def statement(self, stmt: Node, scopes: Scopes) -> None:
         if not isinstance(stmt, Tree):
@@ -221,7 +223,7 @@ class ForwardPass:
             name
             for part in (cond, update, body)
             if isinstance(part, Tree)
-            for n in walk(part)
+            for n in self.model.writers(part)
             for t in written_targets(n, self.model)
             if (name := root_variable(t)) is not None
         }
@@ -295,9 +297,7 @@ class ForwardPass:
             self.effects(rhs, scopes)
             self._assign(target, str(op), expr, scopes)
             return
-        for node in walk(expr):
-            if node.data not in _WRITING:
-                continue
+        for node in self.model.writers(expr):
             for target in written_targets(node, self.model):
                 name = root_variable(target)
                 old = scopes.lookup(name) if name else None
@@ -313,6 +313,6 @@ class ForwardPass:
         if op not in ("=", *ASSIGN_OPS):
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
-            scopes.assign(name, replace(got, type=old.type))
+            scopes.assign(name, got.but(type=old.type))
         else:  # one component or element: each is now the old value or the new one
             scopes.assign(name, Value(old.type, old.range.hull(got.range)))

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Sequence
+from functools import lru_cache
 
 from glint.compiler.glsl.keywords import words
 from glint.compiler.target.shadertoy import UNIFORMS
@@ -25,6 +26,7 @@ SHADERTOY_TYPES.update(
 )  # fmt: skip
 
 
+@lru_cache(maxsize=4096)  # few distinct types, asked about a million times in the corpus
 def components(t: Type) -> tuple[str, int] | None:
     """("float", 3) for vec3, ("int", 1) for int; None for matrices, arrays, structs."""
     if t in SCALARS:
@@ -33,6 +35,7 @@ def components(t: Type) -> tuple[str, int] | None:
     return (_PREFIX_BASE[m.group(1)], int(m.group(2))) if m else None
 
 
+@lru_cache(maxsize=4096)
 def matrix_shape(t: Type) -> tuple[int, int] | None:
     """(columns, rows) of a matrix type."""
     m = _MAT.match(t or "")

@@ -15,7 +15,7 @@ from .ranges import UNKNOWN, Interval, hull_all
 Env = Mapping[str, "Value"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Value:
     """What the model knows about a value: GLSL type, range (hull of the components), whether
     it is a unit vector, and its origin: the builtin that produced it ("dot", "length",
@@ -41,9 +41,37 @@ class Value:
     # operands, and so normalize(cross(a, b)).
     ortho: tuple[tuple[str, Value], ...] = ()
 
-    def __post_init__(self) -> None:
-        if self.comps is not None:  # the range is always the hull of the components
-            object.__setattr__(self, "range", hull_all(self.comps))
+    def __init__(
+        self,
+        type: str | None = None,
+        range: Interval = UNKNOWN,
+        unit: bool = False,
+        origin: str | None = None,
+        zero: bool = False,
+        comps: tuple[Interval, ...] | None = None,
+        why: str | None = None,
+        rel: tuple[tuple[str, str, str, Value], ...] = (),
+        ortho: tuple[tuple[str, Value], ...] = (),
+    ) -> None:
+        # Written out rather than the frozen dataclass's __init__ (a setattr per field): the
+        # model makes values by the hundred thousand.
+        if comps is not None:  # the range is always the hull of the components
+            range = hull_all(comps)
+        fields = self.__dict__
+        fields["type"], fields["range"], fields["unit"] = type, range, unit
+        fields["origin"], fields["zero"], fields["comps"] = origin, zero, comps
+        fields["why"], fields["rel"], fields["ortho"] = why, rel, ortho
+
+    def but(self, **changes: object) -> Value:
+        """This value with some fields changed: dataclasses.replace, without its cost (it
+        builds the keyword arguments of every field and runs __init__ again)."""
+        new = object.__new__(Value)
+        fields = new.__dict__
+        fields.update(self.__dict__)
+        fields.update(changes)
+        if fields["comps"] is not None and ("comps" in changes or "range" in changes):
+            fields["range"] = hull_all(fields["comps"])  # type: ignore[arg-type]
+        return new
 
     def parts(self, n: int) -> list[Interval]:
         """n component ranges: the known ones, else the hull for each (a scalar broadcasts)."""
