@@ -87,7 +87,7 @@ class LintContext:
             return []
         if self._index is None:
             self._index = {}
-            if not _is_indexed(self.tree):
+            if _index_of(self.tree) is None:
                 for node in _walk(self.tree):
                     self._index.setdefault(node.data, []).append(node)
                 self._all_kinds = True
@@ -102,11 +102,8 @@ class LintContext:
         """The parent of every subtree and token of the file, by id() (lark nodes hash by
         value, not identity); built once per file for all rules. Empty without a tree."""
         if self._parents is None:
-            self._parents = {}
-            if self.tree is not None:
-                self._parents = {
-                    id(child): node for node in walk(self.tree) for child in node.children
-                }
+            nodes = walk(self.tree) if self.tree is not None else ()
+            self._parents = {id(child): node for node in nodes for child in node.children}
         return self._parents
 
     # --- positions ------------------------------------------------------------------------
@@ -285,8 +282,9 @@ class TreeIndex:
         return [n for _, n in sorted(pairs, key=itemgetter(0))]
 
 
-def _is_indexed(tree: Tree) -> bool:
-    return any(index.order[0] is tree for index in _INDEXES)
+def _index_of(tree: Tree) -> TreeIndex | None:
+    """The index of this whole tree, when an `indexed` block made one."""
+    return next((index for index in _INDEXES if index.order[0] is tree), None)
 
 
 # The indexes `walk` looks in: those of the trees inside an `indexed` block (one per file being
@@ -298,13 +296,10 @@ _INDEXES: list[TreeIndex] = []
 def indexed(tree: Tree | None) -> Iterator[TreeIndex | None]:
     """Within the block, `walk` of the tree or any of its subtrees slices one pre-order list
     built on entry. The tree must not be changed inside the block."""
-    if tree is None:
-        yield None
+    known = _index_of(tree) if tree is not None else None
+    if tree is None or known is not None:  # nothing to index, or an enclosing block did
+        yield known
         return
-    for known in _INDEXES:
-        if known.order[0] is tree:  # already indexed by an enclosing block
-            yield known
-            return
     index = TreeIndex(tree)
     _INDEXES.append(index)
     try:

@@ -67,26 +67,38 @@ class Evaluator:
     """Evaluates an expression in an environment (plain recursion on expressions: the runner
     turns a RecursionError on absurdly deep input into finding C006)."""
 
-    def __init__(self, model: ModelView, env: Env, memo: dict[int, Value] | None = None) -> None:
+    def __init__(
+        self,
+        model: ModelView,
+        env: Env,
+        memo: dict[int, Value] | None = None,
+        seen: dict[int, Value] | None = None,
+    ) -> None:
+        """`memo`: the model's values of nodes where it recorded them (each child is then
+        evaluated in its own recorded environment); `seen`: values of nodes already evaluated
+        in this very environment (a statement's call sites, then the statement)."""
         self.model = model
         self.env = env
         self.memo = memo
+        self.known = memo if memo is not None else seen
+        if memo is None:  # children are evaluated here, in this environment: skip a call
+            self._sub = self.eval  # type: ignore[method-assign]
 
     def eval(self, node: Node) -> Value:
         if not isinstance(node, Tree):
             return Value()
-        memo = self.memo
-        if memo is not None and (known := memo.get(id(node))) is not None:
-            return known
+        known = self.known
+        if known is not None and (value := known.get(id(node))) is not None:
+            return value
         handler = _HANDLERS.get(node.data)
         value = handler(self, node) if handler is not None else Value()
-        if memo is not None:
-            memo[id(node)] = value
+        if known is not None:
+            known[id(node)] = value
         return value
 
     def _sub(self, node: Node) -> Value:
         """A child evaluated where the model recorded it (narrowed branches), if it did."""
-        if self.memo is not None and isinstance(node, Tree):
+        if isinstance(node, Tree):
             return self.model.value_of(node)
         return self.eval(node)
 

@@ -90,6 +90,7 @@ class Model:
         self._plans: dict[int, _Region] = {}  # how `record` goes through an expression
         self._polynomials: dict[int, tuple[Node, list[float]] | None] = {}
         self._same_operands: dict[int, bool] = {}
+        self._declared: dict[int, tuple[bool, list[tuple[str, str, Node | None]]]] = {}
         self._analysed: dict[int, _Analysed] = {}  # a function's last pass, by id of its node
         self._callees: dict[int, tuple[str, ...]] = {}  # the names a function calls, by id
         self._calls: list[tuple[tuple[str, int], list[Value]]] = []  # this pass's call sites
@@ -256,6 +257,25 @@ class Model:
         )
 
     def declaration(self, node: Tree, scopes: Scopes, is_global: bool = False) -> None:
+        const, declared = self._declarators(node)
+        for name, dtype, init in declared:
+            value = Value(dtype)
+            if init is not None:
+                env = scopes.env_for(init, self.names_of(init))
+                seen: dict[int, Value] = {}
+                self.record(init, env, seen)
+                got = Evaluator(self, env, seen=seen).eval(init)
+                value = got.but(type=dtype)
+                if is_global and not const and name in self._written:
+                    value = Value(dtype)  # some function assigns it
+            scopes.declare(name, value)
+
+    def _declarators(self, node: Tree) -> tuple[bool, list[tuple[str, str, Node | None]]]:
+        """Whether a variable declaration is const, and its (name, type, initializer)s: read
+        from the tree once for all the passes."""
+        found = self._declared.get(id(node))
+        if found is not None:
+            return found
         full_type = node.children[0]
         spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
         base = spec_text(spec)  # type: ignore[arg-type]
@@ -263,22 +283,16 @@ class Model:
             is_tree(q, "type_qualifier") and "const" in (str(t) for t in q.children)
             for q in full_type.children
         )
+        declared: list[tuple[str, str, Node | None]] = []
         for decl in node.children[1:]:
             if not is_tree(decl, "declarator"):
                 continue
             name = str(decl.children[0])
             arrays = [array_text(c) for c in decl.children[1:] if is_tree(c, "array_specifier")]
-            dtype = base + "".join(arrays)
             init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
-            value = Value(dtype)
-            if init is not None:
-                env = scopes.env_for(init, self.names_of(init))
-                self.record(init, env)
-                got = Evaluator(self, env).eval(init)
-                value = got.but(type=dtype)
-                if is_global and not const and name in self._written:
-                    value = Value(dtype)  # some function assigns it
-            scopes.declare(name, value)
+            declared.append((name, base + "".join(arrays), init))
+        found = self._declared[id(node)] = (const, declared)
+        return found
 
     def names_of(self, expr: Node) -> frozenset[str]:
         """The names in `expr` (scopes.names_of), once per expression for all the rounds."""
@@ -312,9 +326,10 @@ class Model:
 
     # --- remembering where each expression is evaluated ------------------------------------
 
-    def record(self, expr: Node, env: Env) -> None:
+    def record(self, expr: Node, env: Env, seen: dict[int, Value] | None = None) -> None:
         """Remember the environment of every node of `expr`; branches of `?:`, `&&` and `||`
-        get the environment narrowed by the condition. Also gathers call-site facts.
+        get the environment narrowed by the condition. Also gathers call-site facts; the
+        values of arguments evaluated in `env` itself go into `seen` (Evaluator's).
 
         Goes through the expression's plan (`_plan`): its regions of nodes that share an
         environment, and in between the call sites and the branches, in the order of a
@@ -324,7 +339,7 @@ class Model:
             item, here = work.pop()
             if isinstance(item, Tree):
                 if self._collecting:
-                    self._call_site(item, here)
+                    self._call_site(item, here, seen if here is env else None)
                 continue
             self._env_of.update(dict.fromkeys(item.ids, here))
             for event in reversed(item.events):
@@ -349,12 +364,12 @@ class Model:
             plan = self._plans[id(expr)] = _plan(expr)
         return plan
 
-    def _call_site(self, call: Tree, env: Env) -> None:
+    def _call_site(self, call: Tree, env: Env, seen: dict[int, Value] | None) -> None:
         name = callee_name(call)
         args = call_args(call)
         if name is None or name in BUILTIN_FUNCTIONS or self.function(name, len(args)) is None:
             return
-        ev = Evaluator(self, env)
+        ev = Evaluator(self, env, seen=seen)
         values = [_passed(ev.eval(a), a) for a in args]
         key = (name, len(args))
         self._calls.append((key, values))

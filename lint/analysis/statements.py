@@ -30,7 +30,7 @@ class ModelForPass(ModelView, Protocol):
 
     def declaration(self, node: Tree, scopes: Scopes, is_global: bool = False) -> None: ...
 
-    def record(self, expr: Node, env: Env) -> None: ...
+    def record(self, expr: Node, env: Env, seen: dict[int, Value] | None = None) -> None: ...
 
     def names_of(self, expr: Node) -> frozenset[str]: ...
 
@@ -132,10 +132,11 @@ class ForwardPass:
         kind = str(node.children[0])
         if kind == "return" and len(node.children) > 1:
             expr = node.children[1]
-            self.expression(expr, scopes)
+            recorded = self.expression(expr, scopes)
             if not scopes.dead:
                 env = scopes.env_for(expr, self.model.names_of(expr))
-                self.returns.append(Evaluator(self.model, env).eval(expr))
+                seen = recorded[1] if _same_env(env, recorded[0]) else None
+                self.returns.append(Evaluator(self.model, env, seen=seen).eval(expr))
         elif kind == "break" and self.loops:
             self.loops[-1].breaks.append(scopes.copy())
         elif kind == "continue":
@@ -279,13 +280,20 @@ class ForwardPass:
 
     # --- expressions -----------------------------------------------------------------------
 
-    def expression(self, expr: Node, scopes: Scopes) -> None:
-        self.model.record(expr, scopes.env_for(expr, self.model.names_of(expr)))
-        self.effects(expr, scopes)
+    def expression(self, expr: Node, scopes: Scopes) -> tuple[Env, dict[int, Value]]:
+        """Record the expression where it is evaluated and apply its effects. Returns the
+        environment it was recorded in, with the values already evaluated there."""
+        env = scopes.env_for(expr, self.model.names_of(expr))
+        seen: dict[int, Value] = {}
+        self.model.record(expr, env, seen)
+        self.effects(expr, scopes, recorded=(expr, env, seen))
+        return env, seen
 
-    def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False) -> None:
+    def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False,
+                recorded: tuple[Node, Env, dict[int, Value]] | None = None) -> None:  # fmt: skip
         """Apply what an expression writes: top-level assignments exactly (`x = e`, `x += e`,
-        a sequence of them), any other write makes its variable unknown."""
+        a sequence of them), any other write makes its variable unknown. `recorded`: an
+        expression `record` went through, its environment and the values found there."""
         if not isinstance(expr, Tree):
             return
         if not nested_only and expr.data == "sequence":
@@ -295,7 +303,7 @@ class ForwardPass:
         if not nested_only and expr.data == "assignment":
             target, op, rhs = expr.children
             self.effects(rhs, scopes)
-            self._assign(target, str(op), expr, scopes)
+            self._assign(target, str(op), expr, scopes, recorded)
             return
         for node in self.model.writers(expr):
             for target in written_targets(node, self.model):
@@ -304,15 +312,25 @@ class ForwardPass:
                 if name and old is not None:
                     scopes.assign(name, old.unknown())
 
-    def _assign(self, target: Node, op: str, expr: Tree, scopes: Scopes) -> None:
+    def _assign(self, target: Node, op: str, expr: Tree, scopes: Scopes,
+                recorded: tuple[Node, Env, dict[int, Value]] | None) -> None:  # fmt: skip
         name = root_variable(target)
         old = scopes.lookup(name) if name else None
         if name is None or old is None:
             return
-        got = Evaluator(self.model, scopes.env_for(expr, self.model.names_of(expr))).eval(expr)
+        env = scopes.env_for(expr, self.model.names_of(expr))
+        seen = None
+        if recorded is not None and recorded[0] is expr and _same_env(env, recorded[1]):
+            seen = recorded[2]  # nothing before this changed what the expression reads
+        got = Evaluator(self.model, env, seen=seen).eval(expr)
         if op not in ("=", *ASSIGN_OPS):
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
             scopes.assign(name, got.but(type=old.type))
         else:  # one component or element: each is now the old value or the new one
             scopes.assign(name, Value(old.type, old.range.hull(got.range)))
+
+
+def _same_env(a: Env, b: Env) -> bool:
+    """Whether two environments hold the very same values (so evaluate alike)."""
+    return a.keys() == b.keys() and all(a[name] is b[name] for name in a)

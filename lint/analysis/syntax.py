@@ -17,25 +17,29 @@ def is_tree(node: object, *kinds: str) -> bool:
     return isinstance(node, Tree) and (not kinds or node.data in kinds)
 
 
+# The helpers below test `isinstance(..., Tree)` and `.data` themselves rather than through
+# is_tree: the semantic model calls them by the hundred thousand.
+
+
 def callee_name(call: Tree) -> str | None:
     """`f` for a call `f(...)`; None for a method call such as `v.length()`."""
     head = call.children[0]
-    return str(head.children[0]) if is_tree(head, "variable") else None
+    return str(head.children[0]) if isinstance(head, Tree) and head.data == "variable" else None
 
 
 def call_args(call: Tree) -> list[Node]:
     """The argument expressions of a call or constructor."""
     for child in call.children[1:]:
-        if is_tree(child, "arguments"):
+        if isinstance(child, Tree) and child.data == "arguments":
             return list(child.children)
     return []
 
 
 def root_variable(node: Node) -> str | None:
     """`v` for `v`, `v.x`, `v[i].y`: the variable an lvalue writes."""
-    while is_tree(node, "field", "index"):
-        node = node.children[0]  # type: ignore[union-attr]
-    return str(node.children[0]) if is_tree(node, "variable") else None  # type: ignore[union-attr]
+    while isinstance(node, Tree) and node.data in ("field", "index"):
+        node = node.children[0]
+    return str(node.children[0]) if isinstance(node, Tree) and node.data == "variable" else None
 
 
 def spec_text(spec: Tree) -> str:

@@ -5,6 +5,9 @@
   included (test_parser.py checks the nesting of every precedence level).
 - Unit rules hand their child on without lark's tree-building wrappers
   (parser._pass_unit_rules_through); the tree must not change at all.
+
+`parse` runs the fast parser (test_fast_parser.py compares it on every corpus shader), so the
+comparison here covers the three together.
 """
 
 from __future__ import annotations
