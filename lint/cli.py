@@ -7,6 +7,7 @@ Exit codes: 0 clean, 1 findings, 2 usage or internal error.
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import sys
 from pathlib import Path
@@ -197,6 +198,10 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
                 results[index] = LintResult(name, found, decode(content, name)[0])
     todo = [index for index, result in enumerate(results) if result is None]
     items = [(names[index], data[index]) for index in todo]
+    # What is alive now (modules, rules, parser tables) lives as long as this command: the
+    # cycle collector need not scan it again and again while files are linted. It spent a
+    # fifth of a cold run's CPU doing so; forked workers inherit the frozen objects too.
+    gc.freeze()
     fresh = lint_items(items, options, args.fix, args.unsafe_fixes, args.jobs)
     for index, result in zip(todo, fresh, strict=True):
         results[index] = result

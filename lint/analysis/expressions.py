@@ -81,8 +81,6 @@ class Evaluator:
         self.env = env
         self.memo = memo
         self.known = memo if memo is not None else seen
-        if memo is None:  # children are evaluated here, in this environment: skip a call
-            self._sub = self.eval  # type: ignore[method-assign]
 
     def eval(self, node: Node) -> Value:
         if not isinstance(node, Tree):
@@ -96,11 +94,10 @@ class Evaluator:
             known[id(node)] = value
         return value
 
-    def _sub(self, node: Node) -> Value:
-        """A child evaluated where the model recorded it (narrowed branches), if it did."""
-        if isinstance(node, Tree):
-            return self.model.value_of(node)
-        return self.eval(node)
+    # A child is evaluated here, in this environment (RecordedEvaluator looks it up instead).
+    # A class attribute, not `self._sub = self.eval`: a bound method kept on its own instance
+    # is a reference cycle, and every evaluator would wait for the cycle collector.
+    _sub = eval
 
     # --- leaves ----------------------------------------------------------------------------
 
@@ -393,6 +390,16 @@ def _zero_of(op: str, a: Value, b: Value) -> bool:
     return op == "/" and a.zero
 
 
+class RecordedEvaluator(Evaluator):
+    """An evaluator whose children take the values the model recorded for them, each in its
+    own environment (narrowed branches), where it recorded one."""
+
+    def _sub(self, node: Node) -> Value:
+        if isinstance(node, Tree):
+            return self.model.value_of(node)
+        return self.eval(node)
+
+
 _POLY_SIZE = 64  # nodes: longer expressions are left to interval arithmetic
 
 
@@ -405,59 +412,61 @@ def as_polynomial(node: Tree) -> tuple[Node, list[float]] | None:
     None otherwise."""
     atoms: list[Node] = []
     budget = [_POLY_SIZE]
-
-    def poly(n: Node) -> list[float] | None:
-        budget[0] -= 1
-        if budget[0] < 0 or not isinstance(n, Tree):
-            return None
-        if n.data in ("float_literal", "int_literal"):
-            text = str(n.children[0]).rstrip("fFuU")
-            try:
-                return [float(text) if n.data == "float_literal" else float(int_value(text) or 0)]
-            except ValueError:
-                return None
-        if n.data == "unary" and str(n.children[0]) in "+-":
-            inner = poly(n.children[1])
-            if inner is None:
-                return None
-            return inner if str(n.children[0]) == "+" else [-c for c in inner]
-        if n.data == "binary" and str(n.children[1]) in ("+", "-", "*", "/"):
-            op = str(n.children[1])
-            a, b = poly(n.children[0]), poly(n.children[2])
-            if a is None or b is None:
-                return None
-            if op == "/":
-                if len(b) != 1 or b[0] == 0:
-                    return None
-                return [c / b[0] for c in a]
-            if op == "*":
-                if len(a) + len(b) - 1 > _POLY_DEGREE + 1:
-                    return None
-                out = [0.0] * (len(a) + len(b) - 1)
-                for i, x in enumerate(a):
-                    for j, y in enumerate(b):
-                        out[i + j] += x * y
-                return out
-            sign = 1.0 if op == "+" else -1.0
-            out = [0.0] * max(len(a), len(b))
-            for i, x in enumerate(a):
-                out[i] += x
-            for i, y in enumerate(b):
-                out[i] += sign * y
-            return out
-        if n.data in ("variable", "field", "index", "call"):
-            if atoms and not same_expression(atoms[0], n):
-                return None
-            if not atoms and not same_expression(n, n):
-                return None  # a call with side effects is not one value
-            atoms.append(n)
-            return [0.0, 1.0]
-        return None
-
-    coeffs = poly(node)
+    coeffs = _poly(node, atoms, budget)
     if coeffs is None or len(atoms) < 2:
         return None
     return atoms[0], coeffs
+
+
+def _poly(n: Node, atoms: list[Node], budget: list[int]) -> list[float] | None:
+    """`n`'s coefficients in the one expression `atoms` collects (a module function, not a
+    recursive closure: a closure that calls itself is a reference cycle left to the collector)."""
+    budget[0] -= 1
+    if budget[0] < 0 or not isinstance(n, Tree):
+        return None
+    if n.data in ("float_literal", "int_literal"):
+        text = str(n.children[0]).rstrip("fFuU")
+        try:
+            return [float(text) if n.data == "float_literal" else float(int_value(text) or 0)]
+        except ValueError:
+            return None
+    if n.data == "unary" and str(n.children[0]) in "+-":
+        inner = _poly(n.children[1], atoms, budget)
+        if inner is None:
+            return None
+        return inner if str(n.children[0]) == "+" else [-c for c in inner]
+    if n.data == "binary" and str(n.children[1]) in ("+", "-", "*", "/"):
+        op = str(n.children[1])
+        a, b = _poly(n.children[0], atoms, budget), _poly(n.children[2], atoms, budget)
+        if a is None or b is None:
+            return None
+        if op == "/":
+            if len(b) != 1 or b[0] == 0:
+                return None
+            return [c / b[0] for c in a]
+        if op == "*":
+            if len(a) + len(b) - 1 > _POLY_DEGREE + 1:
+                return None
+            out = [0.0] * (len(a) + len(b) - 1)
+            for i, x in enumerate(a):
+                for j, y in enumerate(b):
+                    out[i + j] += x * y
+            return out
+        sign = 1.0 if op == "+" else -1.0
+        out = [0.0] * max(len(a), len(b))
+        for i, x in enumerate(a):
+            out[i] += x
+        for i, y in enumerate(b):
+            out[i] += sign * y
+        return out
+    if n.data in ("variable", "field", "index", "call"):
+        if atoms and not same_expression(atoms[0], n):
+            return None
+        if not atoms and not same_expression(n, n):
+            return None  # a call with side effects is not one value
+        atoms.append(n)
+        return [0.0, 1.0]
+    return None
 
 
 def _related(env: Env, a: Node, op: str, b: Node) -> bool:

@@ -28,7 +28,7 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk
 from . import types as T
-from .expressions import Evaluator, as_polynomial
+from .expressions import Evaluator, RecordedEvaluator, as_polynomial
 from .ranges import INF, NONNEG, UNKNOWN, Interval
 from .scopes import Scopes, names_of
 from .statements import WRITING, ForwardPass, written_targets
@@ -114,7 +114,7 @@ class Model:
         key = id(expr)
         if key not in self._memo:
             env = self._env_of.get(key, self._global_env)
-            self._memo[key] = Evaluator(self, env, self._memo).eval(expr)
+            self._memo[key] = RecordedEvaluator(self, env, self._memo).eval(expr)
         return self._memo[key]
 
     def type_of(self, expr: Node) -> str | None:
