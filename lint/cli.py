@@ -14,6 +14,7 @@ from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
 from glint.compiler.files import write_atomic
+from glint.compiler.glsl.parser import prepare_parser
 from glint.compiler.target.shadertoy import TARGETS
 
 from .cache import LintCache, cache_directory
@@ -201,6 +202,8 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     # What is alive now (modules, rules, parser tables) lives as long as this command: the
     # cycle collector need not scan it again and again while files are linted. It spent a
     # fifth of a cold run's CPU doing so; forked workers inherit the frozen objects too.
+    if items:
+        prepare_parser()
     gc.freeze()
     fresh = lint_items(items, options, args.fix, args.unsafe_fixes, args.jobs)
     for index, result in zip(todo, fresh, strict=True):

@@ -677,6 +677,12 @@ def _fast_parser() -> _FastParser | None:
         return None
 
 
+def prepare_parser() -> None:
+    """Build the parser's tables now rather than at the first parse (worker processes forked
+    afterwards share them instead of each building its own)."""
+    _fast_parser()
+
+
 def parse(text: str, filename: str = "<input>") -> Tree:
     """Parse preprocessed GLSL; raise GLSLSyntaxError with the position in `text`."""
     fast = _fast_parser()
