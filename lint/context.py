@@ -13,7 +13,7 @@ from typing import Any
 from lark import Token, Tree
 
 from glint.compiler.errors import InputError
-from glint.compiler.glsl import ModuleSymbols, Preprocessed
+from glint.compiler.glsl import Preprocessed
 from glint.compiler.target.glslang import Diagnostic, validate
 
 from .finding import Edit, Finding, Fix, Severity
@@ -52,7 +52,6 @@ class LintContext:
     target: str = "shadertoy"  # shadertoy, webgl2 or desktop
     pre: Preprocessed | None = None  # None when preprocessing failed
     tree: Tree | None = None  # None when the file did not parse
-    symbols: ModuleSymbols | None = None
     use_glslang: bool = True
     front_end_error: InputError | None = None  # why preprocessing or parsing failed
     read_problem: str = ""  # why the file's bytes are not text to lint

@@ -9,8 +9,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 from glint.compiler.errors import InputError
-from glint.compiler.glsl import parse, preprocess, symbols_of
-from glint.compiler.target.shadertoy import UNIFORM_NAMES
+from glint.compiler.glsl import parse, preprocess
 
 from .context import MAX_NESTING, LintContext, indexed
 from .finding import Finding
@@ -65,11 +64,10 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
         return ctx
     try:
         ctx.tree = parse(ctx.pre.text, file)
-        ctx.symbols = symbols_of(ctx.tree, ctx.pre, provided=UNIFORM_NAMES)
     except InputError as exc:
         ctx.front_end_error = exc
     except RecursionError:
-        # A tree the symbol walk cannot follow, rules cannot either: C006 alone is reported.
+        # Input nested deeper than the parser can follow: C006 alone is reported.
         ctx.tree = None
         ctx.too_deep = True
     return ctx
