@@ -105,6 +105,17 @@ def _with_defaults(text: str) -> str:
     return text
 
 
+def _flip_against_glint(live_site: LiveSite, shader: str, seen: np.ndarray) -> float:
+    """Mean FLIP of the canvas's pixels against `glint render` of its shader (a path under the
+    docs folder) at the manifest's defaults, at the canvas's size and time."""
+    text = (live_site.docs / shader).read_text()
+    height, width = seen.shape[:2]
+    reference = glint.render(_with_defaults(text), size=(width, height), time=1.0)
+    error = flip_error(reference.pixels, seen)
+    print(f"{shader}: {width}x{height}, mean FLIP {error:.5f}")
+    return error
+
+
 def _no_problems(log: PageLog) -> None:
     assert log.console_errors == [] and log.page_errors == [], log.problems()
 
@@ -118,12 +129,7 @@ def test_canvas_draws_what_glint_renders(
     _drawn(page)
     seen = _pixels(page)
     assert seen.mean() > 0.05, "the canvas is black"
-    text = (live_site.docs / "img" / "live" / f"{shader}.glsl").read_text()
-    height, width = seen.shape[:2]
-    reference = glint.render(_with_defaults(text), size=(width, height), time=1.0)
-    error = flip_error(reference.pixels, seen)
-    print(f"{shader}: {width}x{height}, mean FLIP {error:.5f}")
-    assert error < FLIP_LIMIT
+    assert _flip_against_glint(live_site, f"img/live/{shader}.glsl", seen) < FLIP_LIMIT
     _no_problems(log)
 
 
@@ -206,11 +212,7 @@ def test_a_slot_pages_selector_swaps_the_variant_on_its_canvas(
         arg=chosen,
         timeout=60_000,
     )
-    seen = _pixels(page)
-    text = (live_site.docs / chosen).read_text()
-    height, width = seen.shape[:2]
-    reference = glint.render(_with_defaults(text), size=(width, height), time=1.0)
-    assert flip_error(reference.pixels, seen) < FLIP_LIMIT
+    assert _flip_against_glint(live_site, chosen, _pixels(page)) < FLIP_LIMIT
     # the new shader's parameters got sliders, and only one set of them
     assert page.locator(".glint-live-controls button").count() == 1
     _no_problems(log)
