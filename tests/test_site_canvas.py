@@ -288,20 +288,16 @@ COVERAGE_BATCH = 12  # canvases per page: Chrome keeps about 16 WebGL contexts a
 
 
 def _every_variant_live_shader() -> dict[str, str]:
-    """Each variant's live shader as a full build makes it (the scene of its picture with the
-    variant, for webgl2 with parameters as uniforms), composed without rendering."""
+    """Each variant's live shader as a full build makes it (the composition of its picture,
+    for webgl2 with parameters as uniforms), composed without rendering."""
     from glint.compiler.catalog.loader import load_catalog
-    from glint.compiler.catalog.slots import SLOTS
-    from glint.compiler.site.pictures import scene_using
+    from glint.compiler.site.pictures import Picture, picture_composition
 
     shaders = {}
     for snippet in load_catalog().snippets.values():
-        spec, scene = SLOTS.get(snippet.slot), scene_using(snippet.slot)
-        if spec is None or spec.many or scene is None:
-            continue  # a library snippet, or a slot no example scene takes: no picture
-        shader = glint.compose(scene[0], variants={snippet.slot: snippet.variant})
-        if shader.plan.choices.get(snippet.slot) == snippet.id:
-            shaders[snippet.id] = shader.retarget("webgl2", params_as_uniforms=True).text
+        composed = picture_composition(snippet.slot, snippet.variant)
+        if not isinstance(composed, Picture):  # a Picture says why there is none
+            shaders[snippet.id] = composed[0].retarget("webgl2", params_as_uniforms=True).text
     return shaders
 
 

@@ -90,8 +90,10 @@ def variant_pictures(
     return result
 
 
-def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Picture:
-    """One variant's picture; its PNG goes into `result.files`."""
+def picture_composition(slot: str, variant: str) -> tuple[glint.Shader, str | None] | Picture:
+    """The composition a variant's picture shows (the scene of `scene_using` with the variant)
+    and that scene's file as the page names it; where there is none, the Picture that says
+    why."""
     snippet_id = f"{slot}.{variant}"
     spec = SLOTS.get(slot)
     if spec is None or spec.many:
@@ -108,10 +110,21 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         return Picture(scene_file=scene_file, note=f"No picture: {label} fails to compose with it.")
     if shader.plan.choices.get(slot) != snippet_id:
         return Picture(scene_file=scene_file, note=f"No picture: {label} does not take it.")
+    return shader, scene_file
+
+
+def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Picture:
+    """One variant's picture; its PNG goes into `result.files`."""
+    snippet_id = f"{slot}.{variant}"
+    composed = picture_composition(slot, variant)
+    if isinstance(composed, Picture):
+        return composed
+    shader, scene_file = composed
     try:
         png, rendered = render_cached(shader, cache_dir)
     except glint.InputError as error:
         log.warning("site: no picture for %s: %s", snippet_id, error)
+        label = Picture(scene_file=scene_file).scene
         return Picture(scene_file=scene_file, note=f"No picture: {label} fails to render.")
     result.rendered += rendered
     live = shader.retarget("webgl2", params_as_uniforms=True).text  # emitted again, not composed

@@ -57,51 +57,48 @@ def scene_pages(
     out = ScenePages()
     renders: dict[tuple[str, str], PurePosixPath] = {}
     pixels: dict[tuple[str, str], np.ndarray] = {}
-    if cache_dir is not None:
-        for scene in example_scenes():
-            if pictured is not None and scene.stem not in pictured:
-                continue
-            for tier in TIERS:
-                png = _render(scene, tier, cache_dir)
-                if png is None:
-                    continue
-                path = SCENE_PICTURES / f"{scene.stem}-{tier}.png"
-                out.files[path] = png
-                renders[(scene.stem, tier)] = path
-                pixels[(scene.stem, tier)] = png_pixels(png)
     live: dict[str, PurePosixPath] = {}
     live_tiers: dict[tuple[str, str], PurePosixPath] = {}
     for scene in example_scenes():
-        # the scene as written (its own tier), then at every tier for the tiers page's tabs
+        pictures = cache_dir is not None and (pictured is None or scene.stem in pictured)
+        # the scene as written (its own tier, live on the scene reference), then at every
+        # tier (pictured, and live in the tiers page's tabs): each composed once
         for tier in (None, *TIERS):
-            path = LIVE_DIR / f"scene-{scene.stem}{'-' + tier if tier else ''}.glsl"
-            shader = _live_shader(scene, tier)
+            shader = _compose(scene, tier)
             if shader is None:
                 continue
-            out.files[path] = shader.encode("utf-8")
+            path = LIVE_DIR / f"scene-{scene.stem}{'-' + tier if tier else ''}.glsl"
+            live_text = shader.retarget("webgl2", params_as_uniforms=True).text
+            out.files[path] = live_text.encode("utf-8")
             if tier is None:
                 live[scene.stem] = path
-            else:
-                live_tiers[(scene.stem, tier)] = path
+                continue
+            live_tiers[(scene.stem, tier)] = path
+            png = _render(shader, scene, tier, cache_dir) if pictures and cache_dir else None
+            if png is not None:
+                picture = SCENE_PICTURES / f"{scene.stem}-{tier}.png"
+                out.files[picture] = png
+                renders[(scene.stem, tier)] = picture
+                pixels[(scene.stem, tier)] = png_pixels(png)
     out.pages[SCENES_PAGE] = scene_reference_page(renders, live)
     out.pages[TIERS_PAGE] = tiers_page(renders, pixels, load_bench(source).tiers, live_tiers)
     return out
 
 
-def _live_shader(scene: Path, tier: str | None) -> str | None:
-    """The scene for a live canvas (webgl2, parameters as uniforms), at `tier` when given."""
+def _compose(scene: Path, tier: str | None) -> glint.Shader | None:
+    """The scene at `tier` (its own where None), or None, with a warning, where it fails."""
     try:
-        return glint.compose(scene, tier=tier, target="webgl2", params_as_uniforms=True).text
+        return glint.compose(scene, tier=tier)
     except glint.InputError as error:
-        log.warning("site: no live canvas for %s at %s: %s", scene.name, tier or "its tier", error)
+        log.warning("site: %s does not compose at %s: %s", scene.name, tier or "its tier", error)
         return None
 
 
-def _render(scene: Path, tier: str, cache_dir: Path) -> bytes | None:
+def _render(shader: glint.Shader, scene: Path, tier: str, cache_dir: Path) -> bytes | None:
     try:
-        return render_cached(glint.compose(scene, tier=tier), cache_dir)[0]
+        return render_cached(shader, cache_dir)[0]
     except glint.InputError as error:
-        log.warning("site: %s does not compose or render at %s: %s", scene.name, tier, error)
+        log.warning("site: %s does not render at %s: %s", scene.name, tier, error)
         return None
 
 
