@@ -28,18 +28,17 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk
 from . import types as T
+from .declarations import declared_variables, signature, struct_members
 from .expressions import Evaluator, RecordedEvaluator, as_polynomial
 from .ranges import INF, NONNEG, UNKNOWN, Interval
 from .scopes import Scopes, names_of
 from .statements import WRITING, ForwardPass, written_targets
 from .syntax import (
-    array_text,
     call_args,
     callee_name,
     is_tree,
     root_variable,
     same_expression,
-    spec_text,
     swizzle_index,
     var_key,
 )
@@ -104,7 +103,7 @@ class Model:
                 if child.data == "function_definition":
                     called = {callee_name(c) for c in nodes if c.data == "call"}
                     self._callees[id(child)] = tuple(sorted(n for n in called if n))
-        self._collect_structs()
+        self.structs = struct_members(n for n in self._nodes if n.data == "struct_specifier")
         self._written = self._written_names()
         self._analyse()
 
@@ -173,23 +172,6 @@ class Model:
             self._params = self._new_params
         self._memo.clear()
 
-    def _collect_structs(self) -> None:
-        for node in self._nodes:
-            if node.data != "struct_specifier":
-                continue
-            name = next((str(c) for c in node.children if isinstance(c, Token)), None)
-            members: dict[str, str] = {}
-            for member in node.children:
-                if not is_tree(member, "struct_member"):
-                    continue
-                spec = next(c for c in member.children if is_tree(c, "type_specifier"))
-                for decl in member.children:
-                    if is_tree(decl, "struct_declarator"):
-                        arrays = [array_text(a) for a in decl.children[1:]]
-                        members[str(decl.children[0])] = spec_text(spec) + "".join(arrays)
-            if name:
-                self.structs[name] = members
-
     def _written_names(self) -> set[str]:
         """Names assigned anywhere in a function: such globals are unknown in every function."""
         names: set[str] = set()
@@ -204,14 +186,8 @@ class Model:
     # --- declarations ----------------------------------------------------------------------
 
     def _function(self, node: Tree) -> None:
-        proto, body = node.children
-        full_type = proto.children[0]
-        name = str(proto.children[1])
-        plist = proto.children[2] if len(proto.children) > 2 else None
-        params = [_param(p) for p in plist.children] if is_tree(plist, "parameter_list") else []
-        params = [p for p in params if p[1] != "void" or p[2]]
-        spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
-        fn = Function(name, node, spec_text(spec), params)
+        name, return_type, params = signature(node)
+        fn = Function(name, node, return_type, params)
         global_env = self._globals.flat()
         facts = self._params.get((name, len(params))) if self._reading else None
         declared: list[tuple[str, Value]] = []
@@ -244,7 +220,7 @@ class Model:
         self.functions.setdefault(name, []).append(fn)
         self._calls = []
         flow = ForwardPass(self, fn)
-        flow.statement(body, scopes)
+        flow.statement(node.children[1], scopes)
         fn.result = flow.result()
         self._analysed[id(node)] = _Analysed(inputs, fn, self._calls, self._collecting)
 
@@ -274,24 +250,8 @@ class Model:
         """Whether a variable declaration is const, and its (name, type, initializer)s: read
         from the tree once for all the passes."""
         found = self._declared.get(id(node))
-        if found is not None:
-            return found
-        full_type = node.children[0]
-        spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
-        base = spec_text(spec)  # type: ignore[arg-type]
-        const = any(
-            is_tree(q, "type_qualifier") and "const" in (str(t) for t in q.children)
-            for q in full_type.children
-        )
-        declared: list[tuple[str, str, Node | None]] = []
-        for decl in node.children[1:]:
-            if not is_tree(decl, "declarator"):
-                continue
-            name = str(decl.children[0])
-            arrays = [array_text(c) for c in decl.children[1:] if is_tree(c, "array_specifier")]
-            init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
-            declared.append((name, base + "".join(arrays), init))
-        found = self._declared[id(node)] = (const, declared)
+        if found is None:
+            found = self._declared[id(node)] = declared_variables(node)
         return found
 
     def names_of(self, expr: Node) -> frozenset[str]:
@@ -530,16 +490,6 @@ def _shadertoy_values() -> dict[str, Value]:
         name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN))
         for name, ty in T.SHADERTOY_TYPES.items()
     }
-
-
-def _param(node: Tree) -> tuple[str, str, str]:
-    qualifier = " ".join(
-        str(t) for q in node.children if is_tree(q, "type_qualifier") for t in q.children
-    )
-    spec = next(c for c in node.children if is_tree(c, "type_specifier"))
-    name = next((str(c) for c in node.children if isinstance(c, Token)), "")
-    arrays = [array_text(c) for c in node.children if is_tree(c, "array_specifier")]
-    return qualifier, spec_text(spec) + "".join(arrays), name  # type: ignore[arg-type]
 
 
 def semantic_model(ctx: LintContext) -> Model:

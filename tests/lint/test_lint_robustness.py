@@ -28,7 +28,7 @@ MISTAKES = sorted((ROOT / "tests" / "corpus" / "lint_mistakes").glob("*.glsl"))
 GLINT = Path(sys.executable).with_name("glint")
 HAS_CLI = importlib.util.find_spec("glint.lint.cli") is not None and GLINT.exists()
 HAS_GLSLANG = shutil.which("glslangValidator") is not None
-OFF = Options(glslang=False)
+OFF = Options(select=["ALL"], glslang=False)  # every rule must survive bad input
 
 DEEP = 25_000  # nesting beyond runner.RECURSION_LIMIT (20000 frames)
 HEAD = b"void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from glint.lint.analysis.expression_types import expression_types
 from glint.lint.analysis.model import semantic_model
 from glint.lint.context import walk
 from glint.lint.options import Options
@@ -337,14 +338,15 @@ def test_fixing_is_idempotent() -> None:
 
 
 def test_long_chains_do_not_recurse() -> None:
-    # the shared model recurses over chains, so keep it short enough for it to build
+    # the shared analyses recurse over chains, so keep it short enough for them to build
     chain = " + ".join(["fragCoord.x"] * 150)
     src = image(f"float y = {chain} + 1;\nfragColor = vec4(texture2D(iChannel0, vec2(y)));")
     ctx = build_context(src, "x.glsl", FAST)
     assert ctx.tree is not None
-    model = semantic_model(ctx)
-    for node in reversed(list(walk(ctx.tree))):  # and warm its memo, children first
+    model, typed = semantic_model(ctx), expression_types(ctx)
+    for node in reversed(list(walk(ctx.tree))):  # and warm their memos, children first
         model.type_of(node)
+        typed.type_of(node)
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(len(inspect.stack()) + 100)  # less than the chain is deep
     try:

@@ -9,6 +9,7 @@ import re
 from lark import Tree
 
 from ...analysis.constants import const_value, global_constants, is_compile_time
+from ...analysis.expression_types import expression_types
 from ...analysis.functions import Function, function_map, functions, resolve
 from ...analysis.model import semantic_model
 from ...analysis.syntax import (
@@ -60,9 +61,9 @@ def main_image(ctx: LintContext) -> tuple[Function, str] | None:
 
 
 def is_colour(ctx: LintContext, node: Node) -> bool:
-    """Whether the expression can be a colour: a vec3 or vec4 by the model's type (unknown
+    """Whether the expression can be a colour: a vec3 or vec4 by its type (unknown
     counts), not a vec2 or a scalar."""
-    return semantic_model(ctx).type_of(node) in (None, "vec3", "vec4")
+    return expression_types(ctx).type_of(node) in (None, "vec3", "vec4")
 
 
 def macros_used(ctx: LintContext, node: Node) -> set[str]:
@@ -76,8 +77,8 @@ def macros_used(ctx: LintContext, node: Node) -> set[str]:
 
 
 def is_vector(ctx: LintContext, node: Node) -> bool:
-    """Whether the expression is a vector (a colour), by the model's type."""
-    return (semantic_model(ctx).type_of(node) or "").startswith("vec")
+    """Whether the expression is a vector (a colour), by its type."""
+    return (expression_types(ctx).type_of(node) or "").startswith("vec")
 
 
 class ColourOutput:
@@ -289,7 +290,7 @@ def _alpha_of(ctx: LintContext, fn: Function, write: Tree) -> Node | None:
         return value if str(target.children[-1]) in ("w", "a") else None
     if isinstance(value, Tree) and value.data == "constructor":
         args = call_args(value)
-        if len(args) in (2, 4) and semantic_model(ctx).type_of(args[-1]) in ("float", "int"):
+        if len(args) in (2, 4) and expression_types(ctx).type_of(args[-1]) in ("float", "int"):
             return args[-1]
     return None
 

@@ -25,9 +25,9 @@ import re
 from lark import Tree
 
 from ...analysis.constants import const_value
+from ...analysis.expression_types import expression_types
 from ...analysis.functions import Function, callable_from_main, functions, resolve
 from ...analysis.liveness import reaches_output
-from ...analysis.model import semantic_model
 from ...analysis.syntax import (
     binary_op,
     call_args,
@@ -191,7 +191,7 @@ def schlick_base(node: Node) -> Node | None:
 
 
 def _vec3_or_unknown(ctx: LintContext, node: Node) -> bool:
-    typ = semantic_model(ctx).type_of(node)
+    typ = expression_types(ctx).type_of(node)
     return typ is None or typ == "vec3"
 
 

@@ -81,6 +81,8 @@ class UnclampedCosine(Rule):
                     colour = bool(_DIFFUSE_FUNCTION.search(fn.name))
                 elif binary_op(node) == "*" and binary_op(up.get(id(node))) != "*":
                     candidates = operands(node, "*")
+                    if not any(self._cosine(c, fn) for c in candidates):
+                        continue  # no N·L or N·V here: skip the costlier tests below
                     # a scalar constant scales the cosine (half-Lambert); a colour does not
                     others = [c for c in candidates if const_value(c) is None
                               or (isinstance(c, Tree) and c.data == "constructor")]  # fmt: skip
@@ -130,10 +132,13 @@ class UnclampedCosine(Rule):
         return False
 
     def _raw(self, node: Node, fn: Function, compared: set[str]) -> bool:
+        return self._cosine(node, fn) and not (names_in(node) & compared)
+
+    @staticmethod
+    def _cosine(node: Node, fn: Function) -> bool:
+        """Whether the factor is N·L or N·V: a dot call, or a local holding one."""
         value = resolve(node, fn)
-        if call_name(value) != "dot" or cosine_of(value, fn) not in ("NL", "NV"):
-            return False
-        return not (names_in(node) & compared)
+        return call_name(value) == "dot" and cosine_of(value, fn) in ("NL", "NV")
 
     def _compared(self, fn: Function) -> set[str]:
         found: set[str] = set()

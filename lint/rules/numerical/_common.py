@@ -10,7 +10,6 @@ from collections.abc import Iterator
 
 from lark import Token, Tree
 
-from ...analysis.model import Model
 from ...analysis.ranges import Interval
 from ...analysis.syntax import callee_name
 from ...analysis.values import Value
@@ -47,15 +46,23 @@ def is_raw_dot(v: Value) -> bool:
     return v.origin == "dot"
 
 
-def builtin_calls(ctx: LintContext, model: Model, *names: str) -> Iterator[tuple[Tree, str]]:
-    """Calls of these builtins (a user function of the same name is not the builtin)."""
+def builtin_calls(ctx: LintContext, *names: str) -> Iterator[tuple[Tree, str]]:
+    """Calls of these builtins (a function the file defines with the same name is not the
+    builtin)."""
     named = ctx.cache.get("numerical.named_calls")
     if named is None:  # every numerical rule looks at every call: name them once per file
+        assert ctx.tree is not None
+        defined = {
+            str(node.children[0].children[1])
+            for node in ctx.tree.children
+            if isinstance(node, Tree) and node.data == "function_definition"
+        }
         named = ctx.cache["numerical.named_calls"] = [
-            (node, callee_name(node)) for node in ctx.nodes("call")
-        ]
+            (node, name) for node in ctx.nodes("call")
+            if (name := callee_name(node)) is not None and name not in defined
+        ]  # fmt: skip
     for node, name in named:
-        if name in names and name not in model.functions:
+        if name in names:
             yield node, name
 
 

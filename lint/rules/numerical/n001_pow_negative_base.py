@@ -52,7 +52,7 @@ class PowNegativeBase(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
-        for call, _ in builtin_calls(ctx, model, "pow"):
+        for call, _ in builtin_calls(ctx, "pow"):
             args = call_args(call)
             if len(args) != 2:
                 continue

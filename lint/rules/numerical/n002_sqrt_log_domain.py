@@ -58,7 +58,7 @@ class SqrtLogDomain(NumericalRule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
         names = ("sqrt", "inversesqrt", "log", "log2")
-        for call, name in builtin_calls(ctx, model, *names):
+        for call, name in builtin_calls(ctx, *names):
             args = call_args(call)
             if len(args) != 1:
                 continue

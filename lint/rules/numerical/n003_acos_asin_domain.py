@@ -51,7 +51,7 @@ class AcosAsinDomain(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
-        for call, name in builtin_calls(ctx, model, "acos", "asin"):
+        for call, name in builtin_calls(ctx, "acos", "asin"):
             args = call_args(call)
             if len(args) != 1:
                 continue

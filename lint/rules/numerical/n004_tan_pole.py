@@ -39,12 +39,11 @@ class TanPole(NumericalRule):
     name = "tan-pole"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
-        model = semantic_model(ctx)
-        for call, _ in builtin_calls(ctx, model, "tan"):
+        for call, _ in builtin_calls(ctx, "tan"):
             args = call_args(call)
             if len(args) != 1:
                 continue
-            r = model.range_of(args[0])
+            r = semantic_model(ctx).range_of(args[0])  # built for the first tan only
             if reaches_tan_pole(r):
                 message = (
                     f"tan of {text(ctx, args[0])} reaches a pole at π/2 + kπ "

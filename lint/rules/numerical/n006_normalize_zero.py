@@ -54,7 +54,7 @@ class NormalizeZero(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
-        for call, _ in builtin_calls(ctx, model, "normalize"):
+        for call, _ in builtin_calls(ctx, "normalize"):
             args = call_args(call)
             if len(args) != 1:
                 continue

@@ -50,7 +50,7 @@ class ModAtanZero(NumericalRule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
         zero = Interval.point(0.0)
-        for call, name in builtin_calls(ctx, model, "mod", "atan"):
+        for call, name in builtin_calls(ctx, "mod", "atan"):
             args = call_args(call)
             if len(args) != 2:
                 continue

@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from ...analysis.constants import const_value
 from ...analysis.model import semantic_model
 from ...analysis.syntax import call_args
-from ...context import LintContext
+from ...context import LintContext, Node
 from ...finding import Finding
 from .. import register
 from ._common import NumericalRule, builtin_calls, text
@@ -50,11 +51,11 @@ class ClampInverted(NumericalRule):
     severity = "warning"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
-        model = semantic_model(ctx)
-        for call, _ in builtin_calls(ctx, model, "clamp"):
+        for call, _ in builtin_calls(ctx, "clamp"):
             args = call_args(call)
-            if len(args) != 3:
+            if len(args) != 3 or _literal_order(args[1], args[2]):
                 continue
+            model = semantic_model(ctx)  # built for the first clamp that needs ranges
             x = model.range_of(args[0])
             lo, hi = model.range_of(args[1]), model.range_of(args[2])
             if not lo.lo >= hi.hi:  # lo >= hi for every value of both
@@ -83,3 +84,11 @@ class ClampInverted(NumericalRule):
                     "bound (undefined in GLSL where lo > hi)"
                 )
                 yield self.emit(ctx, call, message)
+
+
+def _literal_order(lo: Node, hi: Node) -> bool:
+    """Whether both bounds are literal values (`0.0`, `-1.`, `vec3(1.0)`, `2.0 / 50.0`) with
+    lo < hi: the usual clamp(x, 0.0, 1.0) is in order without asking the semantic model, which
+    is expensive. Named constants are not folded: a local may shadow a global's name."""
+    a, b = const_value(lo), const_value(hi)
+    return a is not None and b is not None and a < b

@@ -60,7 +60,7 @@ class SmoothstepInverted(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
-        for call, _ in builtin_calls(ctx, model, "smoothstep"):
+        for call, _ in builtin_calls(ctx, "smoothstep"):
             args = call_args(call)
             if len(args) != 3:
                 continue

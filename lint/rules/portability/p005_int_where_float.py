@@ -9,7 +9,7 @@ from lark import Tree
 
 from glint.compiler.glsl.keywords import words
 
-from ...analysis.model import Model, semantic_model
+from ...analysis.expression_types import ExpressionTypes, expression_types
 from ...analysis.syntax import prototype_parts, type_of_declaration
 from ...analysis.types import is_float_like
 from ...context import LintContext, walk_kind
@@ -74,8 +74,8 @@ class IntWhereFloat(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        model = semantic_model(ctx)
-        types = model.type_of
+        typed = expression_types(ctx)
+        types = typed.type_of
         parents = ctx.parents()
         for node in walk_kind(ctx.tree, "int_literal", "variable"):
             if node.data == "int_literal":
@@ -89,7 +89,7 @@ class IntWhereFloat(Rule):
                 expr = node
             else:
                 continue
-            why = self.float_context(expr, parents, model)
+            why = self.float_context(expr, parents, typed)
             if why is None:
                 continue
             text = str(node.children[0])
@@ -106,10 +106,12 @@ class IntWhereFloat(Rule):
                        f"write `{text}.0`")  # fmt: skip
             yield self.report(ctx, node, message, fix)
 
-    def float_context(self, expr: Tree, parents: dict[int, Tree], model: Model) -> str | None:
+    def float_context(
+        self, expr: Tree, parents: dict[int, Tree], typed: ExpressionTypes
+    ) -> str | None:
         """Why the expression must be a float there, or None if it need not (or we cannot
         tell)."""
-        types = model.type_of
+        types = typed.type_of
         while True:
             parent = parents.get(id(expr))
             if parent is None:
@@ -135,7 +137,7 @@ class IntWhereFloat(Rule):
                     return f"is an operand of `{kids[1]}` beside a float"
                 return None
             if kind == "arguments":
-                return self.argument(expr, parent, parents, model)
+                return self.argument(expr, parent, parents, typed)
             if kind == "jump_statement":
                 function = parents.get(id(parent))
                 while function is not None and function.data != "function_definition":
@@ -153,7 +155,7 @@ class IntWhereFloat(Rule):
             return None
 
     def argument(
-        self, expr: Tree, args: Tree, parents: dict[int, Tree], model: Model
+        self, expr: Tree, args: Tree, parents: dict[int, Tree], typed: ExpressionTypes
     ) -> str | None:
         call = parents.get(id(args))
         position = next(i for i, a in enumerate(args.children) if a is expr)
@@ -164,7 +166,7 @@ class IntWhereFloat(Rule):
             if arr:
                 return "is an element of a float array" if ty == "float" else None
             # struct constructors convert nothing; vector and matrix constructors do
-            members = list(model.structs.get(ty, {}).items())
+            members = list(typed.structs.get(ty, {}).items())
             if len(members) == len(args.children) and members[position][1] == "float":
                 return f"initialises the float member `{members[position][0]}` of `{ty}`"
             return None
@@ -173,9 +175,9 @@ class IntWhereFloat(Rule):
             return None
         name = str(callee.children[0])
         count = len(args.children)
-        own = {str(p.children[1]) for p in function_prototypes(model.tree)}
+        own = {str(p.children[1]) for p in function_prototypes(typed.tree)}
         if name in own:  # the file's own function, every overload taking a float
-            overloads = [f.params for f in model.functions.get(name, []) if len(f.params) == count]
+            overloads = [p for p in typed.parameters.get(name, []) if len(p) == count]
             if overloads and all(p[position][1] == "float" for p in overloads):
                 return f"is passed to a float parameter of `{name}`"
             return None
@@ -184,6 +186,6 @@ class IntWhereFloat(Rule):
         if FLOAT_ARG_AT.get(name) == position:
             return f"is passed as `{name}`'s float bias or level"
         others = [a for i, a in enumerate(args.children) if i != position]
-        if name in INT_OVERLOADS and any(is_float_like(model.type_of(a)) for a in others):
+        if name in INT_OVERLOADS and any(is_float_like(typed.type_of(a)) for a in others):
             return f"is passed to `{name}` beside a float argument"
         return None
