@@ -10,7 +10,7 @@ units providing one symbol is an error that names the units involved.
 from __future__ import annotations
 
 import heapq
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 
 from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
@@ -43,7 +43,7 @@ def resolve(
         for req in unit.requires:
             if req in constants:
                 continue
-            provider = _provider(req, unit, units, catalog, choices)
+            provider = _provider(req, unit, units, catalog, choices, roots)
             if provider.id not in units:
                 pending.append(provider)
     _check_unique(units, constants)
@@ -64,13 +64,18 @@ def providers(
 
 
 def _provider(
-    req: str, unit: Unit, taken: dict[str, Unit], catalog: Catalog, choices: dict[str, str]
+    req: str,
+    unit: Unit,
+    taken: dict[str, Unit],
+    catalog: Catalog,
+    choices: dict[str, str],
+    given: Sequence[Unit] = (),
 ) -> Unit:
     if req in SLOTS and not SLOTS[req].many:
         if req not in choices:
             raise InputError(f"{unit.id} requires slot {req}, but the plan has no variant for it")
         return from_snippet(catalog.get(choices[req]))
-    for other in taken.values():
+    for other in [*taken.values(), *given]:  # the scene's own units (the user's file) first
         if req in other.provides:
             return other
     library, chosen = providers(req, catalog, choices)

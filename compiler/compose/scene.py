@@ -12,21 +12,22 @@ from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import BaseModel, Field, PrivateAttr, ValidationError, model_validator
 
+from glint.compiler.compose.shapes import (
+    SHAPE_TAGS,
+    NonNegative,
+    Number,
+    Positive,
+    Shape,
+    Strict,
+    Vec3,
+    parts,
+)
 from glint.compiler.errors import InputError
 
-Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
 Unit = Annotated[float, Field(strict=True, ge=0.0, le=1.0)]
-Positive = Annotated[float, Field(strict=True, gt=0.0, allow_inf_nan=False)]
-NonNegative = Annotated[float, Field(strict=True, ge=0.0, allow_inf_nan=False)]
-Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
 Color = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
-
-
-class Strict(BaseModel):
-    # A string under a field is its description: the docs site's scene reference shows it.
-    model_config = ConfigDict(extra="forbid", strict=True, use_attribute_docstrings=True)
 
 
 class OrbitCamera(Strict):
@@ -57,39 +58,6 @@ class LookAtCamera(Strict):
         if self.position == self.target:
             raise ValueError("position and target must differ")
         return self
-
-
-class Sphere(Strict):
-    shape: Literal["sphere"]
-    center: Vec3 = [0.0, 0.0, 0.0]
-    radius: Positive = 1.0
-    material: str
-    """The name of a table under [materials]."""
-
-
-class Plane(Strict):
-    shape: Literal["plane"]
-    normal: Vec3 = [0.0, 1.0, 0.0]
-    """The plane's normal; need not be unit length."""
-    offset: Number = 0.0
-    """The plane is dot(p, normal) + offset = 0."""
-    material: str
-    """The name of a table under [materials]."""
-
-    @model_validator(mode="after")
-    def _nonzero(self) -> Plane:
-        if not any(self.normal):
-            raise ValueError("normal must not be the zero vector")
-        return self
-
-
-class Box(Strict):
-    shape: Literal["box"]
-    center: Vec3 = [0.0, 0.0, 0.0]
-    size: Annotated[list[Positive], Field(min_length=3, max_length=3)]
-    """Half extents along x, y and z."""
-    material: str
-    """The name of a table under [materials]."""
 
 
 class Material(Strict):
@@ -188,7 +156,82 @@ Light = Annotated[
     Field(discriminator="type"),
 ]
 Camera = Annotated[OrbitCamera | LookAtCamera, Field(discriminator="type")]
-SceneObject = Annotated[Sphere | Plane | Box, Field(discriminator="shape")]
+
+
+class Geometry(Strict):
+    """The user's own distance function, written in GLSL: glint lights it. The file defines
+    `float sceneDistance(vec3 p)`, the signed distance to the surface (or a field whose
+    gradient is at most `lipschitz` long); optionally `int sceneMaterial(vec3 p)`, the id of the
+    material at p (a key of `materials`), and `vec3 sceneAlbedo(vec3 p, int id, vec3 albedo)`,
+    a procedural albedo from the material's own. It may call the catalog's functions (sdTorus,
+    opSmoothUnion, checker ...) and define helpers of its own, whose names must not be the
+    catalog's or glint's."""
+
+    file: str
+    """The GLSL file, relative to the scene file."""
+    lipschitz: Annotated[float, Field(strict=True, ge=1.0, allow_inf_nan=False)] = 1.0
+    """A bound on how fast the field changes (1 for an exact distance; more for displaced or
+    noisy fields): every march divides its steps by it."""
+    material: str | None = None
+    """The material of the whole field (without sceneMaterial)."""
+    materials: dict[str, str] = {}
+    """Material by the id sceneMaterial returns, e.g. { 1 = "rock", 2 = "moss" }."""
+
+    _source: str = PrivateAttr("")
+    _path: str = PrivateAttr("")
+
+    @model_validator(mode="after")
+    def _one_way_to_material(self) -> Geometry:
+        if (self.material is None) == (not self.materials):
+            raise ValueError(
+                "give material (one for the whole field) or materials (by the id "
+                "sceneMaterial returns), one of them"
+            )
+        for key in self.materials:
+            if not key.lstrip("-").isdigit():
+                raise ValueError(f"materials: key {key!r} is not an integer id")
+        return self
+
+    def material_names(self) -> list[str]:
+        return [self.material] if self.material is not None else list(self.materials.values())
+
+    def material_keys(self) -> list[tuple[str, str]]:
+        if self.material is not None:
+            return [("geometry.material", self.material)]
+        return [(f"geometry.materials.{key}", name) for key, name in self.materials.items()]
+
+    @property
+    def source(self) -> str:
+        """The file's text (read when the scene is loaded)."""
+        return self._source
+
+    @property
+    def path(self) -> str:
+        """The file as source markers and messages name it."""
+        return self._path or self.file
+
+    def read(self, base: Path) -> None:
+        """Read the file, relative to the scene's folder `base`."""
+        found = base / self.file
+        try:
+            self._source = found.read_text(encoding="utf-8")
+        except FileNotFoundError:
+            raise InputError(
+                f"geometry.file: {self.file}: no such file (looked for {found}); the path is "
+                "relative to the scene file"
+            ) from None
+        except (OSError, UnicodeDecodeError) as exc:
+            raise InputError(f"geometry.file: {found}: cannot read it: {exc}") from None
+        self._path = _shown_path(found)
+
+
+def _shown_path(path: Path) -> str:
+    """The path relative to the working folder when it is under it (shorter messages and
+    markers), else absolute."""
+    try:
+        return str(path.resolve().relative_to(Path.cwd().resolve()))
+    except ValueError:
+        return str(path.resolve())
 
 
 class Environment(Strict):
@@ -244,8 +287,10 @@ class Scene(Strict):
     description: str = ""
     camera: Camera = OrbitCamera(type="orbit")
     """An orbit or a look-at camera."""
-    objects: Annotated[list[SceneObject], Field(min_length=1)]
-    """The shapes, as [[objects]] tables with a shape key."""
+    objects: list[Shape] = []
+    """The shapes, as [[objects]] tables with a shape key (primitives, or groups of them)."""
+    geometry: Geometry | None = None
+    """The user's own distance function, in a GLSL file."""
     materials: dict[str, Material]
     """Named materials, as [materials.NAME] tables."""
     lights: list[Light] = []
@@ -260,18 +305,33 @@ class Scene(Strict):
     quality: Quality = Quality()
 
     def used_materials(self) -> list[str]:
-        """Names of the materials objects use, in order of first use; unused ones emit nothing."""
-        return list(dict.fromkeys(obj.material for obj in self.objects))
+        """Names of the materials in use, in order of first use (objects, then the user's
+        geometry); unused ones emit nothing."""
+        names = [obj.material for obj in self.objects if obj.material is not None]
+        if self.geometry is not None:
+            names += self.geometry.material_names()
+        return list(dict.fromkeys(names))
 
     @model_validator(mode="after")
     def _references(self) -> Scene:
+        if not self.objects and self.geometry is None:
+            raise ValueError("objects: a scene needs at least one object or a [geometry] file")
+        named = [(f"objects[{i}].material", obj.material) for i, obj in enumerate(self.objects)]
         for i, obj in enumerate(self.objects):
-            if obj.material not in self.materials:
-                known = ", ".join(sorted(self.materials)) or "none defined"
-                raise ValueError(
-                    f"objects[{i}].material: '{obj.material}' is not a material "
-                    f"(materials: {known})"
-                )
+            if obj.material is None:
+                raise ValueError(f"objects[{i}].material: required key is missing")
+            for j, part in enumerate(parts(obj)[1:]):
+                if part.material is not None:
+                    raise ValueError(
+                        f"objects[{i}]: part {j + 1} ({part.shape}) has a material; the parts "
+                        "of a group take the group's: set material on the top-level object"
+                    )
+        if self.geometry is not None:
+            named += self.geometry.material_keys()
+        known = ", ".join(sorted(self.materials)) or "none defined"
+        for key, name in named:
+            if name not in self.materials:
+                raise ValueError(f"{key}: '{name}' is not a material (materials: {known})")
         return self
 
 
@@ -303,12 +363,19 @@ def scene_from_dict(data: Mapping[str, Any], filename: str = "<scene>") -> Scene
     """A scene from the tables of a scene file (a dict), validated, with one message naming
     the first problem's key."""
     try:
-        return Scene.model_validate(dict(data))
+        scene = Scene.model_validate(dict(data))
     except ValidationError as exc:
         first = exc.errors()[0]
         more = len(exc.errors()) - 1
         suffix = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
         raise InputError(f"{filename}: {describe_error(first)}{suffix}") from None
+    if scene.geometry is not None:
+        base = Path(filename).parent if not filename.startswith("<") else Path.cwd()
+        try:
+            scene.geometry.read(base)
+        except InputError as exc:
+            raise InputError(f"{filename}: {exc}") from None
+    return scene
 
 
 def describe_error(error: Any) -> str:
@@ -337,9 +404,7 @@ def describe_error(error: Any) -> str:
 _TAGS: dict[str, type[BaseModel]] = {
     "orbit": OrbitCamera,
     "lookat": LookAtCamera,
-    "sphere": Sphere,
-    "plane": Plane,
-    "box": Box,
+    **SHAPE_TAGS,
     "directional": DirectionalLight,
     "point": PointLight,
     "sky": SkyLight,
@@ -347,7 +412,7 @@ _TAGS: dict[str, type[BaseModel]] = {
     "bounce": BounceLight,
     "environment": EnvironmentLight,
 }
-_SECTIONS = (Environment, Medium, Background, Effects, Post, Quality)
+_SECTIONS = (Geometry, Environment, Medium, Background, Effects, Post, Quality)
 _MATERIALS = "materials"  # marks the table whose keys are material names
 
 

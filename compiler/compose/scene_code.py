@@ -8,20 +8,26 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
+from glint.compiler.compose.field_code import ObjectCode, object_code
 from glint.compiler.compose.scene import (
     BackLight,
     BounceLight,
-    Box,
     DirectionalLight,
     EnvironmentLight,
     Material,
-    Plane,
     PointLight,
     Scene,
     SkyLight,
-    Sphere,
 )
 from glint.compiler.compose.units import Unit, generated
+from glint.compiler.compose.user_geometry import (
+    ALBEDO,
+    DISTANCE,
+    GEOMETRY_MATERIAL,
+    MATERIAL,
+    defines_albedo,
+    user_unit,
+)
 from glint.compiler.errors import InputError
 
 
@@ -46,9 +52,14 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     branch, for normal variants built on screen-space derivatives."""
     lights = _lights(scene)
     materials = scene.used_materials()
-    units = [_map_unit(scene)]
+    objects = [object_code(obj, i) for i, obj in enumerate(scene.objects)]
+    units = [_map_unit(scene, objects)]
+    if any(code.function for code in objects):
+        units.append(_objects_unit(objects))
+    if scene.geometry is not None:
+        units.append(user_unit(scene.geometry))
     if len(materials) > 1:
-        units.append(_material_index_unit(scene, materials))
+        units.append(_material_index_unit(scene, materials, objects))
     units.append(_surface_unit(scene, materials))
     # Translucency is lit by directional lights only; without one it has nothing to show.
     translucent = bool(lights.directional) and any(
@@ -161,42 +172,62 @@ def _lights(scene: Scene) -> LightCode:
     return LightCode(defines, calls, requires, directional, why, labels)
 
 
-def _distance(obj: Sphere | Plane | Box) -> tuple[str, str]:
-    """GLSL distance expression of one object at point `p`, and the primitive it calls."""
-    if isinstance(obj, Sphere):
-        return f"sdSphere({_offset(obj.center)}, {glsl_float(obj.radius)})", "sdSphere"
-    if isinstance(obj, Box):
-        return f"sdBox({_offset(obj.center)}, {_vec3(obj.size)})", "sdBox"
-    length = sum(c * c for c in obj.normal) ** 0.5
-    normal = [c / length for c in obj.normal]
-    return f"sdPlane(p, {_vec3(normal)}, {glsl_float(obj.offset / length)})", "sdPlane"
-
-
-def _offset(center: list[float]) -> str:
-    return "p" if not any(center) else f"p - {_vec3(center)}"
-
-
-def _map_unit(scene: Scene) -> Unit:
+def _map_unit(scene: Scene, objects: list[ObjectCode]) -> Unit:
     lines = ["// The scene's signed distance: the union of its objects.", "float map(vec3 p) {"]
-    requires = []
-    for i, obj in enumerate(scene.objects):
-        expr, prim = _distance(obj)
-        requires.append(prim)
+    requires = [name for code in objects for name in _called(code)]
+    terms = [code.expression for code in objects]
+    if scene.geometry is not None:
+        terms.append(_user_distance(scene))
+        requires.append(DISTANCE)
+    for i, expr in enumerate(terms):
         lines.append(f"    float d = {expr};" if i == 0 else f"    d = min(d, {expr});")
     lines += ["    return d;", "}"]
     return generated("scene.map", ["map"], requires, "\n".join(lines) + "\n")
 
 
-def _material_index_unit(scene: Scene, materials: list[str]) -> Unit:
-    lines = [
+def _called(code: ObjectCode) -> list[str]:
+    """What a line computing an object's distance calls: its own function, or the primitive
+    written inline."""
+    return [code.expression.removesuffix("(p)")] if code.function else code.requires
+
+
+def _user_distance(scene: Scene) -> str:
+    """The user's field, divided by its Lipschitz bound: a step of that length cannot cross
+    the surface, so every march through `map` (hits, shadows, occlusion) stays correct."""
+    assert scene.geometry is not None
+    bound = scene.geometry.lipschitz
+    return f"{DISTANCE}(p)" if bound == 1.0 else f"{DISTANCE}(p) / {glsl_float(bound)}"
+
+
+def _objects_unit(objects: list[ObjectCode]) -> Unit:
+    functions = [code for code in objects if code.function]
+    names = [code.expression.removesuffix("(p)") for code in functions]
+    requires = [name for code in functions for name in code.requires]
+    body = "\n".join(code.function for code in functions)
+    return generated("scene.objects", names, requires, body)
+
+
+def _material_index_unit(scene: Scene, materials: list[str], objects: list[ObjectCode]) -> Unit:
+    provides = ["materialAt"]
+    lines = []
+    if scene.geometry is not None and scene.geometry.materials:
+        lines = _geometry_material_function(scene, materials)
+        provides.append(GEOMETRY_MATERIAL)
+    lines += [
         "// Index of the material of the object nearest to p.",
         "int materialAt(vec3 p) {",
     ]
-    requires = []
-    for i, obj in enumerate(scene.objects):
-        expr, prim = _distance(obj)
-        requires.append(prim)
-        index = materials.index(obj.material)
+    requires = [name for code in objects for name in _called(code)]
+    candidates = [
+        (code.expression, str(materials.index(obj.material)))  # type: ignore[arg-type]
+        for obj, code in zip(scene.objects, objects, strict=True)
+    ]
+    if scene.geometry is not None:
+        candidates.append((_user_distance(scene), _user_material(scene, materials)))
+        requires.append(DISTANCE)
+        if scene.geometry.materials:
+            requires.append(MATERIAL)
+    for i, (expr, index) in enumerate(candidates):
         if i == 0:
             lines += [f"    float best = {expr};", f"    int id = {index};"]
         else:
@@ -205,7 +236,31 @@ def _material_index_unit(scene: Scene, materials: list[str]) -> Unit:
                 f"    if (d{i} < best) {{ best = d{i}; id = {index}; }}",
             ]
     lines += ["    return id;", "}"]
-    return generated("scene.materials", ["materialAt"], requires, "\n".join(lines) + "\n")
+    return generated("scene.materials", provides, requires, "\n".join(lines) + "\n")
+
+
+def _user_material(scene: Scene, materials: list[str]) -> str:
+    """The material index of the user's field at p: its one material, or geometryMaterial(p)
+    (_geometry_material_function) when sceneMaterial returns ids."""
+    geometry = scene.geometry
+    assert geometry is not None
+    if geometry.material is not None:
+        return str(materials.index(geometry.material))
+    return f"{GEOMETRY_MATERIAL}(p)"
+
+
+def _geometry_material_function(scene: Scene, materials: list[str]) -> list[str]:
+    """`geometryMaterial(p)`: sceneMaterial's id as the index of its material here; an id the
+    scene does not list takes the first listed one's material."""
+    assert scene.geometry is not None
+    pairs = [(int(key), materials.index(name)) for key, name in scene.geometry.materials.items()]
+    lines = [
+        "// The material index of the user's field at p, from the id sceneMaterial returns.",
+        f"int {GEOMETRY_MATERIAL}(vec3 p) {{",
+        f"    int id = {MATERIAL}(p);",
+    ]
+    lines += [f"    if (id == {key}) return {index};" for key, index in pairs[1:]]
+    return [*lines, f"    return {pairs[0][1]};", "}", ""]
 
 
 def _albedo(material: Material) -> tuple[str, list[str]]:
@@ -230,10 +285,14 @@ def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
 def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
     requires = ["Surface", "makeSurface"]
     bodies = []
+    procedural = _procedural_albedo_ids(scene)
     for name in materials:
         material = scene.materials[name]
         albedo, needs = _albedo(material)
         requires += needs
+        if name in procedural:  # the user's sceneAlbedo makes it from the material's own
+            albedo = f"{ALBEDO}(P, {procedural[name]}, {albedo})"
+            requires.append(ALBEDO)
         body, extra = _material_body(material, albedo)
         requires += extra
         bodies.append(body)
@@ -243,12 +302,26 @@ def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
     return generated("scene.surface", ["surfaceAt"], requires + lookup, "\n".join(lines) + "\n")
 
 
+def _procedural_albedo_ids(scene: Scene) -> dict[str, int]:
+    """The materials of the user's field whose albedo sceneAlbedo makes, with the id it is
+    given (the material's id in [geometry.materials], 0 for the one [geometry] material)."""
+    geometry = scene.geometry
+    if geometry is None or not defines_albedo(geometry):
+        return {}
+    if geometry.material is not None:
+        return {geometry.material: 0}
+    ids: dict[str, int] = {}
+    for key, name in geometry.materials.items():
+        ids.setdefault(name, int(key))
+    return ids
+
+
 def _material_body(material: Material, albedo: str) -> tuple[list[str], list[str]]:
     """The lines that build one material's Surface, and what they require beyond makeSurface:
     the metallic path and the diffuse roughness appear only for materials that have them."""
     metal = material.metallic > 0.0
     prelude = []
-    if metal and albedo.startswith("mix("):  # a pattern: evaluate it once for both uses
+    if metal and albedo.startswith(("mix(", ALBEDO)):  # a pattern: evaluate it once for both
         prelude, albedo = [f"vec3 albedo = {albedo};"], "albedo"
     call = f"makeSurface(P, N, V, {albedo}, {glsl_float(material.roughness)})"
     if not metal and material.diffuse_roughness is None:

@@ -1,0 +1,215 @@
+"""The objects of a scene: primitives, each placed by a position, a rotation and a uniform
+scale, and the groups that combine them (union, intersection, subtraction, sharp or smooth,
+nested as deep as needed) or repeat them on a grid.
+
+A top-level object carries the material of everything under it; the parts of a group take
+their group's. Rotation is in degrees about the x, then the y, then the z axis, all fixed
+(world) axes: R = Rz · Ry · Rx. A point is placed by p' = R · (s · p_local) + position.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
+Positive = Annotated[float, Field(strict=True, gt=0.0, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(strict=True, ge=0.0, allow_inf_nan=False)]
+Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
+PositiveVec3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
+
+
+class Strict(BaseModel):
+    # A string under a field is its description: the docs site's scene reference shows it.
+    model_config = ConfigDict(extra="forbid", strict=True, use_attribute_docstrings=True)
+
+
+class Placed(Strict):
+    """What every object has: where it is, how it is turned and how large."""
+
+    position: Vec3 = [0.0, 0.0, 0.0]
+    """Where the object's origin goes."""
+    rotation: Vec3 = [0.0, 0.0, 0.0]
+    """Degrees about the x, then the y, then the z axis (fixed axes)."""
+    scale: Positive = 1.0
+    """Uniform scale; distances stay exact (the field is scaled with the shape)."""
+    material: str | None = None
+    """The name of a table under [materials]; required on a top-level object, not allowed on
+    the parts of a group, which take their group's."""
+
+    @property
+    def placed(self) -> bool:
+        return any(self.rotation) or self.scale != 1.0 or any(self.position)
+
+
+class Centred(Placed):
+    """Spheres and boxes had `center` before objects had `position`: it still means that."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _center_is_position(cls, data: Any) -> Any:
+        if isinstance(data, dict) and "center" in data:
+            if "position" in data:
+                raise ValueError("give center or position, not both (they mean the same)")
+            data = dict(data)
+            data["position"] = data.pop("center")
+        return data
+
+
+class Sphere(Centred):
+    shape: Literal["sphere"]
+    radius: Positive = 1.0
+
+
+class Box(Centred):
+    shape: Literal["box"]
+    size: PositiveVec3
+    """Half extents along x, y and z."""
+
+
+class RoundedBox(Placed):
+    shape: Literal["rounded_box"]
+    size: PositiveVec3
+    """Half extents along x, y and z, rounding included."""
+    rounding: NonNegative = 0.1
+    """Radius of the rounded edges and corners, at most the smallest half extent."""
+
+    @model_validator(mode="after")
+    def _fits(self) -> RoundedBox:
+        if self.rounding > min(self.size):
+            raise ValueError(f"rounding {self.rounding} is larger than the smallest half extent")
+        return self
+
+
+class Plane(Placed):
+    shape: Literal["plane"]
+    normal: Vec3 = [0.0, 1.0, 0.0]
+    """The plane's normal; need not be unit length."""
+    offset: Number = 0.0
+    """The plane is dot(p, normal) + offset = 0."""
+
+    @model_validator(mode="after")
+    def _nonzero(self) -> Plane:
+        if not any(self.normal):
+            raise ValueError("normal must not be the zero vector")
+        return self
+
+
+class Torus(Placed):
+    shape: Literal["torus"]
+    radius: Positive = 1.0
+    """Radius of the ring (centre to the middle of the tube), in the xz plane."""
+    thickness: Positive = 0.25
+    """Radius of the tube."""
+
+
+class Capsule(Placed):
+    shape: Literal["capsule"]
+    height: NonNegative = 1.0
+    """Distance between the centres of the two caps, along y."""
+    radius: Positive = 0.25
+
+
+class Cylinder(Placed):
+    shape: Literal["cylinder"]
+    height: Positive = 1.0
+    """Length along y, flat caps included."""
+    radius: Positive = 0.5
+
+
+class Cone(Placed):
+    shape: Literal["cone"]
+    height: Positive = 1.0
+    """Length along y."""
+    bottom_radius: NonNegative = 0.5
+    """Radius at the bottom (y = -height / 2)."""
+    top_radius: NonNegative = 0.0
+    """Radius at the top (y = +height / 2); 0 for a pointed cone."""
+
+    @model_validator(mode="after")
+    def _has_width(self) -> Cone:
+        if self.bottom_radius == 0.0 and self.top_radius == 0.0:
+            raise ValueError("a cone needs a nonzero bottom_radius or top_radius")
+        return self
+
+
+class Ellipsoid(Placed):
+    """Its field is a bound, not the exact distance (none has a closed form): marching stays
+    correct, only slower near the surface."""
+
+    shape: Literal["ellipsoid"]
+    radii: PositiveVec3 = [1.0, 0.5, 0.75]
+    """Semi-axes along x, y and z."""
+
+
+class Group(Placed):
+    """A combination of its parts: union (any part), intersection (every part) or subtraction
+    (the first part with the others carved out)."""
+
+    shape: Literal["union", "intersection", "subtraction"]
+    children: Annotated[list[Shape], Field(min_length=1)]
+    """The parts, as [[objects.children]] tables (nested: [[objects.children.children]])."""
+    blend: NonNegative = 0.0
+    """Radius of the smooth blend between parts (fillets, rounded cuts); 0 is a sharp edge."""
+
+
+class Repeat(Placed):
+    """Copies of its parts on a grid, centred on the object's position (finite repetition of
+    the domain). Distances are exact while each copy stays inside its own cell."""
+
+    shape: Literal["repeat"]
+    children: Annotated[list[Shape], Field(min_length=1)]
+    """The parts of one copy (their union)."""
+    spacing: Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
+    """Distance between copies along x, y and z; 0 on an axis that is not repeated."""
+    count: Annotated[list[Annotated[int, Field(strict=True, ge=1)]], Field(min_length=3,
+                                                                           max_length=3)]
+    """Copies along x, y and z (1 on an axis that is not repeated)."""
+
+    @model_validator(mode="after")
+    def _axes(self) -> Repeat:
+        for axis, (gap, n) in enumerate(zip(self.spacing, self.count, strict=True)):
+            if (gap == 0.0) != (n == 1):
+                raise ValueError(
+                    f"axis {'xyz'[axis]}: spacing {gap} and count {n} disagree (an axis is "
+                    "repeated with spacing > 0 and count > 1, or not at all: 0 and 1)"
+                )
+        return self
+
+
+Shape = Annotated[
+    Sphere | Box | RoundedBox | Plane | Torus | Capsule | Cylinder | Cone | Ellipsoid | Group
+    | Repeat,
+    Field(discriminator="shape"),
+]
+Group.model_rebuild()
+Repeat.model_rebuild()
+
+PRIMITIVES = (Sphere, Box, RoundedBox, Plane, Torus, Capsule, Cylinder, Cone, Ellipsoid)
+# Shape name -> model, for error messages that must drop pydantic's union tags.
+SHAPE_TAGS: dict[str, type[BaseModel]] = {
+    name: model
+    for model in (*PRIMITIVES, Group, Repeat)
+    for name in model.model_fields["shape"].annotation.__args__  # type: ignore[union-attr]
+}
+
+
+def parts(shape: Placed) -> list[Placed]:
+    """The shape and everything under it, depth first."""
+    found = [shape]
+    for child in getattr(shape, "children", []):
+        found += parts(child)
+    return found
+
+
+def exact(shape: Placed) -> bool:
+    """Whether the shape's field is its exact distance everywhere: no ellipsoid (a bound), no
+    smooth blend (a bound near the blend), no repetition (exact only inside the cells) and no
+    intersection or subtraction (the max of two distances is a bound off the surface)."""
+    for part in parts(shape):
+        if isinstance(part, Ellipsoid | Repeat):
+            return False
+        if isinstance(part, Group) and (part.blend > 0.0 or part.shape != "union"):
+            return False
+    return True

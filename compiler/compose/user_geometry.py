@@ -1,0 +1,138 @@
+"""The user's own distance function: a GLSL file that joins the composition as a unit.
+
+The file is parsed with glint's front end. What it defines is what the unit provides; what it
+calls or names and does not define (a catalog function such as sdTorus, a constant such as PI)
+is what it requires, and the resolver finds it like any other requirement. The contract:
+
+- `float sceneDistance(vec3 p)`: required, the signed distance (or a field with a Lipschitz
+  bound, [geometry] lipschitz);
+- `int sceneMaterial(vec3 p)`: optional, the id of the material at p ([geometry.materials]);
+- `vec3 sceneAlbedo(vec3 p, int id, vec3 albedo)`: optional, a procedural albedo made from the
+  material's own (id: the material's id, 0 for [geometry] material).
+
+Its names must not be the catalog's or those of glint's generated scene code: each such
+collision is an error naming both. The unit keeps the file as its origin, so `glint validate`
+reports a compile error at the user's file and line.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.compose.scene import Geometry
+from glint.compiler.compose.units import Unit
+from glint.compiler.errors import InputError
+from glint.compiler.glsl import FunctionDef, analyze
+from glint.compiler.target.shadertoy import UNIFORM_NAMES
+
+DISTANCE = "sceneDistance"
+MATERIAL = "sceneMaterial"
+ALBEDO = "sceneAlbedo"
+GEOMETRY_MATERIAL = "geometryMaterial"  # glint's: the material index of the user's field
+
+
+@dataclass(frozen=True)
+class _Contract:
+    return_type: str
+    params: tuple[str, ...]
+    required: bool
+
+
+CONTRACT = {
+    DISTANCE: _Contract("float", ("vec3",), True),
+    MATERIAL: _Contract("int", ("vec3",), False),
+    ALBEDO: _Contract("vec3", ("vec3", "int", "vec3"), False),
+}
+
+# The functions glint's generated scene code defines (scene_code.py, field_code.py).
+GENERATED_NAMES = frozenset(
+    {"map", "materialAt", "surfaceAt", "shade", "mainImage", "subsurfaceAt", "submerged",
+     GEOMETRY_MATERIAL}
+)  # fmt: skip
+
+
+def user_unit(geometry: Geometry) -> Unit:
+    """The user's file as a unit of the composition; one clear error for a file that does not
+    parse, breaks the contract or takes a name that is not its to take."""
+    path = geometry.path
+    symbols = analyze(geometry.source, path, provided=UNIFORM_NAMES)
+    functions = {f.name: f for f in symbols.functions}
+    _check_contract(functions, path, bool(geometry.materials))
+    _check_names(symbols.defined, functions, path)
+    requires = (symbols.calls | symbols.free) - symbols.defined
+    _check_requirements(requires, symbols.functions, path)
+    return Unit(
+        id=f"user:{Path(path).name}",
+        slot="scene",
+        provides=tuple(sorted(symbols.defined)),
+        requires=tuple(sorted(requires)),
+        body=geometry.source,
+        origin=path.replace(" ", "%20"),  # a source marker's path has no spaces
+        line=1,
+        summary="the scene's own distance function",
+    )
+
+
+def defines_albedo(geometry: Geometry) -> bool:
+    return ALBEDO in {f.name for f in analyze(geometry.source, geometry.path).functions}
+
+
+def _check_contract(functions: dict[str, FunctionDef], path: str, by_id: bool) -> None:
+    for name, contract in CONTRACT.items():
+        found = functions.get(name)
+        if found is None:
+            if contract.required:
+                raise InputError(
+                    f"{path}: defines no `{contract.return_type} {name}(vec3 p)`, the scene's "
+                    "distance function glint lights (see [geometry] in the README)"
+                )
+            continue
+        params = tuple(p.type for p in found.params)
+        if found.return_type != contract.return_type or params != contract.params:
+            wanted = f"{contract.return_type} {name}({', '.join(contract.params)})"
+            raise InputError(f"{path}:{found.line}: {found.prototype}: glint calls it as {wanted}")
+    if by_id and MATERIAL not in functions:
+        raise InputError(
+            f"{path}: [geometry.materials] gives materials by id, but the file defines no "
+            f"`int {MATERIAL}(vec3 p)` to return the id"
+        )
+    if not by_id and MATERIAL in functions:
+        raise InputError(
+            f"{path}:{functions[MATERIAL].line}: {MATERIAL} returns material ids, but the scene "
+            "gives one [geometry] material; list them as [geometry.materials] (id = name)"
+        )
+
+
+def _check_requirements(requires: set[str], functions: list[FunctionDef], path: str) -> None:
+    """Everything the file uses and does not define must come from the catalog (a library
+    function, a constant) or from glint's scene code (map, for a user's own march)."""
+    catalog = load_catalog()
+    for name in sorted(requires):
+        if catalog.providers(name) or name in GENERATED_NAMES:
+            continue
+        user = next((f for f in functions if name in f.calls | f.uses), None)
+        where = f"{path}:{user.line}" if user else path
+        what = "calls" if user is None or name in user.calls else "uses"
+        raise InputError(
+            f"{where}: {what} `{name}`, which neither the file nor glint's catalog defines"
+        )
+
+
+def _check_names(defined: set[str], functions: dict[str, FunctionDef], path: str) -> None:
+    catalog = load_catalog()
+    for name in sorted(defined):
+        where = f"{path}:{functions[name].line}" if name in functions else path
+        if name in GENERATED_NAMES or name.startswith("object") and name[6:].isdigit():
+            raise InputError(
+                f"{where}: `{name}` is also a function of glint's generated scene code; "
+                "rename yours"
+            )
+        providers = catalog.providers(name)
+        if providers:
+            theirs = ", ".join(f"{s.id} ({s.relpath})" for s in providers)
+            raise InputError(
+                f"{where}: `{name}` is also defined by the catalog's {theirs}; rename yours, "
+                "or delete it and call the catalog's"
+            )
