@@ -16,11 +16,15 @@ from contextlib import contextmanager
 from importlib.metadata import entry_points
 from importlib.metadata import version as package_version
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import GlintError, UsageError
 from glint.compiler.files import read_text_file
 from glint.compiler.target.shadertoy import TARGETS
+
+if TYPE_CHECKING:
+    from glint.compiler.api import Shader
 
 PROG = "glint"
 
@@ -73,6 +77,12 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="webgl2 only: each parameter with a range becomes a uniform a page can set, listed "
         "in a /* glint-params [JSON] */ block (name, type, default, min, max)",
+    )
+    compose.add_argument(
+        "--split",
+        choices=["common"],
+        help="common: write the lighting library for ShaderToy's Common tab to "
+        "OUTPUT.common.glsl and a short Image tab that uses it to OUTPUT (needs -o)",
     )
     _add_quality(compose)
     compose.set_defaults(handler=cmd_compose)
@@ -225,6 +235,8 @@ def cmd_compose(args: argparse.Namespace) -> int:
     )
     if args.explain:
         sys.stdout.write(shader.explain())
+    if args.split:
+        return _write_split(shader, args.output)
     if args.output:
         shader.save(args.output)
         print(
@@ -234,6 +246,24 @@ def cmd_compose(args: argparse.Namespace) -> int:
         )
     elif not args.explain:
         sys.stdout.write(shader.text)
+    return 0
+
+
+def _write_split(shader: Shader, output: str | None) -> int:
+    """`--split common`: the Image tab to OUTPUT, the Common tab beside it."""
+    from glint.compiler.files import write_atomic
+
+    if not output:
+        raise UsageError(
+            "--split common writes two files: give -o IMAGE.glsl (the Common tab goes beside "
+            "it as IMAGE.common.glsl)"
+        )
+    tabs = shader.split_common()
+    image = Path(output)
+    common = image.with_name(image.stem + ".common" + (image.suffix or ".glsl"))
+    write_atomic(common, tabs.common.encode("utf-8"))
+    write_atomic(image, tabs.image.encode("utf-8"))
+    print(f"wrote {common} (Common tab) and {image} (Image tab)", file=sys.stderr)
     return 0
 
 

@@ -17,6 +17,7 @@ from glint.compiler.target.shadertoy import TARGETS
 if TYPE_CHECKING:
     from glint.compiler.compose.planner import Plan
     from glint.compiler.compose.scene import Scene
+    from glint.compiler.compose.split import SplitShader
     from glint.compiler.compose.uniform_params import UniformParam
     from glint.compiler.compose.units import Unit
     from glint.compiler.target.glslang import Diagnostic
@@ -83,6 +84,16 @@ class Shader:
             composed.units,
             tuple(composed.uniforms),
         )
+
+    def split_common(self) -> SplitShader:
+        """The shader as two ShaderToy tabs: the lighting library for the Common tab and a short
+        Image tab that uses it (`glint compose --split common`); shadertoy target only."""
+        from glint.compiler.compose.pipeline import glint_version
+        from glint.compiler.compose.split import split_common
+
+        if self.target != "shadertoy":
+            raise UsageError(f"--split common is for the shadertoy target, not {self.target}")
+        return split_common(self.scene.name, self.plan, list(self.units), glint_version())
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the shader to `path` (atomically, like `glint compose -o`); returns the path."""
