@@ -284,12 +284,15 @@ def _params(raw: dict[str, Any], relpath: str) -> dict[str, Param]:
 
 @cache
 def load_catalog(root: Path | None = None) -> Catalog:
-    """Every `snippets/<slot>/<variant>.glsl` under `root` (default: the installed catalog)."""
+    """Every `snippets/<slot>/<variant>.glsl` under `root` (default: the installed catalog).
+    `snippets/scenes/` holds example scenes, whose GLSL files are users' geometry, not
+    snippets."""
     root = root or snippets_root()
     catalog = Catalog()
     texts = {
         f"snippets/{path.parent.name}/{path.name}": path.read_text(encoding="utf-8")
         for path in sorted(root.glob("*/*.glsl"))
+        if path.parent.name != "scenes"
     }
     # Presets after every variant with a body, so that their bases are there to complete them.
     ordered = sorted(texts, key=lambda relpath: is_preset(texts[relpath]))
