@@ -36,7 +36,10 @@ OPEN = "/* ---"
 CLOSE = "--- */"
 REQUIRED_KEYS = {"id", "slot", "summary", "provides", "requires", "sources"}
 # `formula`: the model in LaTeX, for the docs site's page of the variant (glint.compiler.site).
-OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost", "formula"}
+# `distance`: for a signed-distance snippet, "exact" (the Euclidean distance) or "bound" (a lower
+# bound of it, zero on the surface: safe to march, but a marcher must not over-relax its steps).
+OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost", "formula", "distance"}
+DISTANCE_KINDS = ("exact", "bound")
 # A preset takes its code and its contract from its base; it may add sources of its own.
 PRESET_REQUIRED_KEYS = {"id", "slot", "summary", "preset_of", "params"}
 PRESET_OPTIONAL_KEYS = {"sources", "domain", "reference", "error_budget", "cost"}
@@ -72,6 +75,9 @@ class Snippet:
     preset_of: str = ""  # id of the base variant when this is a preset, else ""
     file: str = ""  # the snippet's own file: `relpath`, except for a preset
     formula: str = ""  # the model in LaTeX (a preset's own file has none)
+    # "exact": returns the Euclidean signed distance; "bound": a lower bound of its magnitude
+    # with the right sign, zero on the surface (sphere tracing stays safe, over-relaxation not).
+    distance: str = "exact"
 
     def __post_init__(self) -> None:
         if not self.file:
@@ -155,6 +161,7 @@ def parse_snippet(text: str, relpath: str, bases: Mapping[str, Snippet] | None =
         body=body,
         body_line=body_line,
         formula=str(meta.get("formula", "")),
+        distance=_distance(meta, relpath),
     )
 
 
@@ -266,6 +273,15 @@ def _check_keys(meta: dict[str, Any], relpath: str, required: set[str], optional
             continue
         if not isinstance(meta[key], list) or not all(isinstance(v, str) for v in meta[key]):
             raise InputError(f"{relpath}: '{key}' must be a list of strings")
+
+
+def _distance(meta: dict[str, Any], relpath: str) -> str:
+    value = meta.get("distance", "exact")
+    if value not in DISTANCE_KINDS:
+        raise InputError(
+            f"{relpath}: distance = {value!r}; expected one of {', '.join(DISTANCE_KINDS)}"
+        )
+    return value
 
 
 def _params(raw: dict[str, Any], relpath: str) -> dict[str, Param]:
