@@ -163,8 +163,9 @@ class Repeat(Placed):
     """The parts of one copy (their union)."""
     spacing: Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
     """Distance between copies along x, y and z; 0 on an axis that is not repeated."""
-    count: Annotated[list[Annotated[int, Field(strict=True, ge=1)]], Field(min_length=3,
-                                                                           max_length=3)]
+    count: Annotated[
+        list[Annotated[int, Field(strict=True, ge=1)]], Field(min_length=3, max_length=3)
+    ]
     """Copies along x, y and z (1 on an axis that is not repeated)."""
 
     @model_validator(mode="after")
@@ -179,7 +180,16 @@ class Repeat(Placed):
 
 
 Shape = Annotated[
-    Sphere | Box | RoundedBox | Plane | Torus | Capsule | Cylinder | Cone | Ellipsoid | Group
+    Sphere
+    | Box
+    | RoundedBox
+    | Plane
+    | Torus
+    | Capsule
+    | Cylinder
+    | Cone
+    | Ellipsoid
+    | Group
     | Repeat,
     Field(discriminator="shape"),
 ]
