@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from glint.compiler.compose.pipeline import compose
+from glint.compiler.compose.scene import default_scene_path
 from glint.compiler.render import render
 from glint.compiler.render.images import flip_error, load_png
 
@@ -41,3 +42,18 @@ def test_example_picture_is_the_default_scene() -> None:
     picture = load_png(str(EXAMPLE.with_suffix(".png")))
     fresh = render(compose().text, 640, 360, time=1.0)
     assert flip_error(picture, fresh) <= 0.001
+
+
+# The pictures of the scene section: each is its example scene as glint renders it now.
+SCENE_PICTURES = ["machined_part", "sculpture_garden", "island"]
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("name", SCENE_PICTURES)
+def test_scene_pictures_are_their_scenes(name: str) -> None:
+    picture_path = EXAMPLE.parent / f"{name}.png"
+    assert f"site/docs/examples/{name}.png" in README
+    scene = default_scene_path().parent / f"{name}.toml"
+    fresh = render(compose(scene).text, 640, 360, time=1.0)
+    hint = f"regenerate with: glint render {scene} -o {picture_path} --time 1.0"
+    assert flip_error(load_png(str(picture_path)), fresh) <= 0.001, hint

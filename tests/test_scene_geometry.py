@@ -263,3 +263,16 @@ def test_split_common_gives_a_common_tab_without_uniforms_and_the_same_picture(
     whole = glint.render(shader, size=(96, 54), time=1.0).pixels
     split = glint.render(joined, size=(96, 54), time=1.0).pixels
     assert np.array_equal(whole, split)
+
+
+def test_the_plan_says_when_the_field_is_only_a_bound(tmp_path: Path) -> None:
+    exact = glint.compose(scene_from_dict(_scene([{"shape": "torus", "material": "a"}])))
+    assert "bound" not in exact.plan.reasons["raymarch"]
+    for scene in (_scene([_sharp("union", 0.2)]),
+                  _scene([{"shape": "ellipsoid", "material": "a"}])):  # fmt: skip
+        assert (
+            "not an exact distance"
+            in glint.compose(scene_from_dict(scene)).plan.reasons["raymarch"]
+        )
+    user = glint.compose(_user_scene(tmp_path, DOUBLED, lipschitz=2.0))
+    assert "not an exact distance" in user.plan.reasons["raymarch"]

@@ -101,6 +101,12 @@ def plan(
         if not use.used:
             result.choices.pop(slot, None)
             result.reasons.pop(slot, None)
+    if "raymarch" in result.reasons and not scene.exact_distance:
+        # what a marcher that over-relaxes its steps must know: here a step may not overshoot
+        result.reasons["raymarch"] += (
+            "; the scene's field is a bound, not an exact distance (a user field, an "
+            "ellipsoid, a blend, a cut or a repetition)"
+        )
     return result
 
 

@@ -22,6 +22,7 @@ from glint.compiler.compose.shapes import (
     Shape,
     Strict,
     Vec3,
+    exact,
     parts,
 )
 from glint.compiler.errors import InputError
@@ -303,6 +304,12 @@ class Scene(Strict):
     effects: Effects = Effects()
     post: Post = Post()
     quality: Quality = Quality()
+
+    @property
+    def exact_distance(self) -> bool:
+        """Whether `map` is the exact distance to the scene: no user field (whose exactness
+        glint cannot know) and no part whose field is only a bound (shapes.exact)."""
+        return self.geometry is None and all(exact(obj) for obj in self.objects)
 
     def used_materials(self) -> list[str]:
         """Names of the materials in use, in order of first use (objects, then the user's
