@@ -21,7 +21,7 @@ import numpy as np
 import glint
 from glint.compiler.catalog.loader import snippets_root
 from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
-from glint.compiler.compose.scene import Scene
+from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.render.images import flip_error, png_pixels
 
 from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
@@ -144,6 +144,10 @@ def scene_reference_page(
             parts.append(canvas_html(live[scene.stem], LIVE_SIZE, f"the {scene.stem} scene, live"))
             parts.append("\n")
         parts.append(fenced(scene.read_text(encoding="utf-8"), "toml") + "\n")
+        geometry = load_scene(scene).geometry
+        if geometry is not None:  # the user's own GLSL the scene names
+            parts.append(f"`{geometry.file}`, the scene's own distance function:\n\n")
+            parts.append(fenced(geometry.source, "glsl") + "\n")
     return "".join(parts)
 
 

@@ -17,7 +17,8 @@ float sdCappedCone(vec3 p, float halfHeight, float bottomRadius, float topRadius
     // To the slanted side: the segment from the top rim to the bottom rim.
     vec2 topRim = vec2(topRadius, halfHeight);
     vec2 side = vec2(bottomRadius - topRadius, -2.0 * halfHeight);
-    float along = clamp(dot(q - topRim, side) / dot(side, side), 0.0, 1.0);
+    // (max: a degenerate cone of height 0 would divide by 0)
+    float along = clamp(dot(q - topRim, side) / max(dot(side, side), 1e-12), 0.0, 1.0);
     vec2 toSide = q - topRim - side * along;
     // Inside when below the side line (left of it) and between the caps.
     bool inside = toSide.x < 0.0 && toCap.y < 0.0;
