@@ -224,6 +224,11 @@ def test_bad_user_geometry_gets_one_clear_message_and_exit_1(
     assert not out.exists()  # nothing half-written
 
 
+def test_the_user_file_may_use_the_scene_constants(tmp_path: Path) -> None:
+    glsl = DOUBLED + "vec3 sceneAlbedo(vec3 p, int id, vec3 a) { return a * SUN_DIR.y; }\n"
+    assert glint.compose(_user_scene(tmp_path, glsl)).validate() == []
+
+
 def test_a_missing_user_file_names_where_it_was_looked_for(tmp_path: Path) -> None:
     scene = _user_scene(tmp_path, DOUBLED)
     (tmp_path / "field.glsl").unlink()

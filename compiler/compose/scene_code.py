@@ -57,7 +57,7 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     if any(code.function for code in objects):
         units.append(_objects_unit(objects))
     if scene.geometry is not None:
-        units.append(user_unit(scene.geometry))
+        units.append(user_unit(scene.geometry, lights.defines))
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials, objects))
     units.append(_surface_unit(scene, materials))

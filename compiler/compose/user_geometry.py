@@ -17,6 +17,7 @@ reports a compile error at the user's file and line.
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -53,16 +54,17 @@ GENERATED_NAMES = frozenset(
 )  # fmt: skip
 
 
-def user_unit(geometry: Geometry) -> Unit:
+def user_unit(geometry: Geometry, constants: Collection[str] = ()) -> Unit:
     """The user's file as a unit of the composition; one clear error for a file that does not
-    parse, breaks the contract or takes a name that is not its to take."""
+    parse, breaks the contract or takes a name that is not its to take. `constants`: the
+    scene's #define names (SUN_DIR ...), which the file may use."""
     path = geometry.path
     symbols = analyze(geometry.source, path, provided=UNIFORM_NAMES)
     functions = {f.name: f for f in symbols.functions}
     _check_contract(functions, path, bool(geometry.materials))
     _check_names(symbols.defined, functions, path)
     requires = (symbols.calls | symbols.free) - symbols.defined
-    _check_requirements(requires, symbols.functions, path)
+    _check_requirements(requires - set(constants), symbols.functions, path)
     return Unit(
         id=f"user:{Path(path).name}",
         slot="scene",
