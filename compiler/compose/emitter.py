@@ -51,12 +51,18 @@ def parameter_block(units: list[Unit], catalog: Catalog, plan: Plan, lights: dic
     return "\n".join(lines) + "\n"
 
 
-def header(scene_name: str, plan: Plan, units: list[Unit], target: str, version: str) -> str:
+IMAGE_TAB = "Paste into the Image tab of https://www.shadertoy.com/new as it is."
+
+
+def header(
+    scene_name: str, plan: Plan, units: list[Unit], target: str, version: str, where: str = ""
+) -> str:
+    """The comment that opens a shader; `where` says where a ShaderToy one is pasted."""
     snippets = [u for u in units if u.origin != GENERATED]
     width = max((len(u.id) for u in snippets), default=0)
     lines = [
         f"// glint {version} - scene '{scene_name}', tier {plan.tier}, target {target}",
-        "// Paste into the Image tab of https://www.shadertoy.com/new as it is."
+        f"// {where or IMAGE_TAB}"
         if target == "shadertoy"
         else f"// A complete {target} fragment shader.",
         "// Snippets, in order:",
@@ -71,8 +77,9 @@ def emit(
     units: list[Unit],
     target: str,
     version: str,
+    where: str = "",
 ) -> str:
-    parts = [header(scene_name, plan, units, target, version)]
+    parts = [header(scene_name, plan, units, target, version, where)]
     for unit in units:
         body = unit.body.strip("\n")
         line = unit.line + _leading_blank_lines(unit.body)

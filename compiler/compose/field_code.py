@@ -36,7 +36,8 @@ from glint.compiler.compose.shapes import (
 class ObjectCode:
     expression: str  # the distance at `p`
     requires: list[str]
-    function: str = ""  # the body of `objectN`, when the object needs one
+    name: str = ""  # `objectN`, when the object has a function of its own
+    function: str = ""  # that function's definition
 
 
 def object_code(obj: Placed, index: int) -> ObjectCode:
@@ -50,7 +51,7 @@ def object_code(obj: Placed, index: int) -> ObjectCode:
     lines = [f"// objects[{index}]: {_describe(obj)}.", f"float {name}(vec3 p) {{"]
     lines += [f"    {line}" for line in writer.lines]
     lines += [f"    return {result};", "}"]
-    return ObjectCode(f"{name}(p)", sorted(writer.requires), "\n".join(lines) + "\n")
+    return ObjectCode(f"{name}(p)", sorted(writer.requires), name, "\n".join(lines) + "\n")
 
 
 def _inline(obj: Placed) -> ObjectCode | None:

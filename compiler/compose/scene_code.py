@@ -25,7 +25,6 @@ from glint.compiler.compose.user_geometry import (
     DISTANCE,
     GEOMETRY_MATERIAL,
     MATERIAL,
-    defines_albedo,
     user_unit,
 )
 from glint.compiler.errors import InputError
@@ -54,13 +53,16 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     materials = scene.used_materials()
     objects = [object_code(obj, i) for i, obj in enumerate(scene.objects)]
     units = [_map_unit(scene, objects)]
-    if any(code.function for code in objects):
+    if any(code.name for code in objects):
         units.append(_objects_unit(objects))
+    albedo_by_user = False
     if scene.geometry is not None:
-        units.append(user_unit(scene.geometry, lights.defines))
+        user = user_unit(scene.geometry, lights.defines)
+        units.append(user)
+        albedo_by_user = ALBEDO in user.provides
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials, objects))
-    units.append(_surface_unit(scene, materials))
+    units.append(_surface_unit(scene, materials, albedo_by_user))
     # Translucency is lit by directional lights only; without one it has nothing to show.
     translucent = bool(lights.directional) and any(
         scene.materials[m].subsurface is not None for m in materials
@@ -188,7 +190,7 @@ def _map_unit(scene: Scene, objects: list[ObjectCode]) -> Unit:
 def _called(code: ObjectCode) -> list[str]:
     """What a line computing an object's distance calls: its own function, or the primitive
     written inline."""
-    return [code.expression.removesuffix("(p)")] if code.function else code.requires
+    return [code.name] if code.name else code.requires
 
 
 def _user_distance(scene: Scene) -> str:
@@ -200,8 +202,8 @@ def _user_distance(scene: Scene) -> str:
 
 
 def _objects_unit(objects: list[ObjectCode]) -> Unit:
-    functions = [code for code in objects if code.function]
-    names = [code.expression.removesuffix("(p)") for code in functions]
+    functions = [code for code in objects if code.name]
+    names = [code.name for code in functions]
     requires = [name for code in functions for name in code.requires]
     body = "\n".join(code.function for code in functions)
     return generated("scene.objects", names, requires, body)
@@ -282,10 +284,11 @@ def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
     return lines + [f"    {line}" for line in bodies[0]], ["materialAt"]
 
 
-def _surface_unit(scene: Scene, materials: list[str]) -> Unit:
+def _surface_unit(scene: Scene, materials: list[str], albedo_by_user: bool) -> Unit:
+    """`surfaceAt`; `albedo_by_user`: the user's file defines sceneAlbedo."""
     requires = ["Surface", "makeSurface"]
     bodies = []
-    procedural = _procedural_albedo_ids(scene)
+    procedural = _procedural_albedo_ids(scene) if albedo_by_user else {}
     for name in materials:
         material = scene.materials[name]
         albedo, needs = _albedo(material)
@@ -306,7 +309,7 @@ def _procedural_albedo_ids(scene: Scene) -> dict[str, int]:
     """The materials of the user's field whose albedo sceneAlbedo makes, with the id it is
     given (the material's id in [geometry.materials], 0 for the one [geometry] material)."""
     geometry = scene.geometry
-    if geometry is None or not defines_albedo(geometry):
+    if geometry is None:
         return {}
     if geometry.material is not None:
         return {geometry.material: 0}

@@ -19,6 +19,8 @@ from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 _UNIFORM = re.compile(r"\b(" + "|".join(sorted(UNIFORM_NAMES)) + r")\b")
 _COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
+_COMMON_TAB = "Paste into the Common tab; the Image tab goes with it."
+_IMAGE_TAB = "Paste into the Image tab, with glint's Common tab (the lighting library) beside it."
 
 
 @dataclass(frozen=True)
@@ -31,14 +33,9 @@ def split_common(scene_name: str, plan: Plan, units: list[Unit], version: str) -
     image_ids = _image_units(units)
     common = [u for u in units if u.id not in image_ids]
     image = [u for u in units if u.id in image_ids]
-    common_text = emit(scene_name, plan, common, "shadertoy", version)
-    image_text = emit(scene_name, plan, image, "shadertoy", version)
     return SplitShader(
-        common=_retitle(common_text, "Paste into the Common tab; the Image tab goes with it."),
-        image=_retitle(
-            image_text,
-            "Paste into the Image tab, with glint's Common tab (the lighting library) beside it.",
-        ),
+        common=emit(scene_name, plan, common, "shadertoy", version, _COMMON_TAB),
+        image=emit(scene_name, plan, image, "shadertoy", version, _IMAGE_TAB),
     )
 
 
@@ -56,10 +53,3 @@ def _image_units(units: list[Unit]) -> set[str]:
                 image.add(uid)
                 grew = True
     return image
-
-
-def _retitle(text: str, instruction: str) -> str:
-    """The emitter's header says "paste into the Image tab"; each tab says where it goes."""
-    lines = text.split("\n")
-    lines[1] = f"// {instruction}"
-    return "\n".join(lines)

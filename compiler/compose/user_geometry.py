@@ -77,10 +77,6 @@ def user_unit(geometry: Geometry, constants: Collection[str] = ()) -> Unit:
     )
 
 
-def defines_albedo(geometry: Geometry) -> bool:
-    return ALBEDO in {f.name for f in analyze(geometry.source, geometry.path).functions}
-
-
 def _check_contract(functions: dict[str, FunctionDef], path: str, by_id: bool) -> None:
     for name, contract in CONTRACT.items():
         found = functions.get(name)
