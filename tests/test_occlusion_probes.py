@@ -93,7 +93,7 @@ def test_presets_run_their_base_with_their_own_defaults() -> None:
     # soft_64 and soft share one body; on a long, low shadow only the step count tells them
     # apart, so their outputs must differ there.
     c = shadow_cases()[1]
-    stub = reference_scene(c.scene).glsl()
+    stub = reference_scene(c.scene).glsl(queries=True)
     inputs = shadow_inputs(c.ro, c.light, TMIN, TMAX)
     preset = run_probe("shadow.soft_64", inputs, CATALOG, stub)
     base = run_probe("shadow.soft", inputs, CATALOG, stub)
@@ -118,7 +118,7 @@ def test_shadow_finite_and_in_range_at_the_extremes(snippet_id: str) -> None:
     rd = np.array([r[1] for r in rows])
     tmin, tmax = (np.array([r[2][i] for r in rows]) for i in (0, 1))
     inputs = shadow_inputs(ro, rd, 0.0, 0.0) | {"tmin": tmin, "tmax": tmax}
-    stub = reference_scene("sphere_on_plane").glsl()
+    stub = reference_scene("sphere_on_plane").glsl(queries=True)
     values = run_probe(snippet_id, inputs, CATALOG, stub)
     bad = ~np.isfinite(values) | (values < 0.0) | (values > 1.0)
     example = rows[int(np.argmax(bad))]

@@ -13,7 +13,7 @@ import pytest
 
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.catalog.tiers import TIERS
+from glint.compiler.catalog.tiers import TIERS, tier_table
 from glint.compiler.cli import main
 from glint.compiler.compose.explain import explain
 from glint.compiler.compose.pipeline import compose_scene
@@ -195,7 +195,8 @@ def test_explain_names_every_slot_with_its_reason() -> None:
         if not spec.many:
             assert f"  {slot} " in text
     assert "out  ao           effects.ao = false" in text
-    assert "in   shadow       shadow.soft_centered: balanced tier" in text
+    analytic = "balanced tier: every object is an analytic primitive"
+    assert f"in   shadow       shadow.analytic: {analytic}" in text
     assert "in because lights[0] (directional) casts shadows" in text
     assert "in   metallic (core.metallic): 'a' (metallic > 0)" in text
 
@@ -210,3 +211,33 @@ def test_compose_explain_on_the_command_line(
     target = tmp_path / "s.glsl"
     assert main(["compose", "--explain", "-o", str(target)]) == 0
     assert "void mainImage" in target.read_text()
+
+
+def test_analytic_scenes_trace_in_closed_form_at_the_tiers_that_say_so() -> None:
+    # A sphere on a plane: no march at fast and balanced, the marcher at reference.
+    scene = build([SUN])
+    tiers = tier_table()["analytic"]
+    for tier in TIERS:
+        choices = plan(scene, CATALOG, tier).choices
+        for slot in ("raymarch", "normal", "shadow"):
+            want = tiers.get(tier, {}).get(slot)
+            if want is None:
+                assert choices[slot] != f"{slot}.analytic"
+            else:
+                assert choices[slot] == f"{slot}.{want}"
+    text = compose_scene(scene, tier="fast").text
+    for entry in ("float raymarch(", "float shadow(", "vec3 calcNormal("):
+        body = text[text.index(entry) :].split("\n}\n")[0]
+        assert "map(" not in body, entry
+
+
+def test_a_shape_without_a_closed_form_keeps_the_march() -> None:
+    data = build([SUN]).model_dump()
+    data["objects"].append({"shape": "torus", "material": "a", "position": [2.0, 0.0, 0.0]})
+    scene = Scene.model_validate(data)
+    choices = plan(scene, CATALOG, "fast").choices
+    assert choices["raymarch"] != "raymarch.analytic" and choices["shadow"] != "shadow.analytic"
+    # a turned box has no axis-aligned slabs either
+    data["objects"][-1] = {"shape": "box", "size": [0.5, 0.5, 0.5], "rotation": [0.0, 30.0, 0.0],
+                           "material": "a"}  # fmt: skip
+    assert plan(Scene.model_validate(data), CATALOG, "fast").choices["normal"] != "normal.analytic"

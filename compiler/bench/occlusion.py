@@ -65,7 +65,7 @@ def shadow_sets(reference_name: str, k: float | None = None) -> list[ProbeSet]:
         ro = np.concatenate([cases[i].ro for i in indices])
         rd = np.concatenate([np.broadcast_to(cases[i].light, cases[i].ro.shape) for i in indices])
         exact = np.concatenate([shadow_truth(reference_name, i, k) for i in indices])
-        stub = reference_scene(scene).glsl()
+        stub = reference_scene(scene).glsl(queries=True)
         sets.append(ProbeSet(shadow_inputs(ro, rd, TMIN, TMAX), stub, exact))
     return sets
 

@@ -26,6 +26,7 @@ SLOTS: dict[str, Slot] = {
     for s in (
         Slot("core", "shared constants and structs", many=True),
         Slot("sdf", "signed distance primitives", many=True),
+        Slot("trace", "closed-form ray queries of primitives: hit, clearance, normal", many=True),
         Slot("pattern", "procedural albedo patterns", many=True),
         Slot("light", "light types, each a function of the surface", many=True),
         Slot(
@@ -149,6 +150,11 @@ SLOTS: dict[str, Slot] = {
 SCENE_FUNCTIONS: dict[str, str] = {
     "map": "float map(vec3 p)",
     "materialAt": "int materialAt(vec3 p)",
+    # Only for a scene whose every object is an analytic primitive (an unplaced sphere, box or
+    # plane): the closed-form queries of compose/trace_code.py.
+    "traceScene": "float traceScene(vec3 ro, vec3 rd, float tmax)",
+    "sceneClearance": "float sceneClearance(vec3 ro, vec3 rd, float tmax)",
+    "sceneNormal": "vec3 sceneNormal(vec3 p)",
 }
 SCENE_CONSTANTS: dict[str, str] = {
     "SUN_DIR": "vec3 direction toward the scene's key (sun) light",

@@ -28,6 +28,7 @@ from glint.compiler.compose.budget import (
 from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.scene_code import generate
 from glint.compiler.compose.scene_slots import SlotUse, slot_uses
+from glint.compiler.compose.trace_code import TRACE_UNIT
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 
@@ -76,6 +77,10 @@ def plan(
     else:
         choose("background", "gradient", "no sun to draw in the background")
     fixed = {"camera", "tonemap", "output", "background"}  # what the budget may not change
+    if any(unit.id == TRACE_UNIT for unit in units):
+        # Every object is a sphere, box or plane: closed forms replace the marches (trace_code.py)
+        for slot, variant in tiers.get("analytic", {}).get(tier, {}).items():
+            choose(slot, variant, f"{tier} tier: every object is an analytic primitive")
     rough = _rough_materials(scene)
     if rough:
         fixed.add("diffuse")

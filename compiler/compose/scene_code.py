@@ -19,6 +19,7 @@ from glint.compiler.compose.scene import (
     Scene,
     SkyLight,
 )
+from glint.compiler.compose.trace_code import trace_unit
 from glint.compiler.compose.units import Unit, generated
 from glint.compiler.compose.user_geometry import (
     ALBEDO,
@@ -55,6 +56,9 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     units = [_map_unit(scene, objects)]
     if any(code.name for code in objects):
         units.append(_objects_unit(objects))
+    trace = trace_unit(scene.objects) if scene.geometry is None else None
+    if trace is not None:  # pruned unless the plan takes an analytic variant
+        units.append(trace)
     albedo_by_user = False
     if scene.geometry is not None:
         user = user_unit(scene.geometry, lights.defines)

@@ -14,6 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+from glint.compiler.compose.trace_code import Analytic, trace_glsl
+
 Vec3 = tuple[float, float, float]
 
 
@@ -43,6 +45,9 @@ class Sphere:
     def glsl(self) -> str:
         return f"length(p - {_vec(self.center)}) - {float(self.radius)!r}"
 
+    def analytic(self) -> Analytic:
+        return Analytic("sphere", _vec(self.center), repr(float(self.radius)))
+
 
 @dataclass(frozen=True)
 class Box:
@@ -71,6 +76,9 @@ class Box:
     def glsl(self) -> str:
         return f"sdBoxAt(p, {_vec(self.center)}, {_vec(self.half)})"
 
+    def analytic(self) -> Analytic:
+        return Analytic("box", _vec(self.center), _vec(self.half))
+
 
 @dataclass(frozen=True)
 class Ground:
@@ -92,6 +100,9 @@ class Ground:
 
     def glsl(self) -> str:
         return "p.y"
+
+    def analytic(self) -> Analytic:
+        return Analytic("plane", normal="vec3(0.0, 1.0, 0.0)", offset="0.0")
 
 
 Primitive = Sphere | Box | Ground
@@ -124,8 +135,10 @@ class Scene:
             hit |= (t0 <= t1) & (t1 > T_EPSILON) & (t0 <= tmax)
         return hit
 
-    def glsl(self) -> str:
-        """The scene as the `scene_stub` of a probe: `map` and a single material."""
+    def glsl(self, queries: bool = False) -> str:
+        """The scene as the `scene_stub` of a probe: `map` and a single material; with
+        `queries`, also its closed-form queries for the analytic variants (they call the
+        catalog's `trace` snippets, which the probe's resolver adds)."""
         terms = [prim.glsl() for prim in self.primitives]
         expr = terms[0]
         for term in terms[1:]:
@@ -134,7 +147,7 @@ class Scene:
         return (
             f"{helper}float map(vec3 p) {{ return {expr}; }}\n"
             "int materialAt(vec3 p) { return 0; }\n"
-        )
+        ) + (trace_glsl([prim.analytic() for prim in self.primitives]) if queries else "")
 
 
 SCENES: dict[str, Scene] = {
