@@ -249,7 +249,7 @@ def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
         left.annotate(
             f"{t.tier}{ratio}",
             (t.frame_ms, t.flip),
-            xytext=(6, 4),
+            xytext=(6, -13 if t.tier == "fast" else 4),
             textcoords="offset points",
             fontsize=9,
         )
@@ -287,7 +287,7 @@ def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
                 right.annotate(
                     f"{scene} {t.tier}",
                     (t.time_vs_reference, t.flip),
-                    xytext=(4, 3),
+                    xytext=(4, -11 if t.tier == "fast" else 3),
                     textcoords="offset points",
                     fontsize=7,
                     color=colour[scene],
@@ -311,7 +311,8 @@ def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
         fontsize=8,
         color="gray",
     )
-    right.set_xlim(min(0.5, right.get_xlim()[0]), max(1.1, right.get_xlim()[1]))
+    ratios = [t.time_vs_reference for t in result.tiers if t.tier != TEMPLATE_ROW]
+    right.set_xlim(min([0.5, *ratios]) - 0.02, max([1.1, *ratios]) + 0.15)  # room for labels
     right.set_title("every scene: tiers against their reference")
     right.set_xlabel("frame time × the scene's reference tier")
     right.set_ylabel("mean FLIP against the reference tier")
