@@ -34,14 +34,18 @@ def test_bench_prints_the_trade_and_writes_json_markdown_and_charts(
     assert code == 0
     assert "| default | balanced |" in out and "| default | template |" in out
     assert "goal balanced vs template:" in out and "goal reference vs template:" in out
+    assert "| FLIP p99 | outliers |" in out and "outliers" in out.split("goal fast vs template:")[1]
     data = json.loads((tmp_path / "a" / "bench.json").read_text())
     assert {v["id"] for v in data["variants"]} == {
         "F.dielectric", "F.schlick", "F.schlick_f90", "F.schlick_fast"
     }  # fmt: skip
     assert {t["tier"] for t in data["tiers"]} == {"fast", "balanced", "reference", "template"}
+    for tier in data["tiers"]:
+        assert 0.0 <= tier["flip_p99"] <= 1.0 and 0.0 <= tier["outliers"] <= 1.0
     assert data["machine"]["renderer"]
     markdown = (tmp_path / "a" / "bench.md").read_text()
     assert "### F" in markdown and "| F.dielectric | F_dielectric |" in markdown
+    assert "| default | reference | " in markdown and "| 0.0000 | 0.0000 | 0.000% |" in markdown
     for chart in ("variants.png", "tiers.png"):
         with Image.open(tmp_path / "a" / chart) as image:
             assert image.size[0] > 200 and image.size[1] > 200
@@ -83,3 +87,32 @@ def test_bad_bench_arguments_are_named(capsys: pytest.CaptureFixture[str], tmp_p
     assert code == 2 and "--slots: unknown slot 'nope'" in err
     code, _, err = run(capsys, "--repeats", "1", "--out", str(tmp_path))
     assert code == 2 and "--repeats must be at least 2" in err
+
+
+def test_the_tiers_chart_labels_every_point(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every tier's point carries its name (and, on the every-scene panel, its scene's)."""
+    import matplotlib.axes
+
+    labels: list[str] = []
+    annotate = matplotlib.axes.Axes.annotate
+
+    def spy(self: matplotlib.axes.Axes, text: str, *args: object, **kwargs: object) -> object:
+        labels.append(text)
+        return annotate(self, text, *args, **kwargs)
+
+    monkeypatch.setattr(matplotlib.axes.Axes, "annotate", spy)
+    tiers = [
+        TierMeasure("default", "fast", 4.0, 0.01, 0.8, 1, 0.6, None, 0.05, 0.0),
+        TierMeasure("default", "reference", 5.0, 0.0, 1.0, 1, 0.75, None, 0.0, 0.0),
+        TierMeasure("default", "template", 6.7, 0.08, 1.3, 1, 1.0, None, 0.3, 0.01),
+        TierMeasure("pool", "fast", 3.0, 0.05, 0.7, 1, None, None, 0.2, 0.001),
+        TierMeasure("pool", "reference", 4.3, 0.0, 1.0, 1, None, None, 0.0, 0.0),
+    ]
+    result = BenchResult(machine={"cpu": True}, tiers=tiers)
+    report.write_charts(result, tmp_path)
+    assert {"fast 0.60×", "reference 0.75×", "template 1.00×"} <= set(labels)
+    assert {"default fast", "pool fast", "reference (every scene)"} <= set(labels)
+    with Image.open(tmp_path / "tiers.png") as image:
+        assert image.size[0] > 800

@@ -9,7 +9,18 @@ import numpy as np
 import pytest
 
 from glint.compiler.errors import EnvironmentProblem, InputError
-from glint.compiler.render.images import flip_error, image_stats, load_png, save_png
+from glint.compiler.render.images import (
+    OUTLIER_FLOOR,
+    flip_error,
+    flip_map,
+    flip_summary,
+    image_stats,
+    load_png,
+    luminance,
+    outlier_mask,
+    outlier_share,
+    save_png,
+)
 
 
 def gradient(width: int = 48, height: int = 32) -> np.ndarray:
@@ -102,3 +113,67 @@ def test_flip_error_sees_a_difference() -> None:
 def test_flip_error_rejects_different_sizes() -> None:
     with pytest.raises(InputError, match="different sizes"):
         flip_error(gradient(48, 32), gradient(32, 48))
+
+
+def test_flip_map_is_per_pixel_and_its_mean_is_flip_error() -> None:
+    other = gradient()
+    other[8:24, 12:36, :3] = 1.0 - other[8:24, 12:36, :3]
+    error = flip_map(gradient(), other)
+    assert error.shape == (32, 48)
+    assert float(error.mean()) == pytest.approx(flip_error(gradient(), other), abs=1e-6)
+    assert error[0, 0] == 0.0 and error[16, 24] > 0.1  # far from the change / inside it
+
+
+def test_flip_summary_pools_the_maps_and_takes_a_pixel_value_as_p99() -> None:
+    # 990 pixels at 0 and 10 at 1: 99 % do not exceed 0. One more at 1 and p99 is 1.
+    quiet = np.zeros(1000, np.float32)
+    quiet[:10] = 1.0
+    assert flip_summary([quiet.reshape(20, 50)]) == (pytest.approx(0.01), 0.0)
+    loud = quiet.copy()
+    loud[10] = 1.0
+    assert flip_summary([loud.reshape(20, 50)])[1] == 1.0
+    # Two views pooled: 101 zeros, then 0.01 ... 0.99; the 198th of the 200 values is 0.97
+    # (the ramp's own p99 is 0.98, the zeros' 0: neither their mean nor the larger).
+    ramp = np.arange(100, dtype=np.float32).reshape(10, 10) / 100.0
+    mean, p99 = flip_summary([ramp, np.zeros((10, 10), np.float32)])
+    assert mean == pytest.approx(0.495 / 2) and p99 == pytest.approx(0.97)
+
+
+def grey(level: float, height: int = 10, width: int = 20) -> np.ndarray:
+    return np.full((height, width, 3), level, dtype=np.float32)
+
+
+def test_luminance_decodes_the_display_gamma_and_weighs_rec709() -> None:
+    assert luminance(grey(0.5))[0, 0] == pytest.approx((128 / 255) ** 2.2)  # 8-bit grid
+    red = np.zeros((1, 1, 3), np.float32)
+    red[..., 0] = 1.0
+    assert luminance(red)[0, 0] == pytest.approx(0.2126)
+
+
+def test_a_known_number_of_darkened_pixels_is_that_share_of_outliers() -> None:
+    reference = grey(0.6)
+    test = reference.copy()
+    test.reshape(-1, 3)[:7] = 0.6 * 0.5 ** (1 / 2.2) - 0.01  # just under half the luminance
+    test.reshape(-1, 3)[7:12] = 0.6 * 0.5 ** (1 / 2.2) + 0.01  # just above: not outliers
+    test.reshape(-1, 3)[12] = 1.0  # (1 / 0.6) ** 2.2 = 3.1 times brighter
+    assert outlier_mask(reference, test).sum() == 8
+    assert outlier_share(reference, test) == pytest.approx(8 / 200)
+    assert outlier_share(reference, reference) == 0.0
+
+
+def test_near_black_pixels_are_not_outliers() -> None:
+    black = grey(0.0)
+    # Levels 0 against 3/255: infinitely brighter, but both under the floor.
+    assert luminance(grey(3 / 255))[0, 0] < OUTLIER_FLOOR
+    assert outlier_share(black, grey(3 / 255)) == 0.0
+    # 4/255 is above the floor: against black it is an outlier, against 3/255 (one step) not.
+    assert outlier_share(black, grey(4 / 255)) == 1.0
+    assert outlier_share(grey(3 / 255), grey(4 / 255)) == 0.0
+    # One 8-bit step is never an outlier once the brighter pixel is above the floor.
+    for level in range(3, 255):
+        assert outlier_share(grey(level / 255), grey((level + 1) / 255)) == 0.0, level
+
+
+def test_outliers_reject_different_sizes() -> None:
+    with pytest.raises(InputError, match="different sizes"):
+        outlier_share(gradient(48, 32), gradient(32, 48))

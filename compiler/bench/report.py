@@ -9,7 +9,14 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from glint.compiler.bench.scenes import Goal, TierMeasure
+from glint.compiler.bench.scenes import (
+    REFERENCE_TIER,
+    SCENE_SPEEDUP,
+    TEMPLATE_ROW,
+    TEMPLATE_SCENE,
+    Goal,
+    TierMeasure,
+)
 from glint.compiler.bench.variants import VariantMeasure
 from glint.compiler.catalog.measurements import measurements_path
 from glint.compiler.files import write_atomic
@@ -34,7 +41,10 @@ def static_part(result: BenchResult) -> dict[str, Any]:
         v.id: {k: getattr(v, k) for k in ("reference", "max_abs", "rms", "max_rel", "spirv")}
         for v in result.variants
     }
-    tiers = {f"{t.scene}/{t.tier}": {"flip": t.flip, "spirv": t.spirv} for t in result.tiers}
+    tiers = {
+        f"{t.scene}/{t.tier}": {k: getattr(t, k) for k in ("flip", "flip_p99", "outliers", "spirv")}
+        for t in result.tiers
+    }
     return {"variants": variants, "tiers": tiers}
 
 
@@ -98,7 +108,13 @@ def to_markdown(result: BenchResult) -> str:
         "",
     ]
     if result.goals:
-        lines += ["## Goals (default scene, against the seed template)", ""]
+        lines += [
+            "## Goals",
+            "",
+            "On the default scene against the seed template; on every other scene, fast against "
+            "that scene's reference tier.",
+            "",
+        ]
         lines += ["| goal | target | measured | reached |", "|---|---|---|---|"]
         lines += [
             f"| {g.name} | {g.target} | {g.measured} | {'yes' if g.reached else '**no**'} |"
@@ -136,25 +152,32 @@ def to_markdown(result: BenchResult) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _share(value: float | None) -> str:
+    return "–" if value is None else f"{value:.3%}"
+
+
 def tier_table(tiers: list[TierMeasure]) -> list[str]:
-    """The trade table: per scene and tier, frame time and mean FLIP, with ratios."""
+    """The trade table: per scene and tier, frame time with its ratios, and the accuracy
+    against the scene's reference tier: mean FLIP, its 99th percentile and the share of
+    luminance outliers (under half or over twice reference's), all views' pixels pooled."""
     lines = [
         "| scene | tier | frame ms | × reference | × template | FLIP vs reference "
-        "| FLIP vs truth | SPIR-V |",
-        "|---|---|---|---|---|---|---|---|",
+        "| FLIP p99 | outliers | FLIP vs truth | SPIR-V |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for t in tiers:
+        p99 = "–" if t.flip_p99 is None else f"{t.flip_p99:.4f}"
         lines.append(
             f"| {t.scene} | {t.tier} | {t.frame_ms:.2f} | {t.time_vs_reference:.2f} "
-            f"| {_num(t.time_vs_template, 2)} | {t.flip:.4f} | {_num(t.flip_vs_truth, 3)} "
-            f"| {t.spirv} |"
+            f"| {_num(t.time_vs_template, 2)} | {t.flip:.4f} | {p99} | {_share(t.outliers)} "
+            f"| {_num(t.flip_vs_truth, 3)} | {t.spirv} |"
         )
     return lines
 
 
 def write_charts(result: BenchResult, folder: Path) -> list[Path]:
-    """variants.png: per slot, error against measured cost, the front joined; tiers.png: per
-    scene, frame time against FLIP for each tier (and the template)."""
+    """variants.png: per slot, error against measured cost, the front joined; tiers.png: frame
+    time against FLIP, every point labelled with its tier (see _tiers_chart)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -192,38 +215,111 @@ def write_charts(result: BenchResult, folder: Path) -> list[Path]:
         plt.close(fig)
         written.append(path)
     if result.tiers:
-        fig, ax = plt.subplots(figsize=(7, 4.5))
-        scenes = sorted({t.scene for t in result.tiers})
-        markers = {"fast": "v", "balanced": "o", "reference": "s", "template": "*"}
-        for index, scene in enumerate(scenes):
-            rows_of = [t for t in result.tiers if t.scene == scene]
-            for t in rows_of:
-                ax.scatter(
-                    t.frame_ms,
-                    t.flip,
-                    marker=markers.get(t.tier, "x"),
-                    color=f"C{index}",
-                    s=90 if t.tier == "template" else 40,
-                )
-            ax.plot(
-                [t.frame_ms for t in rows_of if t.tier != "template"],
-                [t.flip for t in rows_of if t.tier != "template"],
-                color=f"C{index}",
-                lw=1,
-                label=scene,
-            )
-        for tier, marker in markers.items():
-            ax.scatter([], [], marker=marker, color="gray", label=tier)
-        ax.set_xlabel(f"frame time, ms ({'CPU, llvmpipe' if result.machine.get('cpu') else 'GPU'})")
-        ax.set_ylabel("mean FLIP against the reference tier")
-        ax.set_title("Speed for accuracy, per scene and tier")
-        ax.legend(fontsize=8)
-        fig.tight_layout()
         path = folder / "tiers.png"
-        fig.savefig(path, dpi=90)
-        plt.close(fig)
+        _tiers_chart(plt, result, path)
         written.append(path)
     return written
+
+
+_MARKERS = {"fast": "v", "balanced": "o", "reference": "s", "template": "*"}
+
+
+def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
+    """Two panels, every point labelled with its tier. Left, the default scene (the template's):
+    frame time in ms against mean FLIP vs its reference tier, the template included, each label
+    with its time as a multiple of the template's. Right, every scene: time as a multiple of the
+    scene's reference tier (paired by round) against mean FLIP, so that the scenes share one
+    axis; the reference tiers all sit at (1, 0), and the line at 1/SCENE_SPEEDUP is fast's goal."""
+    timing = "CPU, llvmpipe" if result.machine.get("cpu") else "GPU"
+    scenes = list(dict.fromkeys(t.scene for t in result.tiers))
+    colour = {scene: f"C{index % 10}" for index, scene in enumerate(scenes)}
+    fig, (left, right) = plt.subplots(1, 2, figsize=(14, 5.2))
+
+    default = [t for t in result.tiers if t.scene == TEMPLATE_SCENE]
+    for t in default:
+        left.scatter(
+            t.frame_ms,
+            t.flip,
+            marker=_MARKERS.get(t.tier, "x"),
+            s=70,
+            color="black" if t.tier == TEMPLATE_ROW else colour[t.scene],
+            zorder=3,
+        )
+        ratio = "" if t.time_vs_template is None else f" {t.time_vs_template:.2f}×"
+        left.annotate(
+            f"{t.tier}{ratio}",
+            (t.frame_ms, t.flip),
+            xytext=(6, -13 if t.tier == "fast" else 4),
+            textcoords="offset points",
+            fontsize=9,
+        )
+    if default:
+        left.set_xlim(0, 1.15 * max(t.frame_ms for t in default))
+        left.set_ylim(-0.005, 1.25 * max(max(t.flip for t in default), 0.02))
+    else:
+        left.text(
+            0.5, 0.5, f"{TEMPLATE_SCENE} scene not measured", ha="center", transform=left.transAxes
+        )
+    left.set_title(f"{TEMPLATE_SCENE} scene: tiers and the seed template (× its time)")
+    left.set_xlabel(f"frame time, ms ({timing})")
+    left.set_ylabel("mean FLIP against the reference tier")
+
+    for scene in scenes:
+        rows = [t for t in result.tiers if t.scene == scene and t.tier != TEMPLATE_ROW]
+        rows.sort(key=lambda t: t.time_vs_reference)
+        right.plot(
+            [t.time_vs_reference for t in rows],
+            [t.flip for t in rows],
+            color=colour[scene],
+            lw=1,
+            label=scene,
+        )
+        for t in rows:
+            right.scatter(
+                t.time_vs_reference,
+                t.flip,
+                marker=_MARKERS.get(t.tier, "x"),
+                s=40,
+                color=colour[scene],
+                zorder=3,
+            )
+            if t.tier != REFERENCE_TIER:
+                right.annotate(
+                    f"{scene} {t.tier}",
+                    (t.time_vs_reference, t.flip),
+                    xytext=(4, -11 if t.tier == "fast" else 3),
+                    textcoords="offset points",
+                    fontsize=7,
+                    color=colour[scene],
+                )
+    if any(t.tier == REFERENCE_TIER for t in result.tiers):
+        right.annotate(
+            "reference (every scene)",
+            (1.0, 0.0),
+            xytext=(-6, 8),
+            textcoords="offset points",
+            fontsize=8,
+            ha="right",
+        )
+    right.axvline(1.0 / SCENE_SPEEDUP, color="gray", ls="--", lw=1)
+    right.annotate(
+        f"fast's goal: {SCENE_SPEEDUP:g}× faster",
+        (1.0 / SCENE_SPEEDUP, 1.0),
+        xycoords=("data", "axes fraction"),
+        xytext=(4, -12),
+        textcoords="offset points",
+        fontsize=8,
+        color="gray",
+    )
+    ratios = [t.time_vs_reference for t in result.tiers if t.tier != TEMPLATE_ROW]
+    right.set_xlim(min([0.5, *ratios]) - 0.02, max([1.1, *ratios]) + 0.15)  # room for labels
+    right.set_title("every scene: tiers against their reference")
+    right.set_xlabel("frame time × the scene's reference tier")
+    right.set_ylabel("mean FLIP against the reference tier")
+    right.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="scene")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
 
 
 def write_report(result: BenchResult, folder: Path, charts: bool = True) -> list[Path]:

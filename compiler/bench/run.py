@@ -14,9 +14,9 @@ from glint.compiler.bench.scenes import (
     DEFAULT_SIZE,
     TEMPLATE_SCENE,
     TIERS,
+    bench_goals,
     example_scenes,
     measure_scenes,
-    template_goals,
 )
 from glint.compiler.bench.variants import is_cpu_renderer, measurable_ids, measure_variants
 from glint.compiler.catalog.loader import load_catalog
@@ -66,7 +66,7 @@ def run_bench(options: BenchOptions, progress: ProgressFactory | None = None) ->
             result.tiers, renderer = measure_scenes(
                 scenes, size=options.size, repeats=options.repeats, progress=tick
             )
-        result.goals = template_goals(result.tiers)
+        result.goals = bench_goals(result.tiers)
     result.machine = machine_info(renderer)
     return result
 

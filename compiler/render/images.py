@@ -8,6 +8,7 @@ shows and what a PNG stores: RGB clamped to [0, 1] and quantised to 8 bits, NaN 
 from __future__ import annotations
 
 import io
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -110,6 +111,61 @@ def _rgb_of(image: Image.Image) -> np.ndarray:
 def flip_error(reference: np.ndarray, test: np.ndarray) -> float:
     """Mean LDR FLIP error between two images as they are displayed (0 = identical)."""
     return _flip(reference, test, magma=False)[1]
+
+
+def flip_map(reference: np.ndarray, test: np.ndarray) -> np.ndarray:
+    """The per-pixel LDR FLIP error (H x W float32 in [0, 1]) between two images as they are
+    displayed; its mean is flip_error's."""
+    return _flip(reference, test, magma=False)[0][:, :, 0]
+
+
+def flip_summary(maps: Sequence[np.ndarray]) -> tuple[float, float]:
+    """The mean and the 99th percentile of the per-pixel FLIP of one or more maps (flip_map),
+    their pixels pooled. The percentile is the least value that at least 99 % of the pixels do
+    not exceed (numpy's "inverted_cdf"): a value that some pixel has, not an interpolation."""
+    if not maps:
+        raise ValueError("flip_summary needs at least one map")
+    pixels = np.concatenate([np.asarray(m, np.float64).ravel() for m in maps])
+    return float(pixels.mean()), float(np.quantile(pixels, 0.99, method="inverted_cdf"))
+
+
+# Luminance of what the screen shows: the shaders write display values (their own tone map, then
+# pow(col, 1 / 2.2)), so the display values (to_display) are decoded with the same gamma 2.2 and
+# weighed with the Rec. 709 / sRGB primaries' luminance coefficients.
+DISPLAY_GAMMA = 2.2
+REC709 = np.array([0.2126, 0.7152, 0.0722], dtype=np.float64)
+# "Half" or "twice" means nothing between two pixels that are both black on the screen: near black
+# the 8-bit grid alone makes such ratios (levels 2 and 3 are 2.4x apart in luminance, 0 and 1
+# infinitely). A pixel is therefore tested only where the brighter of the two is at least as
+# bright as the 8-bit grey 4/255 (luminance 1e-4, invisible on a screen; the floor sits half a
+# step below it, clear of rounding). From there on one 8-bit step is never an outlier:
+# ((v + 1) / v) ** 2.2 < 2 for every level v >= 3.
+OUTLIER_FLOOR = float((3.5 / 255.0) ** DISPLAY_GAMMA)
+OUTLIER_RATIO = 2.0
+
+
+def luminance(img: np.ndarray) -> np.ndarray:
+    """Relative luminance (H x W float64, 0 to 1) of the image as displayed: to_display's RGB
+    decoded with DISPLAY_GAMMA, then Rec. 709 weights."""
+    return (to_display(img).astype(np.float64) ** DISPLAY_GAMMA) @ REC709
+
+
+def outlier_mask(reference: np.ndarray, test: np.ndarray) -> np.ndarray:
+    """Pixels whose displayed luminance is under half or over twice the reference's (H x W
+    bool); pixels where both are at most OUTLIER_FLOOR are never outliers."""
+    ref, tst = luminance(reference), luminance(test)
+    if ref.shape != tst.shape:
+        raise InputError(
+            f"cannot compare images of different sizes: {ref.shape[1]}x{ref.shape[0]} "
+            f"and {tst.shape[1]}x{tst.shape[0]}"
+        )
+    lit = np.maximum(ref, tst) > OUTLIER_FLOOR
+    return lit & ((tst * OUTLIER_RATIO < ref) | (tst > OUTLIER_RATIO * ref))
+
+
+def outlier_share(reference: np.ndarray, test: np.ndarray) -> float:
+    """The share of pixels (0 to 1) that are outliers (outlier_mask) against the reference."""
+    return float(outlier_mask(reference, test).mean())
 
 
 def flip_image(reference: np.ndarray, test: np.ndarray) -> tuple[np.ndarray, float]:
