@@ -2,7 +2,8 @@
 # the Debian packages glint runs (glslang, the Mesa EGL libraries), then a virtual environment
 # with glint installed editable. `make site` builds the docs site into build/site (`make serve`
 # serves it), with the Debian packages of its local KaTeX and the site's Python packages.
-# `make test` installs those KaTeX packages and Chromium too: the browser tests load the site.
+# `make test` installs those KaTeX packages and Chromium too: the browser tests load the site;
+# and Mesa's lavapipe Vulkan driver, on which the portability test runs wgpu-shadertoy.
 
 PYTHON ?= python3
 VENV := .venv
@@ -14,6 +15,9 @@ SITE_PACKAGES := libjs-katex fonts-katex
 # The browser tests (tests/test_site_browser.py) drive Debian's Chromium through Playwright: no
 # browser download, which `playwright install` would need the network for.
 BROWSER_PACKAGES := chromium
+# The portability test (tests/test_portability.py) also draws every example in wgpu-shadertoy
+# (the dev extra), on lavapipe, Mesa's Vulkan driver on the CPU.
+VULKAN_PACKAGES := mesa-vulkan-drivers
 
 .PHONY: setup system system-site system-test venv demo test lint site serve screenshot clean
 
@@ -26,9 +30,10 @@ system:
 system-site:
 	@$(call install_packages,$(SITE_PACKAGES))
 
-# One apt-get run for what the tests need beyond `system`: the site's KaTeX and Chromium.
+# One apt-get run for what the tests need beyond `system`: the site's KaTeX, Chromium and
+# lavapipe.
 system-test:
-	@$(call install_packages,$(SITE_PACKAGES) $(BROWSER_PACKAGES))
+	@$(call install_packages,$(SITE_PACKAGES) $(BROWSER_PACKAGES) $(VULKAN_PACKAGES))
 
 define install_packages
 	missing=""; \
