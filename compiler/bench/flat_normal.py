@@ -27,6 +27,17 @@ def vec3(v: np.ndarray) -> str:
     return "vec3(" + ", ".join(repr(float(x)) for x in v) + ")"
 
 
+# The scene's distance, for the taps the variant takes where a pixel quad straddles two surfaces.
+FLAT_MAP_GLSL = f"""
+float map(vec3 p) {{
+    float c = cos({YAW!r}), s = sin({YAW!r});
+    vec3 q = abs(mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c) * p) - {vec3(BOX_HALF)};
+    float box = length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
+    return min(box, p.y - ({GROUND_Y!r}));
+}}
+int materialAt(vec3 p) {{ return 0; }}
+"""
+
 FLAT_SCENE_GLSL = f"""
 const vec3 EYE = {vec3(EYE)};
 const vec3 TARGET = {vec3(TARGET)};
@@ -55,7 +66,9 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {{
     vec3 rd = normalize(uv.x * uu + uv.y * vv + {FOCAL!r} * ww);
     float t = intersectScene(EYE, rd);
     // Every pixel computes p and its normal (uniform control flow), hit or not.
-    vec3 n = calcNormal(EYE + max(t, 0.0) * rd);
+    // Rays that miss take a far point, as the composer's mainImage does (MARCH_FAR).
+    vec3 n = calcNormal(EYE + (t > 0.0 ? t : 50.0) * rd);
+    n = faceforward(n, rd, n);  // as the composer orients it
     fragColor = vec4(n, t);
 }}
 """
@@ -114,7 +127,7 @@ def interior(face: np.ndarray) -> np.ndarray:
 
 def flat_shader(catalog: Catalog) -> str:
     snippet = catalog.get(FLAT_ID)
-    return standalone_source(snippet, catalog, FLAT_SCENE_GLSL)
+    return standalone_source(snippet, catalog, FLAT_SCENE_GLSL, FLAT_MAP_GLSL)
 
 
 def render_flat(catalog: Catalog) -> np.ndarray:
@@ -131,3 +144,17 @@ def flat_normal_errors(image: np.ndarray) -> tuple[np.ndarray, dict[str, np.ndar
     rows, cols = np.nonzero(mask)
     where = {"x": cols.astype(np.float64), "y": rows.astype(np.float64)}
     return error, where | {"face": face[mask].astype(np.float64)}
+
+
+def straddling(face: np.ndarray) -> np.ndarray:
+    """Pixels on a surface with a pixel of another surface, or of the sky, among their 8
+    neighbours, but not on a corner between two faces of the box (where the normal itself
+    turns): a 2x2 quad that holds them may straddle a silhouette."""
+    padded = np.pad(face, 1, constant_values=-1)
+    across = np.zeros(face.shape, bool)
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            other = padded[1 + dy : 1 + dy + face.shape[0], 1 + dx : 1 + dx + face.shape[1]]
+            box_edge = (other >= 0) & (other < 6) & (face < 6)
+            across |= (other != face) & ~box_edge
+    return across & (face >= 0)

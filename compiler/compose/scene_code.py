@@ -457,8 +457,11 @@ def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | No
         # not take, so a derivative normal is computed by every pixel: rays that miss use a
         # far point, which keeps the 2×2 blocks at the horizon from mixing in the eye.
         # MARCH_FAR is the raymarch variant's parameter (written by the parameter block).
+        # A derivative normal's sign depends on the runner's dFdy convention (wgpu-shadertoy
+        # flips fragCoord's y and not dFdy's): the first surface a ray meets faces the eye.
         hit = f"""    vec3 P = ro + (t > 0.0 ? t : MARCH_FAR) * rd;
     vec3 N = calcNormal(P);
+    N = faceforward(N, rd, N);
     if (t > 0.0) {{
         color = shade(surfaceAt(P, N, -rd));
 {through}    }}

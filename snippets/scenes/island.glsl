@@ -5,8 +5,18 @@
 // times their frequencies times 1.5, value noise's steepest slope), so the scene declares
 // lipschitz = 2.5 and every march divides its steps by it.
 
+// A lattice point's value in [0, 1]: its integer coordinates mixed by integer multiplies and
+// shifts (the lowbias32 finaliser). Not fract(sin(...)): sin of large arguments differs from
+// one GPU (or one software rasteriser) to the next, and so would the island.
 float islandHash(vec2 p) {
-    return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453);
+    uvec2 q = uvec2(ivec2(p) + 4096);
+    uint h = q.x * 0x9E3779B1u ^ (q.y + 0x7F4A7C15u) * 0x85EBCA77u;
+    h ^= h >> 16;
+    h *= 0x7FEB352Du;
+    h ^= h >> 15;
+    h *= 0x846CA68Bu;
+    h ^= h >> 16;
+    return float(h >> 8) / 16777215.0;
 }
 
 // Value noise in [0, 1]: smooth interpolation of hashed lattice values.
