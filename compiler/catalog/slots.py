@@ -153,8 +153,10 @@ SCENE_FUNCTIONS: dict[str, str] = {
     # Only for a scene whose every object is an analytic primitive (an unplaced sphere, box or
     # plane): the closed-form queries of compose/trace_code.py.
     "traceScene": "float traceScene(vec3 ro, vec3 rd, float tmax)",
-    "sceneClearance": "float sceneClearance(vec3 ro, vec3 rd, float tmax)",
+    "sceneClearance": "float sceneClearance(vec3 ro, vec3 rd, float tmax, float reach)",
     "sceneNormal": "vec3 sceneNormal(vec3 p)",
+    # The part (start, end) of a ray where surfaces can be (compose/bounds.py).
+    "sceneSpan": "vec2 sceneSpan(vec3 ro, vec3 rd)",
 }
 SCENE_CONSTANTS: dict[str, str] = {
     "SUN_DIR": "vec3 direction toward the scene's key (sun) light",

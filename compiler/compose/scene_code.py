@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
+from glint.compiler.compose.bounds import span_unit
 from glint.compiler.compose.field_code import ObjectCode, object_code
 from glint.compiler.compose.scene import (
     BackLight,
@@ -59,6 +60,8 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     trace = trace_unit(scene.objects) if scene.geometry is None else None
     if trace is not None:  # pruned unless the plan takes an analytic variant
         units.append(trace)
+    # where a bounded march need run: pruned unless the plan takes one
+    units.append(span_unit(scene.objects, scene.geometry is not None))
     albedo_by_user = False
     if scene.geometry is not None:
         user = user_unit(scene.geometry, lights.defines)

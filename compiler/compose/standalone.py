@@ -19,6 +19,7 @@ from glint.compiler.compose.units import Unit, generated
 # scene (`map`, the key light) compiles on its own: the default scene's sphere and ground.
 SCENE_STUB = """float map(vec3 p) { return min(length(p) - 1.0, p.y + 1.0); }
 int materialAt(vec3 p) { return 0; }
+vec2 sceneSpan(vec3 ro, vec3 rd) { return vec2(0.0, 1e30); }
 """
 # The same scene's closed-form queries, for the analytic variants (compose/trace_code.py).
 TRACE_STUB = trace_glsl(

@@ -7,8 +7,9 @@ queries from them, the functions the analytic variants of the raymarch, shadow a
 require:
 
 - `traceScene(ro, rd, tmax)`: the nearest hit before tmax, or -1;
-- `sceneClearance(ro, rd, tmax)`: the least signed angle between the ray and an object's
-  outline (negative when the ray enters one), occluders beyond tmax left out;
+- `sceneClearance(ro, rd, tmax, reach)`: the least signed angle between the ray and an
+  object's outline (negative when the ray enters one), occluders beyond tmax left out; angles
+  beyond `reach` (what the caller cares about) need only be known to be beyond it;
 - `sceneNormal(p)`: the normal of the object whose surface p is nearest.
 
 The same writer serves the example scenes and the float64 reference scenes of the probes
@@ -49,8 +50,9 @@ class Analytic:
     def clearance(self) -> str:
         if self.kind == "plane":
             return f"clearancePlane(ro, rd, {self.normal}, {self.offset}, tmax)"
-        name = "clearanceSphere" if self.kind == "sphere" else "clearanceBox"
-        return f"{name}({self._local('ro')}, rd, {self.size}, tmax)"
+        if self.kind == "sphere":
+            return f"clearanceSphere({self._local('ro')}, rd, {self.size}, tmax)"
+        return f"clearanceBox({self._local('ro')}, rd, {self.size}, tmax, reach)"
 
     def distance(self) -> str:
         if self.kind == "plane":
@@ -130,8 +132,9 @@ def trace_glsl(primitives: list[Analytic]) -> str:
             "    return t <= tmax ? t : -1.0;",
             "}",
             "",
-            "// The least signed angle between the ray and an object's outline (negative inside).",
-            "float sceneClearance(vec3 ro, vec3 rd, float tmax) {",
+            "// The least signed angle between the ray and an object's outline (negative inside);",
+            "// angles past reach need not be exact.",
+            "float sceneClearance(vec3 ro, vec3 rd, float tmax, float reach) {",
             f"    float c = {primitives[0].clearance()};",
             *clear,
             "    return c;",

@@ -3,7 +3,7 @@ id = "trace.box"
 slot = "trace"
 summary = "A ray against an axis-aligned box with half extents b centred at the origin: the first hit, the ray's angular clearance from it, the face normal"
 provides = ["traceBox", "clearanceBox", "normalBox", "boxSlabs", "cosToArc"]
-requires = []
+requires = ["clearanceSphere"]
 sources = ["Kay and Kajiya 1986, ray tracing complex scenes (slabs)", "Williams et al. 2005, an efficient and robust ray-box intersection algorithm"]
 formula = 't = \max\left(0, \max_i t^{-}_i\right) \text{ if } \max_i t^{-}_i \le \min_i t^{+}_i, \quad t^{\pm}_i = \frac{\pm b_i - o_i}{\omega_i}; \qquad \delta = \pm \min_{e \in \text{silhouette}} \angle(\boldsymbol{\omega}, e)'
 --- */
@@ -59,7 +59,13 @@ float cosToArc(vec3 d, vec3 a, vec3 e) {
 // edges, those between a face turned toward ro and one turned away, so the angle to the
 // outline is the least angle to one of them, outside or inside alike; the sign is the hit test.
 // A box whose entry lies beyond tmax does not count (π: far clear).
-float clearanceBox(vec3 ro, vec3 rd, vec3 b, float tmax) {
+//
+// Only clearances up to `reach` matter to the caller (a soft shadow's light radius): the box's
+// bounding sphere is tested first, and where it clears the ray by more than that its clearance,
+// a lower bound of the box's, is returned without the twelve edges.
+float clearanceBox(vec3 ro, vec3 rd, vec3 b, float tmax, float reach) {
+    float bound = clearanceSphere(ro, rd, length(b), tmax);
+    if (bound > reach) return bound;
     vec2 t = boxSlabs(ro, rd, b);
     bool hit = t.x <= t.y && t.y >= 0.0;
     if (hit && t.x > tmax) return 3.14159265;
