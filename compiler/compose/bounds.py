@@ -18,7 +18,7 @@ import itertools
 
 import numpy as np
 
-from glint.compiler.catalog.loader import glsl_float, glsl_value
+from glint.compiler.catalog.loader import glsl_value
 from glint.compiler.compose.field_code import rotation_matrix
 from glint.compiler.compose.shapes import (
     Box,
@@ -134,7 +134,9 @@ def span_glsl(box: Bounds | None, planes: list[Placed], everywhere: bool) -> str
         half = glsl_value([float(f"{x:.6g}") for x in 0.5 * size + grow], "vec3")
         lines += [
             f"    vec2 inBox = boxSlabs(ro - {centre}, rd, {half});",
-            "    if (inBox.x <= inBox.y && inBox.y >= 0.0) span = vec2(max(inBox.x, 0.0), inBox.y);",
+            "    if (inBox.x <= inBox.y && inBox.y >= 0.0) {",
+            "        span = vec2(max(inBox.x, 0.0), inBox.y);",
+            "    }",
         ]
     for plane in planes:
         query = analytic(plane)
@@ -147,16 +149,23 @@ def span_glsl(box: Bounds | None, planes: list[Placed], everywhere: bool) -> str
     return "\n".join([*lines, "    return span;", "}", ""])
 
 
-def span_unit(objects: list[Placed], user_field: bool) -> Unit:
-    """The scene's `sceneSpan` (see span_glsl): planes as they are, the rest in one box.
-    A plane turned or placed so that it has no closed form leaves the whole ray to march."""
+def span_unit(
+    objects: list[Placed], user_field: bool, field_bounds: list[list[float]] | None = None
+) -> Unit:
+    """The scene's `sceneSpan` (see span_glsl): planes as they are, the rest in one box, the
+    user's field (`user_field`) in its `field_bounds` when it gives them. A plane turned or
+    placed so that it has no closed form leaves the whole ray to march."""
     planes = [obj for obj in objects if isinstance(obj, Plane)]
-    box = _union([shape_bounds(obj) for obj in objects if not isinstance(obj, Plane)] or [None])
-    finite = [obj for obj in objects if not isinstance(obj, Plane)]
+    boxes = [shape_bounds(obj) for obj in objects if not isinstance(obj, Plane)]
+    if user_field and field_bounds is not None:
+        boxes.append((np.asarray(field_bounds[0], float), np.asarray(field_bounds[1], float)))
+        user_field = False
+    box = _union(boxes or [None])
+    finite = boxes
     unbounded = user_field or any(analytic(p) is None for p in planes)
     unbounded = unbounded or (bool(finite) and box is None)
     body = span_glsl(box if finite else None, planes, unbounded)
-    requires = [] if unbounded else (["boxSlabs"] if finite else []) + (
-        ["tracePlane"] if planes else []
+    requires = (
+        [] if unbounded else (["boxSlabs"] if finite else []) + (["tracePlane"] if planes else [])
     )
     return generated(f"scene.{SPAN}", [SPAN], requires, body)

@@ -177,6 +177,9 @@ class Geometry(Strict):
     """The material of the whole field (without sceneMaterial)."""
     materials: dict[str, str] = {}
     """Material by the id sceneMaterial returns, e.g. { 1 = "rock", 2 = "moss" }."""
+    bounds: Annotated[list[Vec3], Field(min_length=2, max_length=2)] | None = None
+    """Two opposite corners of a box that holds every surface of the field a ray can see, e.g.
+    [[-3, -1, -3], [3, 1, 3]]: marches skip the rest of the ray. Without it they march it all."""
 
     _source: str = PrivateAttr("")
     _path: str = PrivateAttr("")
@@ -191,6 +194,12 @@ class Geometry(Strict):
         for key in self.materials:
             if not key.lstrip("-").isdigit():
                 raise ValueError(f"materials: key {key!r} is not an integer id")
+        return self
+
+    @model_validator(mode="after")
+    def _ordered_bounds(self) -> Geometry:
+        if self.bounds is not None and any(a > b for a, b in zip(*self.bounds, strict=True)):
+            raise ValueError("bounds: the first corner must be below the second on every axis")
         return self
 
     def material_names(self) -> list[str]:

@@ -61,7 +61,8 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     if trace is not None:  # pruned unless the plan takes an analytic variant
         units.append(trace)
     # where a bounded march need run: pruned unless the plan takes one
-    units.append(span_unit(scene.objects, scene.geometry is not None))
+    field_bounds = scene.geometry.bounds if scene.geometry is not None else None
+    units.append(span_unit(scene.objects, scene.geometry is not None, field_bounds))
     albedo_by_user = False
     if scene.geometry is not None:
         user = user_unit(scene.geometry, lights.defines)

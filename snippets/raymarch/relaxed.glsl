@@ -3,7 +3,7 @@ id = "raymarch.relaxed"
 slot = "raymarch"
 summary = "Over-relaxed sphere tracing: steps of ω·d while consecutive unbounding spheres overlap, plain steps after the first that does not; stops within a pixel's cone and refines the hit by one secant step"
 provides = ["raymarch"]
-requires = ["map"]
+requires = ["map", "sceneSpan"]
 params = { MARCH_STEPS = { type = "int", default = 64, range = [1, 1024] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_PIXEL = { type = "float", default = 0.002, range = [0.0, 0.05] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] }, MARCH_RELAX = { type = "float", default = 1.3, range = [1.0, 1.9] } }
 sources = ["Keinert, Schäfer, Korndörfer, Ganse, Stamminger 2014, Enhanced Sphere Tracing (over-relaxation, pixel-cone termination)", "Hart 1996, sphere tracing"]
 formula = 't_{i+1} = t_i + \omega\, d_i \text{ while } |d_{i-1}| + |d_i| \ge t_i - t_{i-1}, \text{ else } t_i := t_{i-1} + d_{i-1} \text{ and } \omega := 1, \quad \text{stop at } d_n < \max(\varepsilon, c\, t_n), \quad t_{\text{hit}} = t_n + \frac{d_n\, (t_n - t_{n-1})}{d_{n-1} - d_n} \text{ if } d_n < d_{n-1} \text{ and that lands nearer the surface, else } t_n'
@@ -32,10 +32,18 @@ formula = 't_{i+1} = t_i + \omega\, d_i \text{ while } |d_{i-1}| + |d_i| \ge t_i
 // touch (a plane met head on with an exact distance), and the secant is exact there.
 // MARCH_FAR: the march gives up once the plain step from an accepted sample passes it, so that
 // no surface before MARCH_FAR is skipped by a relaxed step that lands beyond it.
+//
+// Only where a surface can be: the composer's sceneSpan gives the part of the ray inside the
+// box of the scene's finite objects or up to its planes (compose/bounds.py). The march starts
+// where it begins and gives up where it ends, so a ray that passes the scene by (the sky, most
+// of the frame in an open scene) costs no map() call at all.
 float raymarch(vec3 ro, vec3 rd) {
-    float t = 0.0;
-    float d = MARCH_FAR;
-    float tPrev = 0.0;  // the last accepted sample, and its distance
+    vec2 span = sceneSpan(ro, rd);
+    float far = min(MARCH_FAR, span.y);
+    if (span.x > far) return -1.0;
+    float t = span.x;
+    float d = far;
+    float tPrev = t;  // the last accepted sample, and its distance
     float dPrev = 0.0;
     float omega = MARCH_RELAX;
     bool hit = false;
@@ -51,7 +59,7 @@ float raymarch(vec3 ro, vec3 rd) {
             hit = true;
             break;
         }
-        if (t + d > MARCH_FAR) break;
+        if (t + d > far) break;
         tPrev = t;
         dPrev = d;
         t += omega * d;
