@@ -1,31 +1,33 @@
 // glint 0.1.0 - scene 'default', tier balanced, target shadertoy
 // Paste into the Image tab of https://www.shadertoy.com/new as it is.
 // Snippets, in order:
-//   core.constants              Mathematical constants shared by every snippet
-//   core.surface                Shading point and the dot products a BRDF term needs, computed once
-//   sdf.plane                   Signed distance to an infinite plane with unit normal n, offset h from the origin
-//   sdf.sphere                  Signed distance to a sphere centred at the origin
-//   pattern.checker             Checkerboard on the xz plane: 0 or 1 per unit cell
-//   light.back                  Back (rim) fill from a horizontal direction, wrapped half-Lambert, occluded by AO
-//   light.sky                   Sky fill: the cheap hemisphere integral 0.5 + 0.5·N.y, diffuse only, occluded by AO
-//   D.ggx                       GGX / Trowbridge-Reitz normal distribution
-//   F.schlick                   Schlick's Fresnel approximation with pow
-//   V.smith_ggx_correlated      Height-correlated Smith visibility for GGX, G / (4 NoL NoV), exact form
-//   diffuse.lambert             Lambert: albedo / π times N·L (energy conserving)
-//   specular.cook_torrance      Cook-Torrance microfacet lobe assembled from the chosen D, F and V
-//   light.response              What a surface reflects toward the eye per unit radiance arriving from L: diffuse and specular lobes
-//   light.directional           Directional light: the surface's response times radiance and visibility
-//   specocc.power               Specular occlusion from AO: clamp((NoV + ao)^a − 1 + ao)
-//   env.gradient                Environment as a vertical gradient from ENV_BOTTOM (down) to ENV_TOP (up)
-//   ibl.env_brdf_approx         Environment along the mirror direction times Karis's analytic split-sum fit f0·A + B, with specular occlusion
-//   camera.orbit                Pinhole camera orbiting CAMERA_TARGET with iTime, or where a mouse drag puts it, looking at it
-//   background.gradient_sun     The environment gradient plus a glow and a disc around the sun
-//   tonemap.reinhard            Reinhard tone map, c / (c + 1) per channel
-//   output.gamma22              Display encoding with a pure 2.2 gamma
-//   ao.sdf5                     SDF ambient occlusion, 5 taps along the normal
-//   shadow.soft_centered        Soft shadow with the penumbra centred on the hard shadow's edge: signed k·h/t, marched through occluders
-//   normal.central_differences  SDF normal by central differences, 6 taps
-//   raymarch.cone               Sphere tracing that stops once the scene is within a pixel's cone, then refines the hit by one secant step
+//   core.constants           Mathematical constants shared by every snippet
+//   core.surface             Shading point and the dot products a BRDF term needs, computed once
+//   sdf.plane                Signed distance to an infinite plane with unit normal n, offset h from the origin
+//   sdf.sphere               Signed distance to a sphere centred at the origin
+//   trace.plane              A ray against the half-space below a plane (unit normal n, offset h): the first hit, and the ray's angular clearance from it
+//   trace.sphere             A ray against a sphere centred at the origin: the first hit, and the ray's angular clearance from it
+//   pattern.checker          Checkerboard on the xz plane: 0 or 1 per unit cell
+//   light.back               Back (rim) fill from a horizontal direction, wrapped half-Lambert, occluded by AO
+//   light.sky                Sky fill: the cheap hemisphere integral 0.5 + 0.5·N.y, diffuse only, occluded by AO
+//   D.ggx                    GGX / Trowbridge-Reitz normal distribution
+//   F.schlick                Schlick's Fresnel approximation with pow
+//   V.smith_ggx_correlated   Height-correlated Smith visibility for GGX, G / (4 NoL NoV), exact form
+//   diffuse.lambert          Lambert: albedo / π times N·L (energy conserving)
+//   specular.cook_torrance   Cook-Torrance microfacet lobe assembled from the chosen D, F and V
+//   light.response           What a surface reflects toward the eye per unit radiance arriving from L: diffuse and specular lobes
+//   light.directional        Directional light: the surface's response times radiance and visibility
+//   specocc.power            Specular occlusion from AO: clamp((NoV + ao)^a − 1 + ao)
+//   env.gradient             Environment as a vertical gradient from ENV_BOTTOM (down) to ENV_TOP (up)
+//   ibl.env_brdf_approx      Environment along the mirror direction times Karis's analytic split-sum fit f0·A + B, with specular occlusion
+//   camera.orbit             Pinhole camera orbiting CAMERA_TARGET with iTime, or where a mouse drag puts it, looking at it
+//   background.gradient_sun  The environment gradient plus a glow and a disc around the sun
+//   tonemap.reinhard         Reinhard tone map, c / (c + 1) per channel
+//   output.gamma22           Display encoding with a pure 2.2 gamma
+//   ao.sdf5                  SDF ambient occlusion, 5 taps along the normal
+//   shadow.analytic          Soft shadow from the exact angular clearance of the ray from each analytic primitive: no march
+//   normal.analytic          The exact normal of the nearest analytic primitive (every object a sphere, box or plane), no map() taps
+//   raymarch.analytic        No march: the nearest of the scene's closed-form ray hits (every object an analytic primitive)
 
 // source: <generated>:1
 // Scene constants (light directions point toward the light).
@@ -43,14 +45,7 @@
 #define CAMERA_TARGET vec3(0.0, 0.0, 0.0)
 #define CAMERA_FOCAL 1.5
 #define AO_STRENGTH 3.0
-#define SHADOW_STEPS 32
 #define SHADOW_K 8.0
-#define SHADOW_MIN_STEP 0.05
-#define SHADOW_MAX_STEP 2.0
-#define NORMAL_EPS 0.001
-#define MARCH_STEPS 64
-#define MARCH_EPSILON 0.001
-#define MARCH_PIXEL 0.002
 #define MARCH_FAR 50.0
 
 // source: snippets/core/constants.glsl:10
@@ -125,6 +120,57 @@ float sdPlane(vec3 p, vec3 n, float h) {
 // source: snippets/sdf/sphere.glsl:10
 float sdSphere(vec3 p, float radius) {
     return length(p) - radius;
+}
+
+// source: snippets/trace/plane.glsl:10
+// The solid is the half-space where dot(p, n) + h < 0 (sdPlane's inside).
+float tracePlane(vec3 ro, vec3 rd, vec3 n, float h) {
+    float height = dot(ro, n) + h;
+    if (height < 0.0) return 0.0;  // the origin is inside: hit at once, as a march would stop
+    float rate = dot(rd, n);
+    return rate < 0.0 ? height / -rate : -1.0;
+}
+
+// The clearance: the signed angle between the ray and the highest point of the plane within
+// tmax, seen from ro. Points of the plane at distance s lie asin(height / s) below the
+// horizontal, so the highest within reach are at s = tmax; the ray's own elevation above the
+// horizontal is asin(ω·n). At tmax = ∞ this is the elevation: a half-space hides the lower half
+// of the sky from any point above it. Inside (height < 0) the ray is hidden outright.
+float clearancePlane(vec3 ro, vec3 rd, vec3 n, float h, float tmax) {
+    float height = dot(ro, n) + h;
+    if (height < 0.0) return -3.14159265;
+    return asin(clamp(dot(rd, n), -1.0, 1.0)) + asin(min(height / tmax, 1.0));
+}
+
+// source: snippets/trace/sphere.glsl:10
+// ro is the ray's origin relative to the sphere's centre, rd a unit direction.
+//
+// The hit. The ray's closest approach to the centre is q = ro − b·rd, b = ro·rd, so the chord's
+// half length is √(r² − |q|²): written that way, not as √(b² − c), it keeps its precision when
+// the sphere is small and far (b² and c then agree in most of their digits). The near root
+// −b − √h is taken as c / (−b + √h), its exact rewrite without the cancellation.
+float traceSphere(vec3 ro, vec3 rd, float r) {
+    float b = dot(ro, rd);
+    vec3 q = ro - b * rd;
+    float h = r * r - dot(q, q);
+    float c = dot(ro, ro) - r * r;
+    if (c < 0.0) return 0.0;  // the origin is inside: hit at once, as a march would stop
+    if (h < 0.0 || b > 0.0) return -1.0;  // misses, or the sphere lies behind
+    return c / (-b + sqrt(h));
+}
+
+// The clearance: the signed angle between the ray and the sphere's outline seen from ro,
+// positive when the ray passes outside it. The outline is a circle of angular radius
+// asin(r / |ro|) about the direction to the centre, so the clearance is the angle to the centre
+// minus that radius: exact, where an SDF march only samples h/t along the ray. The angle to
+// the centre is taken as atan(|ω × c|, ω·c), accurate at small angles where acos is not. A
+// sphere wholly beyond tmax does not count (π: far clear).
+float clearanceSphere(vec3 ro, vec3 rd, float r, float tmax) {
+    float dist = length(ro);
+    if (dist - r > tmax) return 3.14159265;
+    vec3 toCentre = -ro;
+    float centre = atan(length(cross(rd, toCentre)), dot(rd, toCentre));
+    return centre - asin(min(r / dist, 1.0));
 }
 
 // source: snippets/pattern/checker.glsl:10
@@ -311,80 +357,6 @@ float ambientOcclusion(vec3 p, vec3 n) {
     return clamp(1.0 - AO_STRENGTH * occ, 0.0, 1.0);
 }
 
-// source: snippets/shadow/soft_centered.glsl:17
-// shadow.soft draws the whole penumbra outside the hard shadow: a ray that grazes an occluder
-// gives 0 where a disc light is half hidden. Here the gap h/t is signed. The march goes on into
-// an occluder, where the distance field is negative, so x = k·h/t, the ray's angular distance
-// to the occluder's edge in units of the light's radius atan(1/k), runs from +1 (the disc
-// clears the edge) through 0 (the disc's centre on the edge) to −1 (the disc hidden). The
-// visible fraction of a disc cut by a straight edge at x, 1/2 + (x·√(1 − x²) + asin x)/π, is
-// fitted by the cubic 0.25·(1 + x)²·(2 − x) (within 0.04; equal at x = −1, 0 and 1).
-//
-// Steps are |h|, the radius of a ball free of surfaces around the sample, inside an occluder
-// as outside, and at least SHADOW_MIN_STEP so the march crosses an edge it runs along; the
-// march ends once the light is hidden (x ≤ −1) or past tmax. At most SHADOW_MAX_STEP, a
-// bound on how far past an occluder's closest approach a step may land.
-float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
-    float res = 1.0;
-    float t = max(tmin, 1e-3);  // h/t has no value at t = 0
-    for (int i = 0; i < SHADOW_STEPS; i++) {
-        float h = map(ro + rd * t);
-        res = min(res, SHADOW_K * h / t);
-        t += clamp(abs(h), SHADOW_MIN_STEP, SHADOW_MAX_STEP);
-        if (res <= -1.0 || t > tmax) break;
-    }
-    res = max(res, -1.0);
-    return 0.25 * (1.0 + res) * (1.0 + res) * (2.0 - res);
-}
-
-// source: snippets/normal/central_differences.glsl:13
-vec3 calcNormal(vec3 p) {
-    vec2 e = vec2(NORMAL_EPS, 0.0);
-    return normalize(vec3(
-        map(p + e.xyy) - map(p - e.xyy),
-        map(p + e.yxy) - map(p - e.yxy),
-        map(p + e.yyx) - map(p - e.yyx)
-    ));
-}
-
-// source: snippets/raymarch/cone.glsl:11
-// A pixel sees a cone about 2 / (iResolution.y · focal) radians wide. Once the scene is nearer
-// the ray than MARCH_PIXEL · t (or MARCH_EPSILON, near the eye) the march stops: more steps
-// would not change which surface the pixel shows. A grazing ray along a plane shrinks its
-// distance only by a factor 1 − sin θ per step, so the fixed tolerance of
-// raymarch.sphere_tracing spends most of its steps there (or all of them, and misses).
-// MARCH_PIXEL = 0.002 is about half a pixel at 640 × 360 with a focal length of 1.5. Half the
-// steps of raymarch.sphere_tracing: on the default scene at 480 × 270, 64 steps miss 38 pixels
-// that 128 steps of sphere tracing hit (0.03%) and hit 1014 that it misses (0.8%: far ground
-// near the horizon, where sphere tracing runs out of steps).
-//
-// Stopping early leaves the hit short of the surface, along a grazing ray by d / sin θ, about
-// a pixel's footprint: texture edges would move. Along a straight stretch the distance falls
-// linearly with t, so the last two samples (d_prev one plain step of d_prev behind, d here)
-// say where it reaches 0: d · d_prev / (d_prev − d) further on, exact for a plane. One more
-// map() checks the secant point and it is kept only where it lies nearer the surface.
-float raymarch(vec3 ro, vec3 rd) {
-    float t = 0.0;
-    float d = MARCH_FAR;
-    float dPrev = 0.0;  // distance at the previous sample, which lies dPrev behind t
-    bool hit = false;
-    for (int i = 0; i < MARCH_STEPS; i++) {
-        d = map(ro + rd * t);
-        if (d < max(MARCH_EPSILON, MARCH_PIXEL * t)) {
-            hit = true;
-            break;
-        }
-        dPrev = d;
-        t += d;
-        if (t > MARCH_FAR) break;
-    }
-    if (!hit) return -1.0;
-    // Refined outside the loop: a branch taken by some pixels of a SIMD group costs all of them.
-    float ahead = d < dPrev ? d * dPrev / (dPrev - d) : 0.0;
-    float dAhead = map(ro + rd * (t + ahead));
-    return abs(dAhead) < abs(d) ? t + ahead : t;
-}
-
 // source: <generated>:1
 // Index of the material of the object nearest to p.
 int materialAt(vec3 p) {
@@ -393,6 +365,84 @@ int materialAt(vec3 p) {
     float d1 = sdPlane(p, vec3(0.0, 1.0, 0.0), 1.0);
     if (d1 < best) { best = d1; id = 1; }
     return id;
+}
+
+// source: <generated>:1
+// The material at a hit point.
+Surface surfaceAt(vec3 P, vec3 N, vec3 V) {
+    int id = materialAt(P);
+    if (id == 1) {
+        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), 0.8);
+    }
+    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), 0.35);
+}
+
+// source: <generated>:1
+// The nearer of two hits, where -1 is none.
+float nearestHit(float t, float hit) {
+    return hit >= 0.0 && (t < 0.0 || hit < t) ? hit : t;
+}
+
+// The first hit of the ray before tmax among the scene's objects, or -1.
+float traceScene(vec3 ro, vec3 rd, float tmax) {
+    float t = -1.0;
+    t = nearestHit(t, traceSphere(ro, rd, 1.0));
+    t = nearestHit(t, tracePlane(ro, rd, vec3(0.0, 1.0, 0.0), 1.0));
+    return t <= tmax ? t : -1.0;
+}
+
+// The least signed angle between the ray and an object's outline (negative inside);
+// angles past reach need not be exact.
+float sceneClearance(vec3 ro, vec3 rd, float tmax, float reach) {
+    float c = clearanceSphere(ro, rd, 1.0, tmax);
+    c = min(c, clearancePlane(ro, rd, vec3(0.0, 1.0, 0.0), 1.0, tmax));
+    return c;
+}
+
+// The normal of the object whose surface p lies on (the least |distance|).
+vec3 sceneNormal(vec3 p) {
+    float best = abs(sdSphere(p, 1.0));
+    vec3 n = normalize(p);
+    float d1 = abs(sdPlane(p, vec3(0.0, 1.0, 0.0), 1.0));
+    if (d1 < best) { best = d1; n = vec3(0.0, 1.0, 0.0); }
+    return n;
+}
+
+// source: snippets/shadow/analytic.glsl:16
+// shadow.soft_centered estimates x, the ray's signed angular distance to an occluder's edge in
+// units of the light's radius atan(1/k), from samples k·h/t of a march. For a sphere, a box or
+// a plane that angle has a closed form (snippets/trace/: the outline of a sphere is a circle, a
+// box's is made of its silhouette edges, a half-space's horizon is a great circle), so here it
+// is exact and costs one evaluation per object instead of up to SHADOW_STEPS of the scene. The
+// disc's visible fraction is then the same cubic fit of a straight edge as soft_centered's.
+// The ray starts tmin along rd, as the march does: a point on a surface is then off it on the
+// side the light is, and occluded by it only when the light is below its tangent plane.
+float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
+    float radius = atan(1.0 / SHADOW_K);  // the disc light's angular radius
+    float x = sceneClearance(ro + rd * tmin, rd, tmax, radius) / radius;
+    x = clamp(x, -1.0, 1.0);
+    return 0.25 * (1.0 + x) * (1.0 + x) * (2.0 - x);
+}
+
+// source: snippets/normal/analytic.glsl:10
+// For a scene of analytic primitives the composer writes sceneNormal: it finds the object whose
+// surface p lies on (the least |distance|, each object's own, as the material lookup does) and
+// returns that object's gradient in closed form: (p − c)/|p − c| for a sphere, the face's axis
+// for a box, n for a plane. Exact up to rounding, where differences of map() are off by their
+// step (and cost 4 to 6 evaluations of the whole scene), and correct at every pixel, unlike
+// derivative normals at silhouettes.
+vec3 calcNormal(vec3 p) {
+    return sceneNormal(p);
+}
+
+// source: snippets/raymarch/analytic.glsl:11
+// When every object of the scene is a sphere, an axis-aligned box or a plane, the first hit
+// has a closed form per object (snippets/trace/), and the composer writes traceScene as the
+// nearest of them. That replaces up to MARCH_STEPS evaluations of map() by one evaluation of
+// each object's intersection, lands on the surface to rounding (a march stops within its
+// tolerance), and has no step budget to run out of at grazing angles.
+float raymarch(vec3 ro, vec3 rd) {
+    return traceScene(ro, rd, MARCH_FAR);
 }
 
 // source: <generated>:1
@@ -405,16 +455,6 @@ vec3 shade(Surface s) {
     color += backLight(s, BACK_DIR, BACK_COLOR, occlusion);
     color += environmentLight(s, occlusion);
     return color;
-}
-
-// source: <generated>:1
-// The material at a hit point.
-Surface surfaceAt(vec3 P, vec3 N, vec3 V) {
-    int id = materialAt(P);
-    if (id == 1) {
-        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), 0.8);
-    }
-    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), 0.35);
 }
 
 // source: <generated>:1
