@@ -37,7 +37,8 @@ CLOSE = "--- */"
 REQUIRED_KEYS = {"id", "slot", "summary", "provides", "requires", "sources"}
 # `formula`: the model in LaTeX, for the docs site's page of the variant (glint.compiler.site).
 # `distance`: for a signed-distance snippet, "exact" (the Euclidean distance) or "bound" (a lower
-# bound of it, zero on the surface: safe to march, but a marcher must not over-relax its steps).
+# bound of it, zero on the surface: safe to march; an over-relaxing marcher must keep its
+# overlap test, as raymarch.relaxed does, and fails more steps on it).
 OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost", "formula", "distance"}
 DISTANCE_KINDS = ("exact", "bound")
 # A preset takes its code and its contract from its base; it may add sources of its own.
@@ -76,7 +77,8 @@ class Snippet:
     file: str = ""  # the snippet's own file: `relpath`, except for a preset
     formula: str = ""  # the model in LaTeX (a preset's own file has none)
     # "exact": returns the Euclidean signed distance; "bound": a lower bound of its magnitude
-    # with the right sign, zero on the surface (sphere tracing stays safe, over-relaxation not).
+    # with the right sign, zero on the surface (sphere tracing stays safe, and over-relaxation
+    # with the overlap test of raymarch.relaxed; without it a relaxed step could tunnel).
     distance: str = "exact"
 
     def __post_init__(self) -> None:

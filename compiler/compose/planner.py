@@ -107,7 +107,8 @@ def plan(
             result.choices.pop(slot, None)
             result.reasons.pop(slot, None)
     if "raymarch" in result.reasons and not scene.exact_distance:
-        # what a marcher that over-relaxes its steps must know: here a step may not overshoot
+        # said for the reader: raymarch.relaxed stays safe on a bound (its overlap test), with
+        # more failed relaxed steps
         result.reasons["raymarch"] += (
             "; the scene's field is a bound, not an exact distance (a user field, an "
             "ellipsoid, a blend, a cut or a repetition)"
