@@ -54,8 +54,9 @@ def standalone_source(
     """The snippet and its dependencies (balanced-tier choices for other slots) with `main`.
     `scene_stub` stands in for the scene: it defines `map` and `materialAt`."""
     choices = standalone_choices(snippet)
-    if scene_stub == SCENE_STUB and any(name in QUERIES for name in snippet.requires):
-        scene_stub += TRACE_STUB
+    defined = set(_DEFINITION.findall(scene_stub))
+    if any(name in QUERIES and name not in defined for name in snippet.requires):
+        scene_stub += TRACE_STUB  # the default scene's queries, where the stub has none
     scene = stub_unit(scene_stub, catalog)
     entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)
     units = resolve([scene, entry], catalog, choices, constants=SCENE_DEFINES)
