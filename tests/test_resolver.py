@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from glint.compiler.catalog.loader import Catalog, load_catalog, parse_snippet
+from glint.compiler.catalog.slots import SCENE_FUNCTIONS
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.units import generated
 from glint.compiler.errors import InputError
@@ -130,7 +131,7 @@ def test_real_catalog_resolves_every_requirement_of_every_snippet() -> None:
         "tonemap": "tonemap.none",
         "output": "output.srgb",
     }
-    scene_symbols = generated("scene.stub", ["map", "SUN_DIR", "SUN_COLOR", "materialAt"], [], "")
+    scene_symbols = generated("scene.stub", [*SCENE_FUNCTIONS, "SUN_DIR", "SUN_COLOR"], [], "")
     for snip in catalog.snippets.values():
         choices_here = dict(choices)
         if snip.slot in choices_here:

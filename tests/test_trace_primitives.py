@@ -38,6 +38,8 @@ def rays(seed: int, aim: float) -> tuple[np.ndarray, np.ndarray]:
 def glsl(snippet: str, function: str, **args: object) -> np.ndarray:
     values = {k: np.asarray(v, np.float32) for k, v in args.items()}
     body = CATALOG.get(snippet).body
+    if snippet == "trace.box":  # it bounds the box by a sphere first
+        body = CATALOG.get("trace.sphere").body + body
     return np.asarray(evaluate(body, function, values, dtype=np.float32), np.float64)
 
 

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.bench.flat_normal import flat_normal_errors, render_flat
+from glint.compiler.bench.flat_normal import FLAT_ID, flat_normal_errors, render_flat
 from glint.compiler.bench.normals import normal_set
 from glint.compiler.bench.occlusion import ao_sets, shadow_sets
 from glint.compiler.bench.samples import ProbeSet, camera_rays, domain_set, free_inputs
@@ -56,8 +56,12 @@ def _flat_errors(catalog: Catalog) -> tuple[np.ndarray, dict[str, np.ndarray]]:
 def _normal_plan(snippet: Snippet) -> Plan:
     # Variants that tap `map` are probed point by point; the flat one uses screen derivatives,
     # which a probe (one unrelated point per pixel) cannot give: it is only timed there.
-    taps = "map" in snippet.requires
+    # (The flat one taps map only where its derivatives straddle a silhouette; the analytic one
+    # reads the primitive a composed scene names: cost only, its exactness is tested apart.)
+    taps = "map" in snippet.requires and snippet.id != FLAT_ID
     sets = [normal_set(snippet, scene, with_reference=taps) for scene in sorted(NORMAL_SCENES)]
+    if "sceneNormal" in snippet.requires:
+        return Plan(None, "", sets)
     if taps:
         return Plan(snippet.reference, "degrees", sets)
     return Plan(FLAT_FACES, "degrees", sets, rendered=_flat_errors)

@@ -131,6 +131,8 @@ def _spend(
         options = (
             None if slot in fixed else candidates_for(slot, result.choices[slot], measurements)
         )
+        # the closed-form variants are the tiers' choice for analytic scenes, not the budget's
+        options = [o for o in options or [] if not o.id.endswith(".analytic")] or None
         if options:
             candidates[slot] = options
     rest = {

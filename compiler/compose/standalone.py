@@ -19,7 +19,6 @@ from glint.compiler.compose.units import Unit, generated
 # scene (`map`, the key light) compiles on its own: the default scene's sphere and ground.
 SCENE_STUB = """float map(vec3 p) { return min(length(p) - 1.0, p.y + 1.0); }
 int materialAt(vec3 p) { return 0; }
-vec2 sceneSpan(vec3 ro, vec3 rd) { return vec2(0.0, 1e30); }
 """
 # The same scene's closed-form queries, for the analytic variants (compose/trace_code.py).
 TRACE_STUB = trace_glsl(
@@ -28,6 +27,8 @@ TRACE_STUB = trace_glsl(
         Analytic("plane", normal="vec3(0.0, 1.0, 0.0)", offset="1.0"),
     ]
 )
+# A bounded marcher's span where the stand-in scene gives none: the whole ray.
+WHOLE_SPAN = "vec2 sceneSpan(vec3 ro, vec3 rd) { return vec2(0.0, 1e30); }\n"
 SCENE_DEFINES = {"SUN_DIR": "normalize(vec3(0.6, 0.8, -0.5))", "SUN_COLOR": "vec3(2.0)"}
 # Choices for the slots a scene's content decides, when a snippet needs one of them.
 CONTENT_CHOICES = {
@@ -57,6 +58,8 @@ def standalone_source(
     defined = set(_DEFINITION.findall(scene_stub))
     if any(name in QUERIES and name not in defined for name in snippet.requires):
         scene_stub += TRACE_STUB  # the default scene's queries, where the stub has none
+    if "sceneSpan" in snippet.requires and "sceneSpan" not in defined:
+        scene_stub += WHOLE_SPAN
     scene = stub_unit(scene_stub, catalog)
     entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)
     units = resolve([scene, entry], catalog, choices, constants=SCENE_DEFINES)

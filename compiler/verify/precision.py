@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.catalog.slots import SCENE_FUNCTIONS
 from glint.compiler.compose.snippet_evaluation import entry_of, evaluate_snippet, snippet_source
 from glint.compiler.evaluator.errors import UnsupportedError
 from glint.compiler.evaluator.interpreter import Interpreter
@@ -140,9 +141,11 @@ def precision_report(
 def survey(points: int = 4096) -> dict[str, dict[str, dict[str, Any]]]:
     """`precision_report` of every snippet whose slot entry takes only float, vec3, Dots and
     Surface parameters. Snippets that only a GPU can run (screen-space derivatives) are left
-    out."""
+    out, and so are those that need a scene function other than `map`."""
     out: dict[str, dict[str, dict[str, Any]]] = {}
     for snippet in load_catalog().snippets.values():
+        if any(n in SCENE_FUNCTIONS and n not in DEFAULT_EXTERNALS for n in snippet.requires):
+            continue  # a closed-form scene query or span: only a composed scene has one
         try:
             params = entry_params(snippet.id)
         except ValueError:

@@ -22,7 +22,7 @@ error_budget = { max_abs = 0.25, mean_abs = 0.0035 }
 // The ray starts tmin along rd, as the march does: a point on a surface is then off it on the
 // side the light is, and occluded by it only when the light is below its tangent plane.
 float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
-    float radius = atan(1.0 / SHADOW_K);  // the disc light's angular radius
+    float radius = max(atan(1.0 / SHADOW_K), 1e-6);  // the disc light's angular radius
     float x = sceneClearance(ro + rd * tmin, rd, tmax, radius) / radius;
     x = clamp(x, -1.0, 1.0);
     return 0.25 * (1.0 + x) * (1.0 + x) * (2.0 - x);

@@ -30,7 +30,7 @@ float traceSphere(vec3 ro, vec3 rd, float r) {
 // the centre is taken as atan(|ω × c|, ω·c), accurate at small angles where acos is not. A
 // sphere wholly beyond tmax does not count (π: far clear).
 float clearanceSphere(vec3 ro, vec3 rd, float r, float tmax) {
-    float dist = length(ro);
+    float dist = max(length(ro), 1e-20);  // at the centre itself the ray is inside
     if (dist - r > tmax) return 3.14159265;
     vec3 toCentre = -ro;
     float centre = atan(length(cross(rd, toCentre)), dot(rd, toCentre));
