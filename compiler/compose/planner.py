@@ -77,7 +77,8 @@ def plan(
     else:
         choose("background", "gradient", "no sun to draw in the background")
     fixed = {"camera", "tonemap", "output", "background"}  # what the budget may not change
-    if any(unit.id == TRACE_UNIT for unit in units):
+    if budget is None and any(unit.id == TRACE_UNIT for unit in units):
+        # (--budget picks among the measured variants of the tiers instead)
         # Every object is a sphere, box or plane: closed forms replace the marches (trace_code.py)
         for slot, variant in tiers.get("analytic", {}).get(tier, {}).items():
             choose(slot, variant, f"{tier} tier: every object is an analytic primitive")
