@@ -166,7 +166,7 @@ float traceSphere(vec3 ro, vec3 rd, float r) {
 // the centre is taken as atan(|ω × c|, ω·c), accurate at small angles where acos is not. A
 // sphere wholly beyond tmax does not count (π: far clear).
 float clearanceSphere(vec3 ro, vec3 rd, float r, float tmax) {
-    float dist = length(ro);
+    float dist = max(length(ro), 1e-20);  // at the centre itself the ray is inside
     if (dist - r > tmax) return 3.14159265;
     vec3 toCentre = -ro;
     float centre = atan(length(cross(rd, toCentre)), dot(rd, toCentre));
@@ -418,7 +418,7 @@ vec3 sceneNormal(vec3 p) {
 // The ray starts tmin along rd, as the march does: a point on a surface is then off it on the
 // side the light is, and occluded by it only when the light is below its tangent plane.
 float shadow(vec3 ro, vec3 rd, float tmin, float tmax) {
-    float radius = atan(1.0 / SHADOW_K);  // the disc light's angular radius
+    float radius = max(atan(1.0 / SHADOW_K), 1e-6);  // the disc light's angular radius
     float x = sceneClearance(ro + rd * tmin, rd, tmax, radius) / radius;
     x = clamp(x, -1.0, 1.0);
     return 0.25 * (1.0 + x) * (1.0 + x) * (2.0 - x);
