@@ -19,12 +19,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.bench.flat_normal import FLAT_ID, flat_normal_errors, render_flat
+from glint.compiler.bench.flat_normal import flat_normal_errors, render_flat
 from glint.compiler.bench.normals import normal_set
 from glint.compiler.bench.occlusion import ao_sets, shadow_sets
 from glint.compiler.bench.samples import ProbeSet, camera_rays, domain_set, free_inputs
 from glint.compiler.bench.subsurface import subsurface_sets
 from glint.compiler.catalog.loader import Catalog, Snippet
+from glint.compiler.compose.pipeline import uses_derivatives
 from glint.compiler.verify.probes import entry_function, probe_inputs
 from glint.compiler.verify.references.normals import SCENES as NORMAL_SCENES
 
@@ -58,7 +59,7 @@ def _normal_plan(snippet: Snippet) -> Plan:
     # which a probe (one unrelated point per pixel) cannot give: it is only timed there.
     # (The flat one taps map only where its derivatives straddle a silhouette; the analytic one
     # reads the primitive a composed scene names: cost only, its exactness is tested apart.)
-    taps = "map" in snippet.requires and snippet.id != FLAT_ID
+    taps = "map" in snippet.requires and not uses_derivatives(snippet)
     sets = [normal_set(snippet, scene, with_reference=taps) for scene in sorted(NORMAL_SCENES)]
     if "sceneNormal" in snippet.requires:
         return Plan(None, "", sets)

@@ -138,14 +138,13 @@ def span_glsl(box: Bounds | None, planes: list[Placed], everywhere: bool) -> str
             "        span = vec2(max(inBox.x, 0.0), inBox.y);",
             "    }",
         ]
-    for plane in planes:
+    for i, plane in enumerate(planes):
         query = analytic(plane)
         assert query is not None
         lines += [
-            f"    float toPlane = {query.trace()};" if plane is planes[0] else
-            f"    toPlane = {query.trace()};",
+            f"    {'float ' if i == 0 else ''}toPlane = {query.trace()};",
             "    if (toPlane >= 0.0) span = vec2(min(span.x, toPlane), max(span.y, toPlane));",
-        ]  # fmt: skip
+        ]
     return "\n".join([*lines, "    return span;", "}", ""])
 
 
@@ -160,12 +159,10 @@ def span_unit(
     if user_field and field_bounds is not None:
         boxes.append((np.asarray(field_bounds[0], float), np.asarray(field_bounds[1], float)))
         user_field = False
-    box = _union(boxes or [None])
-    finite = boxes
+    box = _union(boxes)
     unbounded = user_field or any(analytic(p) is None for p in planes)
-    unbounded = unbounded or (bool(finite) and box is None)
-    body = span_glsl(box if finite else None, planes, unbounded)
-    requires = (
-        [] if unbounded else (["boxSlabs"] if finite else []) + (["tracePlane"] if planes else [])
-    )
+    unbounded = unbounded or (bool(boxes) and box is None)
+    body = span_glsl(box, planes, unbounded)
+    requires = [] if unbounded else (["boxSlabs"] if box is not None else [])
+    requires += ["tracePlane"] if planes and not unbounded else []
     return generated(f"scene.{SPAN}", [SPAN], requires, body)

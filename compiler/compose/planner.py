@@ -28,7 +28,7 @@ from glint.compiler.compose.budget import (
 from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.scene_code import generate
 from glint.compiler.compose.scene_slots import SlotUse, slot_uses
-from glint.compiler.compose.trace_code import TRACE_UNIT
+from glint.compiler.compose.trace_code import QUERIES, TRACE_UNIT
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 
@@ -78,8 +78,8 @@ def plan(
         choose("background", "gradient", "no sun to draw in the background")
     fixed = {"camera", "tonemap", "output", "background"}  # what the budget may not change
     if budget is None and any(unit.id == TRACE_UNIT for unit in units):
-        # (--budget picks among the measured variants of the tiers instead)
-        # Every object is a sphere, box or plane: closed forms replace the marches (trace_code.py)
+        # Every object is a sphere, box or plane: closed forms replace the marches (trace_code.py).
+        # --budget picks among the measured marching variants instead.
         for slot, variant in tiers.get("analytic", {}).get(tier, {}).items():
             choose(slot, variant, f"{tier} tier: every object is an analytic primitive")
     rough = _rough_materials(scene)
@@ -101,7 +101,7 @@ def plan(
 
     result.uses = slot_uses(scene, catalog, result.choices, units)
     if budget is not None:
-        _spend(result, scene, fixed, budget, choose)
+        _spend(result, scene, catalog, fixed, budget, choose)
         result.uses = slot_uses(scene, catalog, result.choices, units)
     for slot, use in result.uses.items():
         if not use.used:
@@ -120,6 +120,7 @@ def plan(
 def _spend(
     result: Plan,
     scene: Scene,
+    catalog: Catalog,
     fixed: set[str],
     budget_ns: float,
     choose: Callable[[str, str, str], None],
@@ -133,7 +134,8 @@ def _spend(
             None if slot in fixed else candidates_for(slot, result.choices[slot], measurements)
         )
         # the closed-form variants are the tiers' choice for analytic scenes, not the budget's
-        options = [o for o in options or [] if not o.id.endswith(".analytic")] or None
+        options = [o for o in options or [] if not set(QUERIES) & set(catalog.get(o.id).requires)]
+        options = options or None
         if options:
             candidates[slot] = options
     rest = {
