@@ -92,8 +92,12 @@ def test_the_template_row(default_rows: list[TierMeasure]) -> None:
     template = _by_tier(default_rows)["template"]
     assert template.spirv > 0
     assert template.time_vs_template == 1.0
-    # The balanced row is composed with the template's own models: the same picture.
-    assert _by_tier(default_rows)["balanced"].flip == pytest.approx(template.flip, abs=1e-3)
+    # The balanced row is composed with the template's own models: the same picture but where
+    # the template's 128 steps run out before grazing ground that the catalog's 512 reach, as
+    # the reference's do (measured: 0.0031 closer to the reference; the exact same picture, with
+    # the template's step budget, is tests/test_default_scene.py).
+    balanced = _by_tier(default_rows)["balanced"]
+    assert template.flip - 0.006 < balanced.flip <= template.flip + 1e-3
 
 
 @pytest.mark.render
@@ -141,8 +145,9 @@ def test_renderer_label_says_what_the_times_are() -> None:
 # --- the ground truth ---------------------------------------------------------------------------
 
 
-def test_the_ground_truth_is_the_template_with_two_terms_exact() -> None:
+def test_the_ground_truth_is_the_template_with_three_terms_exact() -> None:
     truth, template = ground_truth_source(), template_source()
+    assert "k < 128; ++k" in template and "k < 128; ++k" not in truth  # the hit's step budget
     assert "specularEnvironment(n, v, r0, alpha)" in truth
     assert "1.0 - 0.7 * rough" in template and "1.0 - 0.7 * rough" not in truth
     assert "8.0 * h / t" in template and "8.0 * h / t" not in truth

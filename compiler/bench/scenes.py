@@ -19,13 +19,15 @@ differently there, and nothing else:
 - the sun's soft shadow, as the visible fraction of a disc light of angular radius atan(1/8)
   (the light that k·h/t with k = 8 stands for, as in the shadow probes), by 32 × 32 rays
   stratified over its solid angle and intersected exactly with the sphere and the ground;
+- the first hit, by the template's sphere tracing given 4096 steps instead of 128, so that no
+  ray toward ground within the far distance runs out of steps at a grazing angle and shows sky;
 - the environment reflection, as the specular BRDF of the key light (GGX, height-correlated
   Smith, Schlick) integrated over the gradient sky, by the quadrature of the float64 split-sum
   reference (half vectors through GGX's inverse CDF, 32 × 32 Gauss-Legendre nodes over the
   part of the lobe that reflects above the horizon), in place of the template's Schlick(N·V)
   times the sky along the mirror direction times 1 − 0.7·roughness.
 
-The rest (camera, tracing, normals, SDF AO, specular occlusion, the fill lights, the BRDF of the
+The rest (camera, normals, SDF AO, specular occlusion, the fill lights, the BRDF of the
 sun at the disc's centre) is the template's own code, the same as the tiers', so its error is not
 what the comparison measures. Both exact terms are checked against the float64 references
 (`shadow_disc_light`: mean 0.0002, max 0.02 on the ground; `dfg_split_sum`: 0.0004 for the
@@ -78,7 +80,7 @@ TEMPLATE_MODELS = {
     "specular": "cook_torrance",
     "specocc": "power",
     "env": "gradient",
-    "raymarch": "sphere_tracing",  # 128 steps, epsilon 0.001
+    "raymarch": "sphere_tracing",  # epsilon 0.001; 512 steps where the template has 128
     "shadow": "soft",  # 24 steps, k = 8
     "ao": "sdf5",
     "normal": "central_differences",
@@ -209,6 +211,8 @@ _PENUMBRA = re.compile(r"^float penumbra\(.*?^}\n", re.S | re.M)
 _REFLECTION = "result += schlick(r0, nv) * skyGradient(refl) * specOcc * (1.0 - 0.7 * rough);"
 _EXACT_REFLECTION = "result += specularEnvironment(n, v, r0, alpha) * specOcc;"
 _LIGHT_POINT = "vec3 lightPoint("
+_TRACE_LOOP = "for (int k = 0; k < 128; ++k) {\n        float d = sceneDistance(origin + t * dir);"
+_EXACT_TRACE_LOOP = _TRACE_LOOP.replace("128", "4096")
 
 
 def truth_shadow_glsl(strata: int = TRUTH_STRATA) -> str:
@@ -234,13 +238,17 @@ def truth_environment_glsl(strata: int = TRUTH_STRATA) -> str:
 
 
 def ground_truth_source(strata: int = TRUTH_STRATA) -> str:
-    """The template with its soft shadow and environment reflection computed exactly."""
+    """The template with its first hit, soft shadow and environment reflection computed exactly."""
     source = template_source()
-    if len(_PENUMBRA.findall(source)) != 1 or source.count(_REFLECTION) != 1:
+    if (
+        len(_PENUMBRA.findall(source)) != 1
+        or source.count(_REFLECTION) != 1
+        or source.count(_TRACE_LOOP) != 1
+    ):
         raise InputError(f"{TEMPLATE} changed: cannot find the terms the ground truth replaces")
     shadow, environment = truth_shadow_glsl(strata), truth_environment_glsl(strata)
     source = _PENUMBRA.sub(lambda _: shadow, source)
-    source = source.replace(_REFLECTION, _EXACT_REFLECTION)
+    source = source.replace(_REFLECTION, _EXACT_REFLECTION).replace(_TRACE_LOOP, _EXACT_TRACE_LOOP)
     return source.replace(_LIGHT_POINT, f"{environment}\n{_LIGHT_POINT}", 1)
 
 

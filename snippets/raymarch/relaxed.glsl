@@ -4,7 +4,7 @@ slot = "raymarch"
 summary = "Over-relaxed sphere tracing: steps of ω·d while consecutive unbounding spheres overlap, plain steps after the first that does not; stops within a pixel's cone and refines the hit by one secant step"
 provides = ["raymarch"]
 requires = ["map", "sceneSpan"]
-params = { MARCH_STEPS = { type = "int", default = 64, range = [1, 1024] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_PIXEL = { type = "float", default = 0.002, range = [0.0, 0.05] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] }, MARCH_RELAX = { type = "float", default = 1.3, range = [1.0, 1.9] } }
+params = { MARCH_STEPS = { type = "int", default = 128, range = [1, 1024] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_PIXEL = { type = "float", default = 0.002, range = [0.0, 0.05] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] }, MARCH_RELAX = { type = "float", default = 1.3, range = [1.0, 1.9] } }
 sources = ["Keinert, Schäfer, Korndörfer, Ganse, Stamminger 2014, Enhanced Sphere Tracing (over-relaxation, pixel-cone termination)", "Hart 1996, sphere tracing"]
 formula = 't_{i+1} = t_i + \omega\, d_i \text{ while } |d_{i-1}| + |d_i| \ge t_i - t_{i-1}, \text{ else } t_i := t_{i-1} + d_{i-1} \text{ and } \omega := 1, \quad \text{stop at } d_n < \max(\varepsilon, c\, t_n), \quad t_{\text{hit}} = t_n + \frac{d_n\, (t_n - t_{n-1})}{d_{n-1} - d_n} \text{ if } d_n < d_{n-1} \text{ and that lands nearer the surface, else } t_n'
 --- */
