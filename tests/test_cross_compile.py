@@ -85,6 +85,20 @@ def test_ggx_reads_like_its_glsl(hlsl_of: dict[str, str]) -> None:
     assert hlsl.startswith("// glint catalog show D.ggx --lang hlsl: GGX")
 
 
+def test_the_readme_unity_example_compiles(hlsl_of: dict[str, str]) -> None:
+    readme = (Path(__file__).parent.parent / "README.md").read_text()
+    example = re.search(r"```hlsl\n(.*?)```", readme, re.S)
+    assert example is not None
+    body = example.group(1).split('#include "ggx.hlsl"\n', 1)[1].split("ENDHLSL")[0]
+    frag = (
+        "float _Roughness;\n"
+        "float4 frag(float4 pos : SV_Position, float3 N : NORMAL, float3 V : TEXCOORD0,\n"
+        "            float3 L : TEXCOORD1) : SV_Target {\n"
+        f"{body}    return float4(D, D, D, 1.0);\n}}\n"
+    )
+    assert check_hlsl(hlsl_of["D.ggx"] + frag, entry="frag") == []
+
+
 def test_scene_functions_get_stand_ins(hlsl_of: dict[str, str]) -> None:
     hlsl = hlsl_of["shadow.soft"]
     assert "map: stand-ins that return 0" in hlsl
