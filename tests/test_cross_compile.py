@@ -138,6 +138,19 @@ def test_composed_scene_as_msl() -> None:
     assert "target msl" in shader.text.splitlines()[0]
 
 
+def test_a_define_the_preprocessor_needs_stays_a_macro() -> None:
+    # `#if` cannot read a constant: this one compiles only with SAMPLES left a macro
+    source = (
+        "#define SAMPLES 4\n#define GAIN 0.5\n"
+        "#if SAMPLES > 2\nfloat gain() { return GAIN; }\n#endif\n"
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(gain() * float(SAMPLES)); }\n"
+    )
+    hlsl = cross_compile_image(source, "hlsl")
+    assert check_hlsl(hlsl) == []
+    assert re.search(r"^float gain\(\)$", hlsl, re.M)
+    assert "static const float GAIN" not in hlsl  # the whole shader fell back to macros
+
+
 def test_broken_glsl_is_one_clear_error_at_its_line() -> None:
     source = "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(undefinedThing);\n}\n"
     with pytest.raises(InputError) as caught:
