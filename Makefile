@@ -1,7 +1,8 @@
 # The two commands a newcomer types: `make demo` and `make test`. Both set everything up first:
-# the Debian packages glint runs (glslang, the Mesa EGL libraries), then a virtual environment
-# with glint installed editable. `make site` builds the docs site into build/site (`make serve`
-# serves it), with the Debian packages of its local KaTeX and the site's Python packages.
+# the Debian packages glint runs (glslang, SPIRV-Cross for HLSL and MSL, the Mesa EGL
+# libraries), then a virtual environment with glint installed editable. `make site` builds the
+# docs site into build/site (`make serve` serves it), with the Debian packages of its local
+# KaTeX and the site's Python packages.
 # `make test` installs those KaTeX packages and Chromium too: the browser tests load the site;
 # and Mesa's lavapipe Vulkan driver, on which the portability test runs wgpu-shadertoy.
 
@@ -9,7 +10,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 BUILD := build
-SYSTEM_PACKAGES := glslang-tools spirv-tools libegl1 libegl-mesa0 libgl1-mesa-dri
+SYSTEM_PACKAGES := glslang-tools spirv-tools spirv-cross libegl1 libegl-mesa0 libgl1-mesa-dri
 # Only the docs site needs these (KaTeX and its fonts, served by the site itself).
 SITE_PACKAGES := libjs-katex fonts-katex
 # The browser tests (tests/test_site_browser.py) drive Debian's Chromium through Playwright: no

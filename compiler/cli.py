@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import GlintError, UsageError
 from glint.compiler.files import read_text_file
+from glint.compiler.target.cross import LANGS
 from glint.compiler.target.shadertoy import TARGETS
 
 if TYPE_CHECKING:
@@ -71,7 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="print, for each slot, whether it is in and why and which variant fills it and why "
         "(the shader goes to -o if given)",
     )
-    _add_target(compose)
+    _add_target(compose, TARGETS + LANGS)
     compose.add_argument(
         "--params-as-uniforms",
         action="store_true",
@@ -89,7 +90,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     validate = sub.add_parser("validate", help="check a shader with glslangValidator")
     validate.add_argument("file", help="ShaderToy Image-tab shader (.glsl)")
-    _add_target(validate)
+    _add_target(validate, TARGETS)
     validate.set_defaults(handler=cmd_validate)
 
     render = sub.add_parser("render", help="render a shader or a scene to a PNG")
@@ -112,6 +113,12 @@ def build_parser() -> argparse.ArgumentParser:
         "show", help="print a snippet with its dependencies as one pasteable GLSL block"
     )
     show.add_argument("id", metavar="ID", help="snippet id, e.g. D.ggx (see `glint catalog`)")
+    show.add_argument(
+        "--lang",
+        choices=("glsl", *LANGS),
+        default="glsl",
+        help="glsl (default); hlsl or msl: converted through SPIR-V (needs spirv-cross)",
+    )
     show.set_defaults(handler=cmd_catalog_show)
     bench = sub.add_parser(
         "bench",
@@ -142,12 +149,19 @@ def _add_plugin_commands(sub: argparse._SubParsersAction) -> None:  # type: igno
         entry.load()(sub)
 
 
-def _add_target(parser: argparse.ArgumentParser) -> None:
+def _add_target(parser: argparse.ArgumentParser, choices: tuple[str, ...]) -> None:
+    converted = (
+        "; hlsl, msl: the shadertoy shader as an HLSL pixel shader / Metal fragment function, "
+        "converted through SPIR-V (needs spirv-cross)"
+        if LANGS[0] in choices
+        else ""
+    )
     parser.add_argument(
         "--target",
-        choices=TARGETS,
+        choices=choices,
         default="shadertoy",
-        help="shadertoy: the Image tab (default); webgl2: ES 3.00; desktop: #version 330",
+        help="shadertoy: the Image tab (default); webgl2: ES 3.00; desktop: #version 330"
+        + converted,
     )
 
 
@@ -321,6 +335,7 @@ def _progress_bar(label: str, total: int) -> Iterator[Callable[[str], None]]:
 def cmd_validate(args: argparse.Namespace) -> int:
     from glint.compiler.target.glslang import validate
 
+    _refuse_converted(args.file, "validate")
     source = read_text_file(args.file)
     diagnostics = validate(source, args.file, args.target)
     for diagnostic in diagnostics:
@@ -336,6 +351,7 @@ def cmd_validate(args: argparse.Namespace) -> int:
 def cmd_render(args: argparse.Namespace) -> int:
     import glint
 
+    _refuse_converted(args.input, "render")
     shader: glint.Shader | Path = Path(args.input)
     if args.input.endswith(".toml"):
         overrides = _overrides(args.variant)
@@ -373,6 +389,21 @@ def cmd_render(args: argparse.Namespace) -> int:
     return 1 if stats["nan"] or stats["inf"] else 0
 
 
+# Suffixes of the HLSL and Metal files `compose --target hlsl|msl` writes.
+_CONVERTED = {".hlsl": "HLSL", ".fx": "HLSL", ".metal": "MSL", ".msl": "MSL"}
+
+
+def _refuse_converted(path: str, command: str) -> None:
+    """validate and render take GLSL; say so for an HLSL or Metal file instead of glslang's
+    errors on it."""
+    lang = _CONVERTED.get(Path(path).suffix.lower())
+    if lang:
+        raise UsageError(
+            f"{path}: glint {command} takes GLSL (ShaderToy Image-tab code), not {lang}; "
+            f"{command} the GLSL that `glint compose` writes, then convert it with --target"
+        )
+
+
 def _num(value: float | None) -> str:
     return "n/a" if value is None else f"{value:.4g}"
 
@@ -399,9 +430,9 @@ def cmd_catalog(args: argparse.Namespace) -> int:
 
 
 def cmd_catalog_show(args: argparse.Namespace) -> int:
-    from glint.compiler.compose.catalog_show import show_source
+    from glint.compiler.compose.catalog_cross import show_in
 
-    sys.stdout.write(show_source(args.id))
+    sys.stdout.write(show_in(args.id, args.lang))
     return 0
 
 

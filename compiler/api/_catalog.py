@@ -31,12 +31,13 @@ class Snippet:
     def variant(self) -> str:
         return self.id.split(".", 1)[1]
 
-    def standalone(self) -> str:
-        """What `glint catalog show ID` prints: the snippet with everything it needs (other
-        slots at their balanced-tier variants) as one block of GLSL to paste."""
-        from glint.compiler.compose.catalog_show import show_source
+    def standalone(self, lang: str = "glsl") -> str:
+        """What `glint catalog show ID --lang LANG` prints: the snippet with everything it needs
+        (other slots at their balanced-tier variants) as one block of GLSL to paste, or that
+        block converted to HLSL or MSL (`lang` "hlsl" or "msl") through SPIR-V."""
+        from glint.compiler.compose.catalog_cross import show_in
 
-        return show_source(self.id)
+        return show_in(self.id, lang)
 
     def __repr__(self) -> str:
         return f"<glint.Snippet {self.id}: {self.summary}>"

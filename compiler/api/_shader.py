@@ -12,7 +12,11 @@ from typing import TYPE_CHECKING, Any
 
 from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import UsageError
+from glint.compiler.target.cross import LANGS
 from glint.compiler.target.shadertoy import TARGETS
+
+# What `compose` writes: the GLSL targets, and HLSL and MSL converted from the shadertoy one.
+COMPOSE_TARGETS = TARGETS + LANGS
 
 if TYPE_CHECKING:
     from glint.compiler.compose.planner import Plan
@@ -31,10 +35,11 @@ class Shader:
     """A composed shader: `text` is what `glint compose` writes for the same scene and options.
 
     For the shadertoy target `text` pastes into ShaderToy's Image tab as it is; webgl2 and
-    desktop are complete fragment shaders. `plan` holds each slot's use and variant and why,
-    `units` the snippets and generated code in the order they were emitted. `uniforms` holds
-    the parameters composed as uniforms (`params_as_uniforms`), as the shader's manifest lists
-    them.
+    desktop are complete fragment shaders; hlsl and msl are the shadertoy shader converted
+    through SPIR-V to an HLSL pixel shader / a Metal fragment function. `plan` holds each
+    slot's use and variant and why, `units` the snippets and generated code in the order they
+    were emitted. `uniforms` holds the parameters composed as uniforms (`params_as_uniforms`),
+    as the shader's manifest lists them.
     """
 
     text: str
@@ -65,6 +70,11 @@ class Shader:
         the snippet file and line); an empty list when it is valid."""
         from glint.compiler.target.glslang import validate
 
+        if self.target in LANGS:
+            raise UsageError(
+                f"validate checks GLSL; this shader is {self.target.upper()} (compose it for a "
+                f"GLSL target to validate it)"
+            )
         return validate(self.text, f"<{self.scene.name}>", self.target)
 
     def retarget(self, target: str, params_as_uniforms: bool = False) -> Shader:
@@ -72,12 +82,14 @@ class Shader:
         without planning it again: what `compose` with those options gives for the scene."""
         from glint.compiler.compose.pipeline import emit_shader
 
-        _check_choice("target", target, TARGETS)
+        _check_choice("target", target, COMPOSE_TARGETS)
+        _check_uniforms(target, params_as_uniforms)
+        emit_as = "shadertoy" if target in LANGS else target
         composed = emit_shader(
-            self.scene.name, self.plan, list(self.units), target, params_as_uniforms
+            self.scene.name, self.plan, list(self.units), emit_as, params_as_uniforms
         )
         return Shader(
-            composed.text,
+            _converted(composed.text, target, self.scene.name),
             target,
             self.scene,
             self.plan,
@@ -139,7 +151,9 @@ def compose(
     `glint.compiler.compose.scene.Scene`, or None for the embedded default scene. `target`,
     `tier`, `variants` ({slot: variant}) and `budget` (ns per pixel) are the command's
     `--target`, `--tier`, `--variant SLOT=VARIANT` and `--budget`; `params_as_uniforms` is
-    `--params-as-uniforms` (webgl2 only).
+    `--params-as-uniforms` (webgl2 only). `target` "hlsl" or "msl" converts the shadertoy
+    shader through SPIR-V (glslangValidator, SPIRV-Cross); EnvironmentProblem when a tool is
+    missing.
 
     Raises InputError for a scene that is not valid (the message names the key path, the value
     and what was expected), an unknown slot or variant, or a budget below the cheapest
@@ -147,16 +161,40 @@ def compose(
     """
     from glint.compiler.compose.pipeline import compose_scene
 
-    _check_choice("target", target, TARGETS)
+    _check_choice("target", target, COMPOSE_TARGETS)
+    _check_uniforms(target, params_as_uniforms)
     if tier is not None:
         _check_choice("tier", tier, TIERS)
     if budget is not None and not (0 < budget < math.inf):
         raise UsageError(f"budget: expected a positive number of ns, got {budget!r}")
     model = load_scene(scene)
-    composed = compose_scene(model, target, tier, dict(variants or {}), budget, params_as_uniforms)
+    emit_as = "shadertoy" if target in LANGS else target
+    composed = compose_scene(model, emit_as, tier, dict(variants or {}), budget, params_as_uniforms)
     return Shader(
-        composed.text, target, model, composed.plan, composed.units, tuple(composed.uniforms)
+        _converted(composed.text, target, model.name),
+        target,
+        model,
+        composed.plan,
+        composed.units,
+        tuple(composed.uniforms),
     )
+
+
+def _converted(text: str, target: str, scene_name: str) -> str:
+    """The shadertoy shader as HLSL or MSL for those targets; other targets' text as it is."""
+    if target not in LANGS:
+        return text
+    from glint.compiler.target.cross import DESCRIPTIONS, cross_compile_image
+
+    converted = cross_compile_image(text, target, f"<{scene_name}>")
+    # glint's header (version, scene, tier, the snippets) survives as the converted file's own.
+    header = [line for line in text.split("\n\n", 1)[0].splitlines() if line.startswith("//")]
+    header[0] = header[0].replace("target shadertoy", f"target {target}")
+    header[1:2] = [
+        f"// {DESCRIPTIONS[target]}",
+        "// Converted through SPIR-V (glslangValidator -V, then SPIRV-Cross).",
+    ]
+    return "\n".join(header) + "\n\n" + converted
 
 
 def load_scene(scene: SceneInput) -> Scene:
@@ -174,6 +212,11 @@ def load_scene(scene: SceneInput) -> Scene:
     raise UsageError(
         f"a scene is the path of a TOML file, a dict or a Scene, not {type(scene).__name__}"
     )
+
+
+def _check_uniforms(target: str, params_as_uniforms: bool) -> None:
+    if params_as_uniforms and target in LANGS:
+        raise UsageError(f"--params-as-uniforms needs --target webgl2, not {target}")
 
 
 def _check_choice(name: str, value: str, choices: tuple[str, ...]) -> None:
