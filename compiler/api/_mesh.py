@@ -15,11 +15,12 @@ from glint.compiler.target.mesh import MESH_TARGETS
 from ._shader import _check_choice, load_scene
 
 if TYPE_CHECKING:
-    from ._shader import SceneInput
     from glint.compiler.compose.mesh_pipeline import MeshComposition, MeshProgram
     from glint.compiler.compose.scene import Scene
     from glint.compiler.render.runner import RenderResult
     from glint.compiler.target.glslang import Diagnostic
+
+    from ._shader import SceneInput
 
 
 @dataclass(frozen=True, eq=False, repr=False)
