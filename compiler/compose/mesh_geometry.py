@@ -7,6 +7,7 @@ Arrays are in the object's own space; `model_matrix` places them as every object
 
 from __future__ import annotations
 
+import logging
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,15 +41,21 @@ def read_mesh_file(path: Path, key: str) -> MeshArrays:
             f"{key}: {path.name}: no such file (looked for {path}); the path is relative to "
             "the scene file"
         )
+    # Without scipy trimesh logs a traceback as a warning before its own fallback for smooth
+    # normals; the fallback is right, the traceback is noise for the user.
+    logging.getLogger("trimesh").setLevel(logging.ERROR)
     try:
-        loaded = trimesh.load(path, force="mesh", process=False)
+        # process=False keeps the file's vertices, so its normals (if any) stay with them. A
+        # file of several objects is a trimesh Scene: its meshes are joined, placed as it
+        # places them (their normals then are trimesh's smooth ones).
+        loaded = trimesh.load(path, process=False)
+        if isinstance(loaded, trimesh.Scene):
+            loaded = loaded.dump(concatenate=True)
     except Exception as exc:  # trimesh raises many kinds for a file it cannot read
         raise InputError(f"{key}: {path}: cannot read it as a mesh: {exc}") from None
     faces = np.asarray(getattr(loaded, "faces", np.zeros((0, 3))))
     if len(faces) == 0:
         raise InputError(f"{key}: {path}: the file has no triangles")
-    # process=False keeps the file's vertices, so its normals (if any) stay with them; trimesh
-    # computes smooth ones when the file has none.
     normals = np.asarray(loaded.vertex_normals, dtype=np.float64)
     return _arrays(np.asarray(loaded.vertices), normals, faces)
 
