@@ -3,6 +3,7 @@ version of the same scene, and what varies between the tests."""
 
 from __future__ import annotations
 
+import copy
 from typing import Any
 
 # Shadows and AO need a distance field: off here so that the raymarched sphere is lit as the
@@ -23,13 +24,9 @@ def mesh_scene(
     builtin: str = "uv_sphere", subdivisions: int = 3, shading: str = "phong", **more: Any
 ) -> dict[str, Any]:
     sphere = {"shape": "mesh", "builtin": builtin, "subdivisions": subdivisions}
-    return {
-        **BASE,
-        "objects": [{**sphere, "material": "red"}],
-        "mesh": {"shading": shading},
-        **more,
-    }
+    scene = {**BASE, "objects": [{**sphere, "material": "red"}], "mesh": {"shading": shading}}
+    return copy.deepcopy({**scene, **more})  # tests change it
 
 
 def raymarched_scene() -> dict[str, Any]:
-    return {**BASE, "objects": [{"shape": "sphere", "radius": 1.0, "material": "red"}]}
+    return copy.deepcopy({**BASE, "objects": [{"shape": "sphere", "material": "red"}]})
