@@ -11,10 +11,17 @@ import numpy as np
 import pytest
 from mesh_scenes import mesh_scene, raymarched_scene
 
-from glint.compiler.compose.mesh_geometry import builtin_mesh, normal_matrix, model_matrix
+from glint.compiler.compose.mesh_geometry import builtin_mesh, model_matrix, normal_matrix
 from glint.compiler.compose.scene import parse_scene, scene_from_dict
 from glint.compiler.compose.shapes import Mesh
 from glint.compiler.errors import InputError
+
+MATERIAL = '\nmaterial = "m"\n[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n'
+
+
+def _file_scene(name: str) -> str:
+    return f'[[objects]]\nshape = "mesh"\nfile = "{name}"' + MATERIAL
+
 
 TETRAHEDRON = """v 0 0 0
 v 1 0 0
@@ -53,7 +60,7 @@ def test_bad_builtin_subdivisions_and_sources() -> None:
 
 
 def test_missing_mesh_file_names_the_key(tmp_path: Path) -> None:
-    text = f'[[objects]]\nshape = "mesh"\nfile = "nope.obj"\nmaterial = "m"\n[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n'
+    text = _file_scene("nope.obj")
     with pytest.raises(InputError) as caught:
         parse_scene(text, str(tmp_path / "scene.toml"))
     assert "objects[0].file: nope.obj: no such file" in caught.value.message
@@ -72,7 +79,7 @@ def test_mesh_keys_are_refused_on_raymarched_scenes() -> None:
 
 def test_obj_file_without_normals_gets_smooth_ones(tmp_path: Path) -> None:
     (tmp_path / "tet.obj").write_text(TETRAHEDRON)
-    text = '[[objects]]\nshape = "mesh"\nfile = "tet.obj"\nmaterial = "m"\n[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n'
+    text = _file_scene("tet.obj")
     scene = parse_scene(text, str(tmp_path / "scene.toml"))
     mesh = scene.objects[0]
     assert isinstance(mesh, Mesh) and scene.is_mesh
@@ -93,8 +100,10 @@ def test_obj_file_normals_are_kept(tmp_path: Path) -> None:
         *[f"f {' '.join(f'{i}//1' for i in f.split()[1:])}" for f in faces],
     ]
     (tmp_path / "tet.obj").write_text("\n".join(with_normals) + "\n")
-    text = '[[objects]]\nshape = "mesh"\nfile = "tet.obj"\nmaterial = "m"\n[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n'
-    arrays = parse_scene(text, str(tmp_path / "scene.toml")).objects[0].arrays  # type: ignore[union-attr]
+    text = _file_scene("tet.obj")
+    mesh = parse_scene(text, str(tmp_path / "scene.toml")).objects[0]
+    assert isinstance(mesh, Mesh)
+    arrays = mesh.arrays
     assert np.allclose(arrays.normals, [0.0, 0.0, 1.0])
 
 

@@ -392,14 +392,15 @@ class Scene(Strict):
                         "not a part of a group"
                     )
         if not meshes:
+            # by value, not by the keys given: a dumped scene validates again as it was
             for name, material in self.materials.items():
                 for key in ("shading", "models"):
-                    if key in material.model_fields_set:
+                    if getattr(material, key):
                         raise ValueError(
                             f'materials.{name}.{key}: only mesh scenes (shape = "mesh") '
                             "have it; a raymarched scene shades every material in one program"
                         )
-            if "mesh" in self.model_fields_set:
+            if self.mesh != MeshSettings():
                 raise ValueError('mesh: only mesh scenes (shape = "mesh") take [mesh]')
             return
         other = next((i for i, obj in enumerate(self.objects) if i not in meshes), None)
