@@ -22,6 +22,7 @@ from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import GlintError, UsageError
 from glint.compiler.files import read_text_file
 from glint.compiler.target.cross import LANGS
+from glint.compiler.target.mesh import MESH_TARGETS
 from glint.compiler.target.shadertoy import TARGETS
 
 if TYPE_CHECKING:
@@ -72,7 +73,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="print, for each slot, whether it is in and why and which variant fills it and why "
         "(the shader goes to -o if given)",
     )
-    _add_target(compose, TARGETS + LANGS)
+    _add_target(compose, TARGETS + LANGS + MESH_TARGETS)
     compose.add_argument(
         "--params-as-uniforms",
         action="store_true",
@@ -156,12 +157,19 @@ def _add_target(parser: argparse.ArgumentParser, choices: tuple[str, ...]) -> No
         if LANGS[0] in choices
         else ""
     )
+    mesh = (
+        "; mesh-webgl2, mesh-desktop: a mesh scene's vertex and fragment shaders (-o BASE "
+        "writes BASE.vert, BASE.frag, BASE.background.frag)"
+        if MESH_TARGETS[0] in choices
+        else ""
+    )
     parser.add_argument(
         "--target",
         choices=choices,
         default="shadertoy",
         help="shadertoy: the Image tab (default); webgl2: ES 3.00; desktop: #version 330"
-        + converted,
+        + converted
+        + mesh,
     )
 
 
@@ -239,6 +247,9 @@ def _version() -> str:
 def cmd_compose(args: argparse.Namespace) -> int:
     import glint
 
+    if args.target in MESH_TARGETS:
+        return _compose_mesh(args)
+
     shader = glint.compose(
         Path(args.scene) if args.scene is not None else None,
         target=args.target,
@@ -260,6 +271,40 @@ def cmd_compose(args: argparse.Namespace) -> int:
         )
     elif not args.explain:
         sys.stdout.write(shader.text)
+    return 0
+
+
+def _compose_mesh(args: argparse.Namespace) -> int:
+    """A mesh scene's programs: several files, so -o names their common stem."""
+    import glint
+
+    if args.split or args.params_as_uniforms or args.budget is not None:
+        used = (
+            "--split"
+            if args.split
+            else "--params-as-uniforms"
+            if args.params_as_uniforms
+            else "--budget"
+        )
+        raise UsageError(f"{used} is not available for --target {args.target}")
+    shader = glint.compose_mesh(
+        Path(args.scene) if args.scene is not None else None,
+        target=args.target,
+        tier=args.tier,
+        variants=_overrides(args.variant),
+    )
+    if args.explain:
+        sys.stdout.write(shader.explain())
+    if not args.output:
+        if args.explain:
+            return 0
+        raise UsageError(
+            f"--target {args.target} writes a vertex and a fragment shader per material: give "
+            "-o BASE (BASE.vert, BASE.frag, BASE.background.frag; BASE.MATERIAL.vert/.frag "
+            "for several materials)"
+        )
+    written = shader.save(args.output)
+    print(f"wrote {', '.join(str(p) for p in written)}: {args.target}", file=sys.stderr)
     return 0
 
 
@@ -352,10 +397,15 @@ def cmd_render(args: argparse.Namespace) -> int:
     import glint
 
     _refuse_converted(args.input, "render")
-    shader: glint.Shader | Path = Path(args.input)
+    shader: glint.Shader | glint.MeshShader | Path = Path(args.input)
     if args.input.endswith(".toml"):
         overrides = _overrides(args.variant)
-        shader = glint.compose(shader, tier=args.tier, variants=overrides, budget=args.budget)
+        from glint.compiler.compose.scene import load_scene
+
+        if load_scene(shader).is_mesh:  # rasterized: the programs llvmpipe runs
+            shader = glint.compose_mesh(shader, tier=args.tier, variants=overrides)
+        else:
+            shader = glint.compose(shader, tier=args.tier, variants=overrides, budget=args.budget)
     width, height = args.size
     image = glint.render(
         shader,

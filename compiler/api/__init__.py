@@ -25,6 +25,7 @@ from glint.compiler.errors import EnvironmentProblem, GlintError, InputError, Us
 from ._catalog import Catalog, Snippet, catalog
 from ._image import Image, render
 from ._lint import lint_shader
+from ._mesh import MeshShader, compose_mesh
 from ._shader import Shader, compose
 
 __all__ = [
@@ -33,11 +34,13 @@ __all__ = [
     "GlintError",
     "Image",
     "InputError",
+    "MeshShader",
     "Shader",
     "Snippet",
     "UsageError",
     "catalog",
     "compose",
+    "compose_mesh",
     "lint_shader",
     "render",
 ]

@@ -11,7 +11,8 @@ from typing import TYPE_CHECKING, Any
 from glint.compiler.errors import UsageError
 from glint.compiler.files import read_text_file
 
-from ._shader import Shader, compose, is_source
+from ._mesh import MeshShader, compose_mesh, draw_mesh_shader
+from ._shader import Shader, compose, is_source, load_scene
 
 if TYPE_CHECKING:
     import numpy as np
@@ -84,7 +85,7 @@ class Image:
 
 
 def render(
-    shader: Shader | str | os.PathLike[str] | Mapping[str, Any] | Scene,
+    shader: Shader | MeshShader | str | os.PathLike[str] | Mapping[str, Any] | Scene,
     *,
     size: tuple[int, int] = (640, 360),
     time: float = 0.0,
@@ -98,7 +99,8 @@ def render(
     `shader` is a `Shader` composed for the shadertoy target, ShaderToy Image-tab code (a str
     holding a line break), the path of such a file, or a scene (the path of a `.toml` file, a
     dict, a Scene) to compose first at its own tier. `size` is (width, height); `time`,
-    `frame` and `mouse` are iTime, iFrame and iMouse.
+    `frame` and `mouse` are iTime, iFrame and iMouse. A `MeshShader` or a mesh scene is drawn
+    by rasterizing its meshes (a mesh scene at its own tier, for mesh-desktop).
 
     Raises InputError when the shader does not compile, does not finish in time or crashes the
     driver, EnvironmentProblem when no OpenGL context can be made. NaN and Inf pixels do not
@@ -110,8 +112,12 @@ def render(
     if len(mouse) != 4:
         raise UsageError(f"mouse: expected four numbers x, y, z, w, got {tuple(mouse)!r}")
     x, y, z, w = (float(v) for v in mouse)
-    source = _source(shader)
-    result = render_full(source, width, height, time, frame, (x, y, z, w), timeout=timeout)
+    meshes = _mesh_shader(shader)
+    if meshes is not None:
+        result = draw_mesh_shader(meshes, (width, height), time, (x, y, z, w), timeout)
+    else:
+        source = _source(shader)
+        result = render_full(source, width, height, time, frame, (x, y, z, w), timeout=timeout)
     return Image(
         pixels=result.image[:, :, :3].copy(),
         stats=image_stats(result.image),  # over RGBA, as `glint render` counts NaN and Inf
@@ -131,6 +137,22 @@ def _size(size: tuple[int, int]) -> tuple[int, int]:
     if not (1 <= width <= MAX_SIZE and 1 <= height <= MAX_SIZE):
         raise UsageError(f"size: width and height must be 1..{MAX_SIZE}, got {width}x{height}")
     return width, height
+
+
+def _mesh_shader(shader: object) -> MeshShader | None:
+    """The mesh shader to draw: `shader` itself, or a mesh scene composed for mesh-desktop."""
+    if isinstance(shader, MeshShader):
+        return shader
+    if is_source(shader) or isinstance(shader, Shader):
+        return None
+    if isinstance(shader, str | os.PathLike) and not os.fspath(shader).endswith(".toml"):
+        return None
+    from glint.compiler.compose.scene import Scene
+
+    if not isinstance(shader, str | os.PathLike | Mapping | Scene):
+        return None
+    scene = load_scene(shader)
+    return compose_mesh(scene) if scene.is_mesh else None
 
 
 def _source(shader: object) -> str:

@@ -79,13 +79,19 @@ def emit(
     version: str,
     where: str = "",
 ) -> str:
-    parts = [header(scene_name, plan, units, target, version, where)]
+    parts = [header(scene_name, plan, units, target, version, where), *unit_blocks(units)]
+    text = "\n".join(parts)
+    return shadertoy.wrap_for(target, text)
+
+
+def unit_blocks(units: list[Unit]) -> list[str]:
+    """Each unit's code behind the marker that maps its lines to its file."""
+    blocks = []
     for unit in units:
         body = unit.body.strip("\n")
         line = unit.line + _leading_blank_lines(unit.body)
-        parts.append(f"{source_marker(unit.origin, line)}\n{body}\n")
-    text = "\n".join(parts)
-    return shadertoy.wrap_for(target, text)
+        blocks.append(f"{source_marker(unit.origin, line)}\n{body}\n")
+    return blocks
 
 
 def _leading_blank_lines(body: str) -> int:

@@ -25,7 +25,7 @@ from glint.compiler.compose.uniform_params import (
     manifest_comment,
 )
 from glint.compiler.compose.units import CONSTANTS, Unit
-from glint.compiler.errors import UsageError
+from glint.compiler.errors import InputError, UsageError
 
 DERIVATIVES = re.compile(r"\b(dFdx|dFdy|fwidth)\s*\(")
 
@@ -49,6 +49,12 @@ def compose_scene(
 ) -> Shader:
     """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements;
     `params_as_uniforms` (webgl2 only) makes the ranged parameters uniforms a page can set."""
+    if scene.is_mesh:
+        raise InputError(
+            f"objects: the scene's objects are meshes, which a {target} fragment shader cannot "
+            "draw: compose it with --target mesh-webgl2 or mesh-desktop (a vertex and a "
+            "fragment shader per material)"
+        )
     catalog = load_catalog()
     code = generate(scene)
     the_plan = plan(scene, catalog, tier, overrides, budget, code.units)

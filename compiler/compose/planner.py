@@ -12,7 +12,7 @@ fails loudly if the generated code reaches a slot the planner did not expect.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog
@@ -49,10 +49,12 @@ def plan(
     overrides: dict[str, str] | None = None,
     budget: float | None = None,
     units: list[Unit] | None = None,
+    models: tuple[str, Mapping[str, str]] | None = None,
 ) -> Plan:
     """The plan of `scene` at `tier`; with `budget` (ns per pixel) the quality slots take the
     most accurate measured variants within it instead of the tier's (see budget.py). The slots
-    in use are those the scene's generated `units` reach (generated here when not given)."""
+    in use are those the scene's generated `units` reach (generated here when not given).
+    `models` (key, {slot: variant}): a mesh material's own models, which replace the rest."""
     if units is None:
         units = generate(scene).units
     tier = tier or scene.quality.tier
@@ -93,6 +95,7 @@ def plan(
     for source, table in (
         ("quality.variants", scene.quality.variants),
         ("--variant", overrides or {}),
+        models or ("", {}),
     ):
         for slot, variant in table.items():
             _check_override(catalog, source, slot, variant)

@@ -16,6 +16,7 @@ from pydantic import BaseModel, Field, PrivateAttr, ValidationError, model_valid
 
 from glint.compiler.compose.shapes import (
     SHAPE_TAGS,
+    Mesh,
     NonNegative,
     Number,
     Positive,
@@ -61,6 +62,9 @@ class LookAtCamera(Strict):
         return self
 
 
+ShadingMode = Literal["gouraud", "phong", "flat"]
+
+
 class Material(Strict):
     albedo: Color
     """Base colour, linear RGB."""
@@ -80,6 +84,13 @@ class Material(Strict):
     channel: the interior's scattering colour. Absent: the material is opaque."""
     subsurface_g: Annotated[float, Field(strict=True, ge=-1.0, le=1.0)] = 0.5
     """Asymmetry g of the interior's phase function: > 0 scatters forward (glows when back-lit)."""
+    shading: ShadingMode | None = None
+    """Mesh scenes only: where the light is computed on this material's meshes (gouraud: per
+    vertex; phong: per pixel from interpolated normals; flat: per pixel from the face's
+    normal). Absent: [mesh] shading."""
+    models: dict[str, str] = {}
+    """Mesh scenes only: lighting models of this material's program, slot = variant, e.g.
+    { diffuse = "toon", specular = "phong" }; they replace the tier's and [quality.variants]."""
 
     @model_validator(mode="after")
     def _pattern(self) -> Material:
@@ -284,6 +295,13 @@ class Post(Strict):
     """The transfer function to the display."""
 
 
+class MeshSettings(Strict):
+    """How mesh scenes are shaded (a scene whose objects are meshes)."""
+
+    shading: ShadingMode = "phong"
+    """The shading mode of materials that do not set their own."""
+
+
 class Quality(Strict):
     tier: Literal["fast", "balanced", "reference"] = "balanced"
     """The quality tier: which variant fills each slot."""
@@ -312,7 +330,18 @@ class Scene(Strict):
     background: Background = Background()
     effects: Effects = Effects()
     post: Post = Post()
+    mesh: MeshSettings = MeshSettings()
+    """Mesh scenes only: the default shading mode."""
     quality: Quality = Quality()
+
+    @property
+    def is_mesh(self) -> bool:
+        """Whether the scene is made of triangle meshes (rasterized, not raymarched)."""
+        return any(isinstance(obj, Mesh) for obj in self.objects)
+
+    def shading_of(self, material: str) -> str:
+        """The shading mode of a material of a mesh scene."""
+        return self.materials[material].shading or self.mesh.shading
 
     @property
     def exact_distance(self) -> bool:
@@ -342,6 +371,7 @@ class Scene(Strict):
                         f"objects[{i}]: part {j + 1} ({part.shape}) has a material; the parts "
                         "of a group take the group's: set material on the top-level object"
                     )
+        self._check_meshes()
         if self.geometry is not None:
             named += self.geometry.material_keys()
         known = ", ".join(sorted(self.materials)) or "none defined"
@@ -349,6 +379,41 @@ class Scene(Strict):
             if name not in self.materials:
                 raise ValueError(f"{key}: '{name}' is not a material (materials: {known})")
         return self
+
+    def _check_meshes(self) -> None:
+        """A scene is all meshes (rasterized) or has none (raymarched): each needs its own
+        program and camera model. Mesh-only keys stay out of raymarched scenes."""
+        meshes = [i for i, obj in enumerate(self.objects) if isinstance(obj, Mesh)]
+        for i, obj in enumerate(self.objects):
+            for j, part in enumerate(parts(obj)[1:]):
+                if isinstance(part, Mesh):
+                    raise ValueError(
+                        f"objects[{i}]: part {j + 1} is a mesh; a mesh is a top-level object, "
+                        "not a part of a group"
+                    )
+        if not meshes:
+            # by value, not by the keys given: a dumped scene validates again as it was
+            for name, material in self.materials.items():
+                for key in ("shading", "models"):
+                    if getattr(material, key):
+                        raise ValueError(
+                            f'materials.{name}.{key}: only mesh scenes (shape = "mesh") '
+                            "have it; a raymarched scene shades every material in one program"
+                        )
+            if self.mesh != MeshSettings():
+                raise ValueError('mesh: only mesh scenes (shape = "mesh") take [mesh]')
+            return
+        other = next((i for i, obj in enumerate(self.objects) if i not in meshes), None)
+        if other is not None:
+            raise ValueError(
+                f"objects[{other}].shape: {self.objects[other].shape!r} in a scene with meshes "
+                f"(objects[{meshes[0]}]); a scene is either all meshes (rasterized) or has "
+                "none (raymarched): make every object a mesh, or none"
+            )
+        if self.geometry is not None:
+            raise ValueError("geometry: a mesh scene has no distance field; remove [geometry]")
+        if self.medium is not None:
+            raise ValueError("medium: not available in mesh scenes yet; remove [medium]")
 
 
 def default_scene_path() -> Path:
@@ -385,13 +450,23 @@ def scene_from_dict(data: Mapping[str, Any], filename: str = "<scene>") -> Scene
         more = len(exc.errors()) - 1
         suffix = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
         raise InputError(f"{filename}: {describe_error(first)}{suffix}") from None
-    if scene.geometry is not None:
-        base = Path(filename).parent if not filename.startswith("<") else Path.cwd()
-        try:
+    base = Path(filename).parent if not filename.startswith("<") else Path.cwd()
+    try:
+        if scene.geometry is not None:
             scene.geometry.read(base)
-        except InputError as exc:
-            raise InputError(f"{filename}: {exc}") from None
+        _read_meshes(scene, base)
+    except InputError as exc:
+        raise InputError(f"{filename}: {exc}") from None
     return scene
+
+
+def _read_meshes(scene: Scene, base: Path) -> None:
+    """Read the mesh files of the scene's objects, relative to the scene's folder `base`."""
+    from glint.compiler.compose.mesh_geometry import read_mesh_file
+
+    for i, obj in enumerate(scene.objects):
+        if isinstance(obj, Mesh) and obj.file is not None:
+            obj.keep(read_mesh_file(base / obj.file, f"objects[{i}].file"))
 
 
 def describe_error(error: Any) -> str:
@@ -428,7 +503,7 @@ _TAGS: dict[str, type[BaseModel]] = {
     "bounce": BounceLight,
     "environment": EnvironmentLight,
 }
-_SECTIONS = (Geometry, Environment, Medium, Background, Effects, Post, Quality)
+_SECTIONS = (Geometry, Environment, Medium, Background, Effects, Post, MeshSettings, Quality)
 _MATERIALS = "materials"  # marks the table whose keys are material names
 
 

@@ -51,7 +51,7 @@ class LightCode:
 def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     """The scene's own code. `normal_in_uniform_flow` computes the normal outside the hit
     branch, for normal variants built on screen-space derivatives."""
-    lights = _lights(scene)
+    lights = light_code(scene)
     materials = scene.used_materials()
     objects = [object_code(obj, i) for i, obj in enumerate(scene.objects)]
     units = [_map_unit(scene, objects)]
@@ -70,14 +70,14 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
         albedo_by_user = ALBEDO in user.provides
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials, objects))
-    units.append(_surface_unit(scene, materials, albedo_by_user))
+    units.append(surface_unit(scene, materials, albedo_by_user))
     # Translucency is lit by directional lights only; without one it has nothing to show.
     translucent = bool(lights.directional) and any(
         scene.materials[m].subsurface is not None for m in materials
     )
     if translucent:
         units.append(_subsurface_unit(scene, materials))
-    units.append(_shade_unit(scene, lights, translucent))
+    units.append(shade_unit(scene, lights, translucent))
     path = None  # how far the light from the hit point travels through the medium
     if scene.medium is not None:
         path = "t"
@@ -96,7 +96,7 @@ def _scaled(color: list[float], intensity: float) -> str:
     return _vec3(color) if intensity == 1.0 else f"({_vec3(color)} * {glsl_float(intensity)})"
 
 
-def _lights(scene: Scene) -> LightCode:
+def light_code(scene: Scene) -> LightCode:
     """Constants for each light and the line of `shade` that adds it."""
     defines: dict[str, str] = {}
     calls: list[str] = []
@@ -292,7 +292,7 @@ def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
     return lines + [f"    {line}" for line in bodies[0]], ["materialAt"]
 
 
-def _surface_unit(scene: Scene, materials: list[str], albedo_by_user: bool) -> Unit:
+def surface_unit(scene: Scene, materials: list[str], albedo_by_user: bool) -> Unit:
     """`surfaceAt`; `albedo_by_user`: the user's file defines sceneAlbedo."""
     requires = ["Surface", "makeSurface"]
     bodies = []
@@ -373,7 +373,7 @@ def _translucency(ident: str) -> str:
     )
 
 
-def _shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
+def shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
     lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
     requires = ["Surface", *lights.requires]
     why = list(lights.why)

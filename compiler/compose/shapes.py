@@ -11,13 +11,14 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, model_validator
 
 Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
 Positive = Annotated[float, Field(strict=True, gt=0.0, allow_inf_nan=False)]
 NonNegative = Annotated[float, Field(strict=True, ge=0.0, allow_inf_nan=False)]
 Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
 PositiveVec3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
+MAX_SUBDIVISIONS = 7  # a level-7 uv_sphere has 1024 x 512 quads: finer is no longer useful
 
 
 class Strict(BaseModel):
@@ -179,6 +180,47 @@ class Repeat(Placed):
         return self
 
 
+class Mesh(Placed):
+    """A triangle mesh, drawn by rasterizing (a mesh scene: compose with --target mesh-webgl2 or
+    mesh-desktop). From a file, or a built-in shape of unit size (a sphere of radius 1, a cube
+    of half extent 1, a torus of ring radius 1 and tube radius 0.25) that `scale` sizes."""
+
+    shape: Literal["mesh"]
+    file: str | None = None
+    """An OBJ (or another format trimesh reads), relative to the scene file. Its vertex
+    normals are used when it has them, else trimesh's smooth vertex normals."""
+    builtin: Literal["uv_sphere", "icosphere", "torus", "cube"] | None = None
+    """A tessellated shape with exact (analytic) normals."""
+    subdivisions: Annotated[int, Field(strict=True, ge=0, le=MAX_SUBDIVISIONS)] = 3
+    """Refinement of a built-in shape, 0 to 7: each level halves the edges (uv_sphere:
+    8·2^n segments around, 4·2^n bands; icosphere: trimesh's subdivisions of an icosahedron;
+    torus: 8·2^n around the ring, 4·2^n around the tube; cube: 2^n × 2^n quads a face)."""
+
+    @model_validator(mode="after")
+    def _one_source(self) -> Mesh:
+        if (self.file is None) == (self.builtin is None):
+            raise ValueError(
+                "give file (a mesh file) or builtin (uv_sphere, icosphere, torus, cube), one "
+                "of them"
+            )
+        if self.file is not None and "subdivisions" in self.model_fields_set:
+            raise ValueError("subdivisions refines a builtin shape, not a mesh file")
+        return self
+
+    # The file's triangles (mesh_geometry.MeshArrays), read when the scene is loaded.
+    _arrays: Any = PrivateAttr(None)
+
+    @property
+    def arrays(self) -> Any:
+        if self._arrays is None:
+            raise ValueError(f"mesh file {self.file!r} was not read (load the scene with glint)")
+        return self._arrays
+
+    def keep(self, arrays: Any) -> None:
+        """Keep the triangles read from the file."""
+        self._arrays = arrays
+
+
 Shape = Annotated[
     Sphere
     | Box
@@ -190,7 +232,8 @@ Shape = Annotated[
     | Cone
     | Ellipsoid
     | Group
-    | Repeat,
+    | Repeat
+    | Mesh,
     Field(discriminator="shape"),
 ]
 Group.model_rebuild()
@@ -200,7 +243,7 @@ PRIMITIVES = (Sphere, Box, RoundedBox, Plane, Torus, Capsule, Cylinder, Cone, El
 # Shape name -> model, for error messages that must drop pydantic's union tags.
 SHAPE_TAGS: dict[str, type[BaseModel]] = {
     name: model
-    for model in (*PRIMITIVES, Group, Repeat)
+    for model in (*PRIMITIVES, Group, Repeat, Mesh)
     for name in model.model_fields["shape"].annotation.__args__  # type: ignore[union-attr]
 }
 

@@ -18,7 +18,7 @@ from glint.compiler.target.glslang import wrap_for_target
 # Debian packages that provide headless EGL with Mesa's software rasteriser.
 EGL_PACKAGES = "libegl1 libegl-mesa0 libgl1-mesa-dri"
 # A triangle that covers the viewport; no vertex buffer needed.
-_VERTEX_BODY = (
+VERTEX_BODY = (
     "void main() {\n"
     "    vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);\n"
     "    gl_Position = vec4(p, 0.0, 1.0);\n"
@@ -89,7 +89,7 @@ def build_program(ctx: Any, source: str) -> tuple[Any, str]:
 
     version = glsl_version(ctx)
     fragment, _ = wrap(source, version)
-    vertex = f"#version {version}\n" + _VERTEX_BODY
+    vertex = f"#version {version}\n" + VERTEX_BODY
     try:
         return ctx.program(vertex_shader=vertex, fragment_shader=fragment), version
     except moderngl.Error as exc:

@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from glint.compiler.render import gl
+from glint.compiler.render import gl, mesh_gl
 
 
 def run_job(job: dict[str, Any]) -> dict[str, Any]:
@@ -33,11 +33,18 @@ def run_job(job: dict[str, Any]) -> dict[str, Any]:
     except gl.ContextFailure as exc:
         return {"status": "environment", "message": str(exc)}
     renderer = f"{ctx.info.get('GL_RENDERER', '?')} (OpenGL {ctx.info.get('GL_VERSION', '?')})"
-    try:
-        program, version = gl.build_program(ctx, job["source"])
-    except gl.CompileFailure as exc:
-        return {"status": "compile", "message": str(exc), "version": gl.glsl_version(ctx)}
-    image, seconds = gl.draw(ctx, program, frame, int(job.get("repeats", 1)))
+    if job.get("kind") == "mesh":  # a mesh scene: background, then meshes (mesh_gl.py)
+        try:
+            image, seconds = mesh_gl.draw_meshes(ctx, job, frame)
+        except gl.CompileFailure as exc:
+            return {"status": "compile", "message": str(exc)}
+        version = mesh_gl.glsl_version(job)
+    else:
+        try:
+            program, version = gl.build_program(ctx, job["source"])
+        except gl.CompileFailure as exc:
+            return {"status": "compile", "message": str(exc), "version": gl.glsl_version(ctx)}
+        image, seconds = gl.draw(ctx, program, frame, int(job.get("repeats", 1)))
     np.save(os.path.join(job["output_dir"], "image.npy"), image)
     return {"status": "ok", "renderer": renderer, "glsl_version": version, "seconds": seconds}
 

@@ -96,10 +96,13 @@ def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedPro
         raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
 
 
-def _compile(wrapped: str, workdir: str, extra_args: list[str]) -> subprocess.CompletedProcess[str]:
-    """Compile `wrapped` from a .frag file in `workdir` (the suffix tells glslang the stage)."""
+def _compile(
+    wrapped: str, workdir: str, extra_args: list[str], stage: str = "frag"
+) -> subprocess.CompletedProcess[str]:
+    """Compile `wrapped` from a .frag (.vert) file in `workdir` (the suffix tells glslang the
+    stage)."""
     validator = find_validator()
-    shader = os.path.join(workdir, "shader.frag")
+    shader = os.path.join(workdir, f"shader.{stage}")
     with open(shader, "w", encoding="utf-8") as handle:
         handle.write(wrapped)
     return _run([validator, *extra_args, shader])
@@ -202,6 +205,15 @@ def validate(source: str, filename: str = "<input>", target: str = "shadertoy") 
         result = _compile(wrapped, workdir, [])
     output = result.stdout + result.stderr
     return _diagnostics(output, result.returncode, source, filename, prelude_lines)
+
+
+def validate_stage(source: str, filename: str, stage: str) -> list[Diagnostic]:
+    """Compile a complete shader (it opens with #version) as `stage` ("vert" or "frag") and
+    return its diagnostics, at the snippet file and line its markers name."""
+    with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
+        result = _compile(source, workdir, [], stage)
+    output = result.stdout + result.stderr
+    return _diagnostics(output, result.returncode, source, filename, 0)
 
 
 def _diagnostics(
