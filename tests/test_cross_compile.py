@@ -75,6 +75,37 @@ def test_every_snippet_keeps_its_function_names_and_arities(hlsl_of: dict[str, s
     assert checked >= len(hlsl_of) - 2
 
 
+def hlsl_writable(hlsl: str) -> set[tuple[str, int]]:
+    """(function, parameter index) of each `out` or `inout` parameter SPIRV-Cross declares."""
+    found = set()
+    for name, params in re.findall(
+        r"^[A-Za-z_][\w<>]*\s+([A-Za-z_]\w*)\(([^)]*)\)\s*$", hlsl, re.M
+    ):
+        for index, param in enumerate(params.split(",")):
+            if {"out", "inout"} & set(param.split()):
+                found.add((name, index))
+    return found
+
+
+def test_an_in_parameter_stays_in(hlsl_of: dict[str, str]) -> None:
+    """SPIRV-Cross writes a parameter the function assigns to as `inout`, which in HLSL writes
+    back to the caller's variable: a snippet must not assign to its `in` parameters."""
+    checked = 0
+    for snippet_id, hlsl in hlsl_of.items():
+        snippet = CATALOG.get(snippet_id)
+        functions = analyze(snippet.body, snippet.relpath, provided=UNIFORM_NAMES).functions
+        for function in functions:
+            if function.name not in snippet.provides:
+                continue
+            for index, param in enumerate(function.params):
+                if (function.name, index) in hlsl_writable(hlsl):
+                    assert {"out", "inout"} & set(param.qualifier.split()), (
+                        f"{snippet_id}: {function.name} assigns to its in parameter {param.name}"
+                    )
+                checked += 1
+    assert checked > 150
+
+
 def test_ggx_reads_like_its_glsl(hlsl_of: dict[str, str]) -> None:
     hlsl = hlsl_of["D.ggx"]
     assert re.search(r"^float distribution\(\w* ?float NoH, float a\)$", hlsl, re.M)

@@ -16,9 +16,9 @@ formula = 'D(\mathbf{h}) = \frac{1}{\pi \alpha^2 (\mathbf{n} \cdot \mathbf{h})^4
 // D(h) = exp(−tan²θ / a²) / (π a² cos⁴θ), tan²θ = (1 − NoH²) / NoH². Takes a = roughness².
 // The exponent is written (NoH² − 1) / (a² NoH²) with (1 − NoH)(1 + NoH), exact near NoH = 1.
 float distribution(float NoH, float a) {
-    NoH = clamp(NoH, 0.0, 1.0);
-    float NoH2 = NoH * NoH;
+    float h = clamp(NoH, 0.0, 1.0);
+    float NoH2 = h * h;
     float a2NoH2 = max(a * a * NoH2, MIN_BECKMANN_DENOM);
-    float e = exp(-(1.0 - NoH) * (1.0 + NoH) / a2NoH2);
+    float e = exp(-(1.0 - h) * (1.0 + h) / a2NoH2);
     return e / max(PI * a2NoH2 * NoH2, MIN_BECKMANN_DENOM);
 }

@@ -17,8 +17,8 @@ formula = 'D(\mathbf{h}) = \frac{\alpha^2}{\pi \left( (\mathbf{n} \cdot \mathbf{
 // In float32 the denominator loses digits by cancellation next to NoH = 1 at low roughness
 // (about 3% at a = 0.002); D.ggx_mediump avoids it.
 float distribution(float NoH, float a) {
-    NoH = clamp(NoH, 0.0, 1.0);
+    float h = clamp(NoH, 0.0, 1.0);
     float a2 = a * a;
-    float d = max(NoH * NoH * (a2 - 1.0) + 1.0, MIN_GGX_DENOM);
+    float d = max(h * h * (a2 - 1.0) + 1.0, MIN_GGX_DENOM);
     return a2 / (PI * d * d);
 }

@@ -21,9 +21,9 @@ formula = 'D(\mathbf{h}) = \min\left( \frac{1}{\pi} \left( \frac{\alpha}{(1 - \m
 // 1 − NoH is exact there (Sterbenz). The result is clamped to MEDIUMP_FLT_MAX so that it
 // cannot overflow to infinity in mediump; below a ≈ 0.0022 the clamp cuts the peak.
 float distribution(float NoH, float a) {
-    NoH = clamp(NoH, 0.0, 1.0);
-    float oneMinusNoHSquared = (1.0 - NoH) * (1.0 + NoH);
-    float aNoH = a * NoH;
+    float h = clamp(NoH, 0.0, 1.0);
+    float oneMinusNoHSquared = (1.0 - h) * (1.0 + h);
+    float aNoH = a * h;
     float k = a / max(oneMinusNoHSquared + aNoH * aNoH, MIN_GGX_MEDIUMP_DENOM);
     return min(k * k * (1.0 / PI), MEDIUMP_FLT_MAX);
 }

@@ -19,6 +19,6 @@ float blinnPhongExponent(float a) {
 // cⁿ for a cosine c clamped to [0, 1]. pow(0, 0) is undefined in GLSL (llvmpipe gives 0), and
 // at n = 0 (roughness 1) the lobe is uniform, so 0⁰ is taken as 1.
 float cosinePower(float c, float n) {
-    c = clamp(c, 0.0, 1.0);
-    return c > 0.0 ? pow(c, n) : (n > 0.0 ? 0.0 : 1.0);
+    float x = clamp(c, 0.0, 1.0);
+    return x > 0.0 ? pow(x, n) : (n > 0.0 ? 0.0 : 1.0);
 }

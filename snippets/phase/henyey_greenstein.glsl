@@ -24,8 +24,8 @@ formula = 'p(\theta) = \frac{1 - g^2}{4\pi \left( 1 + g^2 - 2 g \cos\theta \righ
 // 1 + g² − 2g cosθ at the peak (g → ±1, cosθ = sign g), where it is tiny and everything rides
 // on it; 1 − cosθ is exact in float for cosθ in [0.5, 1] (Sterbenz).
 float phase(float cosTheta, float g) {
-    g = clamp(g, -PHASE_MAX_G, PHASE_MAX_G);
-    float ag = abs(g);
-    float d = (1.0 - ag) * (1.0 - ag) + 2.0 * ag * (1.0 - sign(g) * cosTheta);
+    float gc = clamp(g, -PHASE_MAX_G, PHASE_MAX_G);
+    float ag = abs(gc);
+    float d = (1.0 - ag) * (1.0 - ag) + 2.0 * ag * (1.0 - sign(gc) * cosTheta);
     return (0.25 / PI) * (1.0 - ag) * (1.0 + ag) / (d * sqrt(d));
 }
