@@ -25,6 +25,7 @@ from glint.compiler.bench.scenes import (
     truth_environment_glsl,
     truth_shadow_glsl,
 )
+from glint.compiler.errors import InputError
 from glint.compiler.render import render
 from glint.compiler.target.glslang import validate
 from glint.compiler.verify.references.environment import dfg_split_sum
@@ -135,6 +136,10 @@ def test_example_scenes_start_with_the_template_scene() -> None:
     names = example_scenes()
     assert names[0] == "default"
     assert {"metal_spheres", "outdoor", "lamp", "pool"} <= set(names)
+    # the bench measures ShaderToy tiers: the mesh example is left out, and asked for, refused
+    assert "eight_models" not in names
+    with pytest.raises(InputError, match="eight_models: a mesh scene"):
+        measure_scenes(["eight_models"])
 
 
 def test_renderer_label_says_what_the_times_are() -> None:

@@ -256,9 +256,14 @@ def ground_truth_source(strata: int = TRUTH_STRATA) -> str:
 
 
 def example_scenes() -> list[str]:
-    """Names of the example scenes, the default (the template's scene) first."""
+    """Names of the raymarched example scenes, the default (the template's scene) first.
+
+    Mesh scenes (eight_models) are left out: the bench measures the ShaderToy tiers of one
+    Image-tab shader against its reference tier, and a mesh scene is rasterized programs, one
+    per material, whose `models` replace the tier's choices."""
     folder = resources.files("glint.snippets") / "scenes"
     names = sorted(Path(str(p)).stem for p in folder.iterdir() if p.name.endswith(".toml"))
+    names = [name for name in names if not load_scene(_scene_path(name)).is_mesh]
     return sorted(names, key=lambda name: name != TEMPLATE_SCENE)
 
 
@@ -351,6 +356,11 @@ def _measure_scene(
     progress: Callable[[str], None] | None,
 ) -> tuple[list[TierMeasure], str]:
     scene = load_scene(_scene_path(name))
+    if scene.is_mesh:
+        raise InputError(
+            f"{name}: a mesh scene; the bench measures the tiers of raymarched (ShaderToy) "
+            "scenes, so leave it out of --scenes"
+        )
     # The reference tier is always drawn: it is the yardstick of the others.
     measured = list(dict.fromkeys([REFERENCE_TIER, *tiers]))
     shaders = [
