@@ -18,6 +18,7 @@ import glint
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.cli import build_parser
 from glint.compiler.errors import UsageError
+from glint.compiler.render.images import png_pixels
 from glint.compiler.site import build_docs
 from glint.compiler.site.catalog_pages import VariantDoc, variant_page
 from glint.compiler.site.cli_reference import commands
@@ -310,18 +311,30 @@ def test_scene_reference_has_every_key_and_example_scene() -> None:
     for scene in example_scenes():
         assert f"### {scene.stem}\n" in page
         assert scene.read_text(encoding="utf-8").strip().splitlines()[-1] in page
+    # the mesh example: its TOML and why it has no live canvas (its picture needs a render)
+    mesh = page.split("### eight_models\n", 1)[1].split("### ", 1)[0]
+    assert 'builtin = "icosphere"' in mesh and "glint-live" not in mesh
+    assert "no live canvas, which runs ShaderToy shaders" in mesh
 
 
 def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Path) -> None:
     from glint.compiler.catalog.tiers import TIERS
     from glint.compiler.site.scene_pages import example_scenes, scene_pages
 
-    built = scene_pages(ROOT / "site" / "docs", tmp_path, pictured=("default",))
+    built = scene_pages(ROOT / "site" / "docs", tmp_path, pictured=("default", "eight_models"))
     pictures = sorted(p.name for p in built.files if p.suffix == ".png")
-    assert pictures == sorted(f"default-{t}.png" for t in TIERS)
-    # every scene runs live as written (scene reference) and at every tier (tiers page's tabs)
+    # the mesh example: one picture, at its own tier (its materials choose their models)
+    assert pictures == sorted([*(f"default-{t}.png" for t in TIERS), "eight_models.png"])
+    mesh = png_pixels(built.files[PurePosixPath("img/scenes/eight_models.png")])
+    assert mesh.std() > 0.05  # the spheres are drawn, not only the sky
+    assert (
+        "![the eight_models scene](img/scenes/eight_models.png)"
+        in built.pages[PurePosixPath("scenes.md")]
+    )
+    # every raymarched scene runs live as written (scene reference) and at every tier (tiers
+    # page's tabs); the mesh scene does not (it is no ShaderToy shader)
     live = sorted(p.name for p in built.files if p.suffix == ".glsl")
-    stems = [scene.stem for scene in example_scenes()]
+    stems = [scene.stem for scene in example_scenes() if scene.stem != "eight_models"]
     expected = [f"scene-{s}.glsl" for s in stems] + [
         f"scene-{s}-{t}.glsl" for s in stems for t in TIERS
     ]

@@ -24,6 +24,7 @@ from pathlib import Path, PurePosixPath
 import glint
 from glint.compiler.catalog.loader import snippets_root
 from glint.compiler.catalog.slots import SLOTS
+from glint.compiler.compose.scene import load_scene
 from glint.compiler.files import write_atomic
 
 log = logging.getLogger(__name__)
@@ -135,17 +136,26 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
     return picture
 
 
-def render_cached(shader: glint.Shader, cache_dir: Path) -> tuple[bytes, bool]:
-    """glint's render of `shader` at the pictures' size and time as PNG, from `cache_dir`
-    where it holds it, and whether it had to be rendered. Raises glint.InputError when the
-    shader does not render."""
-    cached = cache_dir / f"{cache_key(shader.text)}.png"
+def render_cached(shader: glint.Shader | glint.MeshShader, cache_dir: Path) -> tuple[bytes, bool]:
+    """glint's render of `shader` (a ShaderToy shader, or a mesh scene's programs) at the
+    pictures' size and time as PNG, from `cache_dir` where it holds it, and whether it had to
+    be rendered. Raises glint.InputError when the shader does not render."""
+    cached = cache_dir / f"{cache_key(_shader_text(shader))}.png"
     if cached.is_file():
         return cached.read_bytes(), False
     png = glint.render(shader, size=SIZE, time=TIME).to_png()
     cache_dir.mkdir(parents=True, exist_ok=True)
     write_atomic(cached, png)
     return png, True
+
+
+def _shader_text(shader: glint.Shader | glint.MeshShader) -> str:
+    """All the code a picture is drawn from: the one shader, or every stage of a mesh scene."""
+    if isinstance(shader, glint.MeshShader):
+        stages = [text for p in shader.programs for text in (p.vertex.text, p.fragment.text)]
+        # the meshes (shapes, subdivisions, placement) are buffers and uniforms, not code
+        return "\n".join([shader.scene.model_dump_json(), *stages, shader.background])
+    return shader.text
 
 
 def cache_key(text: str) -> str:
@@ -171,7 +181,9 @@ def _scene_slots() -> tuple[tuple[str | None, str | None, frozenset[str]], ...]:
     process): the default scene first, then the example scenes by name."""
     scenes: list[tuple[str | None, str | None]] = [(None, None)]
     for file in sorted((snippets_root() / "scenes").glob("*.toml")):
-        if file.stem != "default":
+        # A variant's picture is a ShaderToy shader composed with the variant: mesh scenes
+        # (rasterized, each material with its own models) are not candidates.
+        if file.stem != "default" and not load_scene(file).is_mesh:
             scenes.append((os.fspath(file), f"snippets/scenes/{file.name}"))
     result = []
     for path, name in scenes:

@@ -59,8 +59,17 @@ def scene_pages(
     pixels: dict[tuple[str, str], np.ndarray] = {}
     live: dict[str, PurePosixPath] = {}
     live_tiers: dict[tuple[str, str], PurePosixPath] = {}
+    meshes: dict[str, PurePosixPath] = {}
     for scene in example_scenes():
         pictures = cache_dir is not None and (pictured is None or scene.stem in pictured)
+        if is_mesh_example(scene):
+            # rasterized programs, not a ShaderToy shader: one picture at the scene's own
+            # tier, no live canvas, not on the tiers page (the bench leaves it out too)
+            png = _render_mesh(scene, cache_dir) if pictures and cache_dir else None
+            if png is not None:
+                meshes[scene.stem] = SCENE_PICTURES / f"{scene.stem}.png"
+                out.files[meshes[scene.stem]] = png
+            continue
         # the scene as written (its own tier, live on the scene reference), then at every
         # tier (pictured, and live in the tiers page's tabs): each composed once
         for tier in (None, *TIERS):
@@ -80,9 +89,23 @@ def scene_pages(
                 out.files[picture] = png
                 renders[(scene.stem, tier)] = picture
                 pixels[(scene.stem, tier)] = png_pixels(png)
-    out.pages[SCENES_PAGE] = scene_reference_page(renders, live)
+    out.pages[SCENES_PAGE] = scene_reference_page(renders, live, meshes)
     out.pages[TIERS_PAGE] = tiers_page(renders, pixels, load_bench(source).tiers, live_tiers)
     return out
+
+
+def is_mesh_example(scene: Path) -> bool:
+    """Whether an example scene is a mesh scene (rasterized: `glint render` draws it, but it
+    has no ShaderToy shader, no live canvas and no row in the tier bench)."""
+    return load_scene(scene).is_mesh
+
+
+def _render_mesh(scene: Path, cache_dir: Path) -> bytes | None:
+    try:
+        return render_cached(glint.compose_mesh(scene), cache_dir)[0]
+    except glint.InputError as error:
+        log.warning("site: mesh scene %s does not render: %s", scene.name, error)
+        return None
 
 
 def _compose(scene: Path, tier: str | None) -> glint.Shader | None:
@@ -108,10 +131,13 @@ def _render(shader: glint.Shader, scene: Path, tier: str, cache_dir: Path) -> by
 def scene_reference_page(
     renders: Mapping[tuple[str, str], PurePosixPath],
     live: Mapping[str, PurePosixPath] | None = None,
+    meshes: Mapping[str, PurePosixPath] | None = None,
 ) -> str:
     """Every key of a scene file, then every example scene with its picture, its live canvas
-    (the shader in `live`, by scene stem) and its TOML."""
+    (the shader in `live`, by scene stem) and its TOML. A mesh scene's picture is in `meshes`
+    (by stem), at its own tier, and it has no live canvas."""
     live = live or {}
+    meshes = meshes or {}
     schema = Scene.model_json_schema()
     defs: dict[str, Any] = schema.get("$defs", {})
     parts = [
@@ -133,6 +159,9 @@ def scene_reference_page(
     parts.append("## Example scenes\n\n")
     for scene in example_scenes():
         parts.append(f"### {scene.stem}\n\n")
+        if is_mesh_example(scene):
+            parts.append(_mesh_example(scene, meshes.get(scene.stem)))
+            continue
         picture = renders.get((scene.stem, "balanced"))
         if picture is not None:
             parts.append(
@@ -148,6 +177,24 @@ def scene_reference_page(
         if geometry is not None:  # the user's own GLSL the scene names
             parts.append(f"`{geometry.file}`, the scene's own distance function:\n\n")
             parts.append(fenced(geometry.source, "glsl") + "\n")
+    return "".join(parts)
+
+
+def _mesh_example(scene: Path, picture: PurePosixPath | None) -> str:
+    """A mesh scene on the scene reference: its picture, why it has no live canvas, its TOML."""
+    parts = []
+    if picture is not None:
+        parts.append(
+            f"![the {scene.stem} scene](img/scenes/{picture.name})\n\n"
+            f"`glint render snippets/scenes/{scene.name}` ({SIZE[0]}x{SIZE[1]} pixels, "
+            f"time {TIME:g}).\n\n"
+        )
+    parts.append(
+        "A mesh scene, rasterized from a vertex and a fragment shader per material "
+        "(`glint compose --target mesh-webgl2`): no live canvas, which runs ShaderToy "
+        "shaders.\n\n"
+    )
+    parts.append(fenced(scene.read_text(encoding="utf-8"), "toml") + "\n")
     return "".join(parts)
 
 
@@ -253,7 +300,15 @@ def tiers_page(
         "reference tier; the frame time is from `glint bench` (see [Benchmark](bench/bench.md) "
         "for its machine).\n\n",
     ]
+    meshes = [scene.stem for scene in example_scenes() if is_mesh_example(scene)]
+    if meshes:
+        parts.append(
+            f"Mesh scenes ({', '.join(meshes)}) are not here: their materials choose their own "
+            "models, and the bench measures the tiers of ShaderToy shaders.\n\n"
+        )
     for scene in example_scenes():
+        if is_mesh_example(scene):
+            continue
         parts.append(f"### {scene.stem}\n\n")
         cells = []
         truth = pixels.get((scene.stem, "reference"))
