@@ -1,25 +1,29 @@
 """Every example scene in snippets/scenes composes, validates for every target and renders
-without NaN or Inf."""
+without NaN or Inf: the raymarched ones for the ShaderToy targets, the mesh ones (their vertex
+and fragment programs) for the mesh targets."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 import pytest
+from mesh_scenes import MESH_EXAMPLES, example_params
 
+import glint
 from glint.compiler.compose.pipeline import compose
 from glint.compiler.compose.scene import default_scene_path
 from glint.compiler.render import image_stats, render
 from glint.compiler.target.glslang import validate
 
 SCENES = sorted(default_scene_path().parent.glob("*.toml"))
+NOT_SHADERTOY = "no ShaderToy shader; test_mesh_example_* compose it for the mesh targets"
 
 
 def test_there_are_examples_beyond_the_default() -> None:
     assert len(SCENES) >= 2
 
 
-@pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("scene", example_params(NOT_SHADERTOY))
 @pytest.mark.parametrize("target", ["shadertoy", "webgl2", "desktop"])
 def test_example_validates(scene: Path, target: str) -> None:
     shader = compose(scene, target)
@@ -27,13 +31,33 @@ def test_example_validates(scene: Path, target: str) -> None:
 
 
 @pytest.mark.render
-@pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("scene", example_params(NOT_SHADERTOY))
 @pytest.mark.parametrize("tier", ["fast", "balanced", "reference"])
 def test_example_renders_finite(scene: Path, tier: str) -> None:
     image = render(compose(scene, tier=tier).text, 160, 90, time=2.0)
     stats = image_stats(image)
     assert stats["nan"] == 0 and stats["inf"] == 0
     assert max(stats["std"]) > 0.02  # something is in the picture
+
+
+def test_there_is_a_mesh_example() -> None:
+    assert [path.stem for path in MESH_EXAMPLES] == ["eight_models"]
+
+
+@pytest.mark.parametrize("scene", MESH_EXAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("target", ["mesh-webgl2", "mesh-desktop"])
+def test_mesh_example_validates(scene: Path, target: str) -> None:
+    shader = glint.compose_mesh(scene, target=target)
+    assert [str(d) for d in shader.validate()] == []
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("scene", MESH_EXAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("tier", ["fast", "balanced", "reference"])
+def test_mesh_example_renders_finite(scene: Path, tier: str) -> None:
+    image = glint.render(glint.compose_mesh(scene, tier=tier), size=(160, 90), time=2.0)
+    assert image.finite
+    assert max(image.stats["std"]) > 0.02  # something is in the picture
 
 
 # The scene that exercises each slot; the camera, background and post slots follow the scene.

@@ -9,13 +9,14 @@ from collections.abc import Callable, Collection
 from pathlib import Path
 
 import pytest
+from mesh_scenes import example_params
 
 from glint.compiler.cli import main
 from glint.compiler.compose.pipeline import compose
 from glint.compiler.compose.uniform_params import constant_uses, read_manifest
 from glint.compiler.target.glslang import validate
 
-SCENES = sorted(Path("snippets/scenes").glob("*.toml"))
+SCENES = example_params("its programs take their parameters as #defines only (no webgl2 target)")
 needs_glslang = pytest.mark.skipif(
     shutil.which("glslangValidator") is None, reason="glslangValidator is not installed"
 )
@@ -64,7 +65,7 @@ def test_only_the_parameter_block_differs_from_the_plain_webgl2_shader() -> None
     assert "glint-params" not in plain
 
 
-@pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("scene", SCENES)
 @needs_glslang
 def test_every_example_scene_validates_with_uniforms(scene: Path) -> None:
     shader = compose(scene, target="webgl2", params_as_uniforms=True)

@@ -10,7 +10,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from mesh_scenes import MESH_EXAMPLES, example_params
 
+from glint import compose_mesh
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_table
@@ -21,7 +23,8 @@ from glint.compiler.compose.planner import plan
 from glint.compiler.compose.scene import Scene, load_scene
 
 CATALOG = load_catalog()
-EXAMPLES = sorted(Path("snippets/scenes").glob("*.toml"))
+# The raymarched examples here; the mesh ones (a plan per material) below.
+EXAMPLES = example_params("a plan per material: test_mesh_programs_emit_their_planned_slots")
 
 
 def emitted_slots(scene: Scene, tier: str = "balanced", **overrides: str) -> set[str]:
@@ -60,10 +63,23 @@ LAMP = {"type": "point", "position": [1.0, 1.0, 1.0]}
 
 
 @pytest.mark.parametrize("tier", TIERS)
-@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", EXAMPLES)
 def test_planned_slots_are_the_emitted_slots_for_every_example(path: Path, tier: str) -> None:
     scene = load_scene(path)
     assert planned_slots(scene, tier) == emitted_slots(scene, tier)
+
+
+@pytest.mark.parametrize("tier", TIERS)
+@pytest.mark.parametrize("path", MESH_EXAMPLES, ids=lambda p: p.stem)
+def test_mesh_programs_emit_their_planned_slots(path: Path, tier: str) -> None:
+    """Each material's program holds, over its two stages, the slots its plan takes, with the
+    variants its `models` name."""
+    for program in compose_mesh(path, tier=tier).programs:
+        units = program.vertex.units + program.fragment.units
+        emitted = {u.id for u in units if u.slot in SLOTS and not SLOTS[u.slot].many}
+        assert emitted == set(program.plan.choices.values()), program.material
+        models = program.scene.materials[program.material].models
+        assert {f"{slot}.{variant}" for slot, variant in models.items()} <= emitted
 
 
 # Features that bring slots in or keep them out, each with its alternatives.

@@ -9,7 +9,9 @@ from pathlib import Path
 
 import pytest
 from lark import Token, Tree
+from mesh_scenes import MESH_EXAMPLES, RAYMARCHED_EXAMPLES
 
+from glint import compose_mesh
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.compose.emitter import emit
 from glint.compiler.compose.pipeline import compose, compose_scene
@@ -22,7 +24,8 @@ from glint.compiler.target.glslang import validate
 from glint.compiler.target.sourcemap import build_line_map
 
 ROOT = Path(__file__).parent.parent
-SCENES = sorted(default_scene_path().parent.glob("*.toml"))
+SCENES = RAYMARCHED_EXAMPLES  # the ShaderToy shaders; the mesh examples are tested below
+assert SCENES[0] == default_scene_path()
 TIERS = ["fast", "balanced", "reference"]
 # Overrides that bring in snippets defining several functions (a helper and the entry).
 MULTI_FUNCTION = [
@@ -61,8 +64,8 @@ reflection = false
 # -- an independent check: what the output defines, and what reaches what -----------------------
 
 
-def unreachable_items(text: str) -> set[str]:
-    """Top-level names of a shader that mainImage does not reach, with references taken as
+def unreachable_items(text: str, root: str = "mainImage") -> set[str]:
+    """Top-level names of a shader that `root` does not reach, with references taken as
     every identifier an item's tokens name (fields excepted), which over-approximates use."""
     tree, pre = parse_source(text, "out.glsl")
     refs: dict[str, set[str]] = {}
@@ -79,7 +82,7 @@ def unreachable_items(text: str) -> set[str]:
                 re.findall(r"(?<!\.)\b[A-Za-z_]\w*", macro.body)
             )
     seen: set[str] = set()
-    todo = ["mainImage"]
+    todo = [root]
     while todo:
         name = todo.pop()
         if name not in seen:
@@ -127,8 +130,11 @@ def mismatched_lines(text: str) -> list[str]:
 # -- every example scene, every tier ------------------------------------------------------------
 
 
-CASES = [(scene, tier, {}) for scene in SCENES for tier in TIERS]
+CASES = [(scene, tier, {}) for scene in RAYMARCHED_EXAMPLES for tier in TIERS]
 CASES += [(SCENES[0], "balanced", overrides) for overrides in MULTI_FUNCTION]
+# An interface declaration of a mesh stage (three.js' attributes and uniforms, the varyings)
+# is there for the program's other stage or the host, whether main reads it or not.
+INTERFACE = re.compile(r"^(?:in|out|uniform) \w+ (\w+);", re.M)
 
 
 @pytest.mark.parametrize(
@@ -142,6 +148,18 @@ def test_composed_shader_holds_only_reachable_items(
     text = compose(scene, tier=tier, overrides=overrides).text
     assert unreachable_items(text) == set()
     assert mismatched_lines(text) == []
+
+
+@pytest.mark.parametrize("scene", MESH_EXAMPLES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("tier", TIERS)
+def test_mesh_stages_hold_only_what_main_reaches(scene: Path, tier: str) -> None:
+    """Each stage of each material's program is pruned from its own main (the mesh examples;
+    their shaders are validated in test_example_scenes)."""
+    for program in compose_mesh(scene, target="mesh-webgl2", tier=tier).programs:
+        for stage in (program.vertex, program.fragment):
+            interface = set(INTERFACE.findall(stage.text))
+            assert unreachable_items(stage.text, "main") - interface == set(), program.material
+            assert mismatched_lines(stage.text) == []
 
 
 @needs_glslang
