@@ -57,3 +57,16 @@ def test_scene_pictures_are_their_scenes(name: str) -> None:
     fresh = render(compose(scene).text, 640, 360, time=1.0)
     hint = f"regenerate with: glint render {scene} -o {picture_path} --time 1.0"
     assert flip_error(load_png(str(picture_path)), fresh) <= 0.001, hint
+
+
+@pytest.mark.render
+def test_mesh_scene_picture_is_its_scene() -> None:
+    """The Mesh scenes section's picture: the eight-model example as glint draws it now."""
+    import glint
+
+    picture_path = EXAMPLE.parent / "eight_models.png"
+    assert "site/docs/examples/eight_models.png" in README
+    scene = default_scene_path().parent / "eight_models.toml"
+    fresh = glint.render(glint.compose_mesh(scene), size=(640, 360), time=1.0).pixels
+    hint = f"regenerate with: glint render {scene} -o {picture_path} --size 640x360 --time 1.0"
+    assert flip_error(load_png(str(picture_path)), fresh) <= 0.001, hint
