@@ -402,10 +402,11 @@ def cmd_render(args: argparse.Namespace) -> int:
         overrides = _overrides(args.variant)
         from glint.compiler.compose.scene import load_scene
 
-        if load_scene(shader).is_mesh:  # rasterized: the programs llvmpipe runs
-            shader = glint.compose_mesh(shader, tier=args.tier, variants=overrides)
+        scene = load_scene(shader)  # read once: a mesh scene's files are read with it
+        if scene.is_mesh:  # rasterized: the programs llvmpipe runs
+            shader = glint.compose_mesh(scene, tier=args.tier, variants=overrides)
         else:
-            shader = glint.compose(shader, tier=args.tier, variants=overrides, budget=args.budget)
+            shader = glint.compose(scene, tier=args.tier, variants=overrides, budget=args.budget)
     width, height = args.size
     image = glint.render(
         shader,

@@ -55,16 +55,25 @@ IMAGE_TAB = "Paste into the Image tab of https://www.shadertoy.com/new as it is.
 
 
 def header(
-    scene_name: str, plan: Plan, units: list[Unit], target: str, version: str, where: str = ""
+    scene_name: str,
+    plan: Plan,
+    units: list[Unit],
+    target: str,
+    version: str,
+    where: str = "",
+    what: str = "",
 ) -> str:
-    """The comment that opens a shader; `where` says where a ShaderToy one is pasted."""
+    """The comment that opens a shader; `where` says where a ShaderToy one is pasted, `what`
+    (if given) what the shader is."""
     snippets = [u for u in units if u.origin != GENERATED]
     width = max((len(u.id) for u in snippets), default=0)
+    if not what:
+        what = (
+            where or IMAGE_TAB if target == "shadertoy" else f"A complete {target} fragment shader."
+        )
     lines = [
         f"// glint {version} - scene '{scene_name}', tier {plan.tier}, target {target}",
-        f"// {where or IMAGE_TAB}"
-        if target == "shadertoy"
-        else f"// A complete {target} fragment shader.",
+        f"// {what}",
         "// Snippets, in order:",
     ]
     lines += [f"//   {u.id.ljust(width)}  {u.summary}" for u in snippets]

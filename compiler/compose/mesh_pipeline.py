@@ -15,16 +15,14 @@ from pathlib import Path
 
 from glint.compiler.catalog.loader import Catalog, load_catalog
 from glint.compiler.compose.bake import bake
-from glint.compiler.compose.emitter import Shader, parameter_unit, unit_blocks
+from glint.compiler.compose.emitter import Shader, header, unit_blocks
 from glint.compiler.compose.explain import explain
 from glint.compiler.compose.mesh_code import background_unit, ignored, lit_scene, mesh_code
-from glint.compiler.compose.pipeline import emit_shader, glint_version
+from glint.compiler.compose.pipeline import assemble, emit_shader, glint_version
 from glint.compiler.compose.planner import Plan, plan
-from glint.compiler.compose.reachability import prune_unreachable
-from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.scene_slots import SlotUse
-from glint.compiler.compose.units import GENERATED, Unit
+from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError, UsageError
 from glint.compiler.target.glslang import Diagnostic, validate, validate_stage
 from glint.compiler.target.mesh import (
@@ -147,11 +145,12 @@ def _program(
     shading = lit.shading_of(material)
     stages = []
     for stage, units in (("vert", code.vertex), ("frag", code.fragment)):
-        units = resolve(units, catalog, the_plan.choices, constants=code.defines)
-        units = [parameter_unit(units, catalog, the_plan, code.defines), *units]
-        units = prune_unreachable(units, MAIN)
-        what = f"The {STAGE_NAMES[stage]} shader of material '{material}' ({shading} shading)"
-        head = _header(scene.name, the_plan, units, target, version, what)
+        units = assemble(units, catalog, the_plan, code.defines, MAIN)
+        what = (
+            f"The {STAGE_NAMES[stage]} shader of material '{material}' ({shading} shading); "
+            "three.js RawShaderMaterial names, normalMatrix in world space."
+        )
+        head = header(scene.name, the_plan, units, target, version, what=what)
         text = version_lines(target) + "\n".join([head, *unit_blocks(units)])
         stages.append(MeshStage(text, units))
     return MeshProgram(material, shading, the_plan, lit, stages[0], stages[1])
@@ -170,21 +169,5 @@ def _background(
     units = [background_unit(scene)]
     the_plan = plan(lit, catalog, tier, overrides, None, units)
     the_plan = replace(the_plan, params=bake(lit, the_plan))
-    units = resolve(units, catalog, the_plan.choices, constants=defines)
-    units = [parameter_unit(units, catalog, the_plan, defines), *units]
-    units = prune_unreachable(units)
+    units = assemble(units, catalog, the_plan, defines)
     return emit_shader(scene.name, the_plan, units, background_target(target), catalog=catalog)
-
-
-def _header(
-    scene_name: str, the_plan: Plan, units: list[Unit], target: str, version: str, what: str
-) -> str:
-    snippets = [u for u in units if u.origin != GENERATED]
-    width = max((len(u.id) for u in snippets), default=0)
-    lines = [
-        f"// glint {version} - scene '{scene_name}', tier {the_plan.tier}, target {target}",
-        f"// {what}; three.js RawShaderMaterial names, normalMatrix in world space.",
-        "// Snippets, in order:",
-    ]
-    lines += [f"//   {u.id.ljust(width)}  {u.summary}" for u in snippets]
-    return "\n".join(lines) + "\n"

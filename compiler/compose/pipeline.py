@@ -12,7 +12,7 @@ from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
 from glint.compiler.compose.bake import bake
 from glint.compiler.compose.emitter import Shader, emit, parameter_unit
 from glint.compiler.compose.planner import Plan, plan
-from glint.compiler.compose.reachability import prune_unreachable
+from glint.compiler.compose.reachability import ROOTS, prune_unreachable
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.compose.scene_code import generate
@@ -62,14 +62,26 @@ def compose_scene(
     if uses_derivatives(catalog.get(the_plan.choices["normal"])):
         # the same calls, written so that the normal is taken in uniform control flow
         code = generate(scene, normal_in_uniform_flow=True)
+    units = assemble(code.units, catalog, the_plan, code.defines)
+    return emit_shader(scene.name, the_plan, units, target, params_as_uniforms, catalog)
+
+
+def assemble(
+    units: list[Unit],
+    catalog: Catalog,
+    the_plan: Plan,
+    defines: dict[str, str],
+    roots: frozenset[str] = ROOTS,
+) -> list[Unit]:
+    """The generated units with the snippets they reach, the #define block first, less what
+    `roots` never reach."""
     # The #define block gives the light names snippets may require (SUN_DIR) and the parameters
     # of the snippets the resolver took; it goes first.
-    units = resolve(code.units, catalog, the_plan.choices, constants=code.defines)
-    units = [parameter_unit(units, catalog, the_plan, code.defines), *units]
-    # Units come whole; drop what mainImage never reaches, parameters included, now that the
-    # block is written.
-    units = prune_unreachable(units)
-    return emit_shader(scene.name, the_plan, units, target, params_as_uniforms, catalog)
+    units = resolve(units, catalog, the_plan.choices, constants=defines)
+    units = [parameter_unit(units, catalog, the_plan, defines), *units]
+    # Units come whole; drop what is never reached, parameters included, now that the block
+    # is written.
+    return prune_unreachable(units, roots)
 
 
 def emit_shader(

@@ -10,15 +10,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
-from glint.compiler.render import gl
-from glint.compiler.render.runner import (
-    DEFAULT_DATE,
-    DEFAULT_TIMEOUT_S,
-    RenderResult,
-    _outcome,
-    _run_worker,
-)
+from glint.compiler.errors import UsageError
+from glint.compiler.render.runner import DEFAULT_DATE, DEFAULT_TIMEOUT_S, RenderResult, run_job
 
 
 @dataclass(frozen=True)
@@ -88,22 +81,4 @@ def render_meshes(
             "date": list(DEFAULT_DATE),
             "output_dir": output_dir,
         }
-        stderr = _run_worker(job, timeout)
-        outcome = _outcome(output_dir, stderr)
-        status, message = outcome.get("status"), str(outcome.get("message", ""))
-        if status == "environment":
-            raise EnvironmentProblem(
-                f"{message}; install {gl.EGL_PACKAGES} (Debian) or run `make setup`"
-            )
-        if status == "compile":
-            raise InputError(f"the OpenGL driver rejected the {message}")
-        if status != "ok":
-            raise InputError(f"rendering failed: {message}")
-        image = np.load(os.path.join(output_dir, "image.npy"))
-    return RenderResult(
-        image=image,
-        renderer=str(outcome["renderer"]),
-        glsl_version=str(outcome["glsl_version"]),
-        draw_seconds=float(outcome["seconds"][0]),  # type: ignore[index]
-        draw_times=[float(t) for t in outcome["seconds"]],  # type: ignore[union-attr]
-    )
+        return run_job(job, timeout, lambda message, _: f"the OpenGL driver rejected the {message}")

@@ -15,7 +15,7 @@ import signal
 import subprocess
 import sys
 import tempfile
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -160,21 +160,33 @@ def render_full(
             "channels": _save_channels(channels, output_dir),
             "repeats": max(1, repeats),
         }
-        stderr = _run_worker(job, timeout)
-        outcome = _outcome(output_dir, stderr)
-        status, message = outcome.get("status"), str(outcome.get("message", ""))
-        if status == "environment":
-            raise EnvironmentProblem(
-                f"{message}; install {gl.EGL_PACKAGES} (Debian) or run `make setup`"
-            )
-        if status == "compile":
+
+        def rejected(message: str, outcome: dict[str, object]) -> str:
             log = driver_log(message, source, str(outcome.get("version", "300 es")))
-            raise InputError(f"the OpenGL driver rejected the shader:\n{log}")
-        if status != "ok":
-            raise InputError(f"rendering failed: {message}")
-        image = np.load(os.path.join(output_dir, "image.npy"))
+            return f"the OpenGL driver rejected the shader:\n{log}"
+
+        return run_job(job, timeout, rejected)
+
+
+def run_job(
+    job: dict[str, object], timeout: float, rejected: Callable[[str, dict[str, object]], str]
+) -> RenderResult:
+    """Run a render job in the worker and read back its image, or raise the error its outcome
+    says; `rejected(message, outcome)` words a compile error. The job's output_dir must exist
+    until this returns."""
+    stderr = _run_worker(job, timeout)
+    outcome = _outcome(str(job["output_dir"]), stderr)
+    status, message = outcome.get("status"), str(outcome.get("message", ""))
+    if status == "environment":
+        raise EnvironmentProblem(
+            f"{message}; install {gl.EGL_PACKAGES} (Debian) or run `make setup`"
+        )
+    if status == "compile":
+        raise InputError(rejected(message, outcome))
+    if status != "ok":
+        raise InputError(f"rendering failed: {message}")
     return RenderResult(
-        image=image,
+        image=np.load(os.path.join(str(job["output_dir"]), "image.npy")),
         renderer=str(outcome["renderer"]),
         glsl_version=str(outcome["glsl_version"]),
         draw_seconds=float(outcome["seconds"][0]),  # type: ignore[index]
