@@ -1,14 +1,37 @@
 """Reading the files a user names, and writing output files so that nothing is ever
-half-written; both fail with one message that says what to do."""
+half-written; both fail with one message that says what to do.
+
+Every result glint writes to a path a user named (`compose -o`, `render -o`, `lint --fix`, the
+mesh and `--split` files, bench and site outputs) goes through `write_atomic`, which writes only
+what it owns: a regular file. It refuses a device, a FIFO, a socket, a folder and a read-only
+file; it writes through a symlink to its target; it keeps a file's mode, owner, group and hard
+links; and the null device is written to, never replaced.
+"""
 
 from __future__ import annotations
 
+import contextlib
 import os
+import re
 import stat
 import tempfile
 from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, InputError
+
+# The writer's temporary files: hidden, named so that nobody mistakes them for work of their
+# own, and skipped by `glint lint` when it searches a folder (a SIGKILL can leave one behind).
+TEMP_PREFIX = ".glint-tmp-"
+# What glint's writer called them before (mkstemp's eight characters, the output's suffix).
+_OLD_TEMP = re.compile(r"\.glint-[a-z0-9_]{8}(\.[^.]*)?")
+
+_KINDS = (
+    (stat.S_ISDIR, "a folder", "name a file inside it"),
+    (stat.S_ISCHR, "a character device", "choose a regular file (or - for standard output)"),
+    (stat.S_ISBLK, "a block device", "choose a regular file (or - for standard output)"),
+    (stat.S_ISFIFO, "a FIFO (named pipe)", "choose a regular file (or - for standard output)"),
+    (stat.S_ISSOCK, "a socket", "choose a regular file (or - for standard output)"),
+)
 
 
 def read_text_file(path: str | Path) -> str:
@@ -25,31 +48,170 @@ def read_text_file(path: str | Path) -> str:
         raise InputError(f"{path}: cannot read: {exc.strerror}") from None
 
 
-def write_atomic(path: str | Path, data: bytes) -> None:
-    """Write `data` to `path` through a temporary file in the same folder and a rename: a reader
-    sees the old file or the new one, and a failure leaves no partial file behind."""
-    path = Path(path)
-    temp_path: str | None = None
+def is_temporary(name: str) -> bool:
+    """Whether a file name is one of the writer's temporary files (or an older glint's)."""
+    return name.startswith(TEMP_PREFIX) or _OLD_TEMP.fullmatch(name) is not None
+
+
+def is_null_device(path: str | os.PathLike[str]) -> bool:
+    """Whether `path` is (or links to) the null device, which outputs may be thrown into."""
+    real = os.path.realpath(path)
     try:
-        fd, temp_path = tempfile.mkstemp(prefix=".glint-", suffix=path.suffix, dir=path.parent)
+        return real == os.devnull and stat.S_ISCHR(os.stat(real).st_mode)
+    except OSError:
+        return False
+
+
+def write_atomic(path: str | os.PathLike[str], data: bytes) -> None:
+    """Write `data` to the regular file `path`, whole: a reader sees the old content or the new,
+    and a failure leaves the old file as it was and no temporary file behind (save one: a file
+    rewritten in place that fails half-way, whose new content then stays in the temporary file
+    that the message names).
+
+    The content goes first to a temporary file beside the target, synced. A file that glint
+    may simply replace (ours, one name) is then renamed over, with its mode; a file with other
+    hard links, or another owner or group, is rewritten in place from that temporary copy, so
+    its inode, owner, group, mode and links stay. A symlink is written through (it stays a link);
+    the null device is opened and written to. Anything else that is not a regular file, and a
+    read-only file, is refused with an EnvironmentProblem that says what to do.
+    """
+    shown = os.fspath(path)
+    real = Path(os.path.realpath(path))
+    before = _existing(shown, real)
+    if before is not None and is_null_device(real):
+        _write_null(shown, data)
+        return
+    if before is not None:
+        _refuse_unless_writable_file(shown, real, before)
+    in_place = before is not None and (
+        before.st_nlink > 1 or before.st_uid != os.geteuid() or before.st_gid != os.getegid()
+    )
+    temp: str | None = None
+    try:
+        fd, temp = tempfile.mkstemp(prefix=TEMP_PREFIX, dir=real.parent)
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
-        # mkstemp makes the file private (0600): a file replaced keeps its mode, a new one gets
-        # the mode any new file gets
-        os.chmod(temp_path, _mode_for(path))
-        os.replace(temp_path, path)
+            handle.flush()
+            os.fsync(handle.fileno())
+        if in_place:
+            assert before is not None
+            try:
+                _overwrite(shown, real, before, data)
+            except _Incomplete as exc:
+                kept, temp = temp, None  # it alone holds the new content now: it stays
+                raise EnvironmentProblem(
+                    f"cannot write {shown}: {exc}; it is incomplete now, and its new content "
+                    f"is in {kept}: copy that over it once the problem is solved"
+                ) from exc.__cause__
+        else:
+            # mkstemp makes the file private (0600): a file replaced keeps its mode, a new
+            # one gets the mode any new file gets
+            os.chmod(temp, stat.S_IMODE(before.st_mode) if before else 0o666 & ~_umask())
+            os.replace(temp, real)
+            temp = None
+            _sync_folder(real.parent)
     except OSError as exc:
-        if temp_path is not None and os.path.exists(temp_path):
-            os.unlink(temp_path)
         reason = exc.strerror or str(exc)
-        raise EnvironmentProblem(f"cannot write {path}: {reason}; choose a writable path") from exc
+        raise EnvironmentProblem(f"cannot write {shown}: {reason}; choose a writable path") from exc
+    finally:
+        if temp is not None:
+            _remove(temp)
 
 
-def _mode_for(path: Path) -> int:
+def _existing(shown: str, real: Path) -> os.stat_result | None:
+    """What `real` is now (not following a link), None when nothing is there."""
     try:
-        return stat.S_IMODE(path.stat().st_mode)
+        found = os.lstat(real)
     except FileNotFoundError:
-        return 0o666 & ~_umask()
+        return None
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        raise EnvironmentProblem(f"cannot write {shown}: {reason}; choose a writable path") from exc
+    if stat.S_ISLNK(found.st_mode):  # realpath stops at a loop of links
+        raise EnvironmentProblem(
+            f"cannot write {shown}: its symlinks form a loop; fix the links or choose another path"
+        )
+    return found
+
+
+def _refuse_unless_writable_file(shown: str, real: Path, found: os.stat_result) -> None:
+    for test, kind, advice in _KINDS:
+        if test(found.st_mode):
+            raise EnvironmentProblem(f"cannot write {shown}: it is {kind}, not a file; {advice}")
+    if not stat.S_ISREG(found.st_mode):
+        raise EnvironmentProblem(
+            f"cannot write {shown}: it is not a regular file; choose a regular file"
+        )
+    mode = stat.S_IMODE(found.st_mode)
+    # root may write anything, so access() says yes to root: the mode's write bits say whether
+    # the owner meant the file to be written
+    writable = mode & 0o222 and os.access(real, os.W_OK, effective_ids=_effective_ids())
+    if not writable:
+        raise EnvironmentProblem(
+            f"cannot write {shown}: it is read-only (mode {mode:04o}); make it writable "
+            f"(chmod u+w) or write elsewhere"
+        )
+
+
+class _Incomplete(Exception):
+    """Rewriting a file in place failed after it was truncated."""
+
+
+def _overwrite(shown: str, real: Path, before: os.stat_result, data: bytes) -> None:
+    """Rewrite `real` in place with `data` (whose full copy is already in a temporary file):
+    the same inode, so its links, owner, group and mode stay."""
+    fd = os.open(real, os.O_WRONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+    try:
+        now = os.fstat(fd)
+        same = (now.st_dev, now.st_ino) == (before.st_dev, before.st_ino)
+        if not same or not stat.S_ISREG(now.st_mode):
+            raise EnvironmentProblem(
+                f"cannot write {shown}: it changed while glint was writing it; run again"
+            )
+        try:
+            os.ftruncate(fd, 0)
+            view = memoryview(data)
+            while view:
+                view = view[os.write(fd, view) :]
+            os.fsync(fd)
+        except OSError as exc:
+            raise _Incomplete(exc.strerror or str(exc)) from exc
+        except BaseException as exc:  # interrupted half-way: say where the content is
+            raise _Incomplete("interrupted") from exc
+    finally:
+        os.close(fd)
+
+
+def _write_null(shown: str, data: bytes) -> None:
+    try:
+        with open(os.devnull, "wb") as handle:  # opened, never renamed over
+            handle.write(data)
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        raise EnvironmentProblem(f"cannot write {shown}: {reason}") from exc
+
+
+def _remove(temp: str) -> None:
+    with contextlib.suppress(FileNotFoundError):
+        os.unlink(temp)
+
+
+def _sync_folder(folder: Path) -> None:
+    """Make the rename durable; a folder that cannot be opened or synced is not an error."""
+    try:
+        fd = os.open(folder, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def _effective_ids() -> bool:
+    return os.access in os.supports_effective_ids
 
 
 def _umask() -> int:

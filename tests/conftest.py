@@ -3,6 +3,8 @@ are built lazily: a run that selects no browser test builds and launches nothing
 
 from __future__ import annotations
 
+import os
+import stat
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
@@ -43,3 +45,19 @@ def browser_page(browser: Browser) -> Iterator[tuple[Page, PageLog]]:
         yield page, watch(page)
     finally:
         context.close()
+
+
+@pytest.fixture
+def null_device() -> Iterator[str]:
+    """os.devnull, for a test that writes to it. Should the code under test rename a file over
+    the device (the bug such a test looks for), the device is made again (as root: the whole
+    machine needs it) and the test fails."""
+    yield os.devnull
+    if stat.S_ISCHR(os.stat(os.devnull).st_mode):
+        return
+    if os.geteuid() == 0:
+        spare = os.path.join(os.path.dirname(os.devnull), ".null-glint-test")
+        os.mknod(spare, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+        os.chmod(spare, 0o666)  # mknod's mode went through the umask
+        os.replace(spare, os.devnull)
+    pytest.fail(f"{os.devnull} was replaced by a regular file (made again: {os.geteuid() == 0})")
