@@ -66,7 +66,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     compose = sub.add_parser("compose", help="compose a scene into one shader")
     compose.add_argument("scene", nargs="?", help="scene TOML file (default: the embedded scene)")
-    compose.add_argument("-o", "--output", help="write the shader here instead of stdout")
+    compose.add_argument(
+        "-o", "--output", help="write the shader to this file (default, or -: standard output)"
+    )
     compose.add_argument(
         "--explain",
         action="store_true",
@@ -96,7 +98,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     render = sub.add_parser("render", help="render a shader or a scene to a PNG")
     render.add_argument("input", help="shader file, or scene .toml to compose first")
-    render.add_argument("-o", "--output", required=True, help="PNG file to write")
+    render.add_argument(
+        "-o", "--output", required=True, help="PNG file to write (-: standard output)"
+    )
     render.add_argument("--size", default="640x360", type=_size, help="WxH (default 640x360)")
     render.add_argument("--time", type=float, default=0.0, help="iTime in seconds")
     render.add_argument("--frame", type=int, default=0, help="iFrame")
@@ -258,18 +262,19 @@ def cmd_compose(args: argparse.Namespace) -> int:
         budget=args.budget,
         params_as_uniforms=args.params_as_uniforms,
     )
-    if args.explain:
-        sys.stdout.write(shader.explain())
+    to_stdout = args.output == "-"
+    if args.explain:  # beside a shader on standard output, on stderr
+        (sys.stderr if to_stdout else sys.stdout).write(shader.explain())
     if args.split:
         return _write_split(shader, args.output)
-    if args.output:
+    if args.output and not to_stdout:
         shader.save(args.output)
         print(
             f"wrote {args.output}: {args.target} shader, {len(shader.snippets)} snippets, "
             f"tier {shader.tier}",
             file=sys.stderr,
         )
-    elif not args.explain:
+    elif to_stdout or not args.explain:
         sys.stdout.write(shader.text)
     return 0
 
@@ -295,6 +300,8 @@ def _compose_mesh(args: argparse.Namespace) -> int:
     )
     if args.explain:
         sys.stdout.write(shader.explain())
+    if args.output == "-":
+        raise UsageError(f"--target {args.target} writes several files: give -o BASE, not -")
     if not args.output:
         if args.explain:
             return 0
@@ -310,9 +317,9 @@ def _compose_mesh(args: argparse.Namespace) -> int:
 
 def _write_split(shader: Shader, output: str | None) -> int:
     """`--split common`: the Image tab to OUTPUT, the Common tab beside it."""
-    from glint.compiler.files import write_atomic
+    from glint.compiler.files import is_null_device, write_atomic
 
-    if not output:
+    if not output or output == "-":
         raise UsageError(
             "--split common writes two files: give -o IMAGE.glsl (the Common tab goes beside "
             "it as IMAGE.common.glsl)"
@@ -320,6 +327,8 @@ def _write_split(shader: Shader, output: str | None) -> int:
     tabs = shader.split_common()
     image = Path(output)
     common = image.with_name(image.stem + ".common" + (image.suffix or ".glsl"))
+    if is_null_device(image):  # both tabs thrown away, nothing written beside the device
+        common = image
     write_atomic(common, tabs.common.encode("utf-8"))
     write_atomic(image, tabs.image.encode("utf-8"))
     print(f"wrote {common} (Common tab) and {image} (Image tab)", file=sys.stderr)
@@ -416,7 +425,13 @@ def cmd_render(args: argparse.Namespace) -> int:
         mouse=args.mouse,
         timeout=args.timeout,
     )
-    image.save(args.output)
+    to_stdout = args.output == "-"
+    if to_stdout:  # the PNG alone on stdout: the report goes to stderr
+        sys.stdout.flush()
+        sys.stdout.buffer.write(image.to_png())
+        sys.stdout.buffer.flush()
+    else:
+        image.save(args.output)
     stats = image.stats
     report = {
         "input": args.input,
@@ -428,14 +443,18 @@ def cmd_render(args: argparse.Namespace) -> int:
         "frame": args.frame,
         **stats,
     }
+    out = sys.stderr if to_stdout else sys.stdout
     if args.json:
-        print(json.dumps(report, indent=2))
+        print(json.dumps(report, indent=2), file=out)
     else:
-        print(f"wrote {args.output} ({width}x{height}, iTime {args.time}) with {image.renderer}")
+        where = "standard output" if to_stdout else args.output
+        size = f"{width}x{height}, iTime {args.time}"
+        print(f"wrote {where} ({size}) with {image.renderer}", file=out)
         print(
             f"  NaN pixels: {stats['nan']}, Inf pixels: {stats['inf']}, "
             f"range [{_num(stats['finite_min'])}, {_num(stats['finite_max'])}], "
-            f"mean RGB {', '.join(_num(v) for v in stats['mean'])}"
+            f"mean RGB {', '.join(_num(v) for v in stats['mean'])}",
+            file=out,
         )
     return 1 if stats["nan"] or stats["inf"] else 0
 

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import os
+import stat
 import subprocess
 import sys
 from pathlib import Path
@@ -176,3 +178,95 @@ def test_a_reader_that_stops_early_is_not_an_error() -> None:
     error = proc.stderr.read().decode()
     assert proc.wait(timeout=60) == 0, error
     assert "internal error" not in error and "Traceback" not in error
+
+
+# -o writes a regular file or standard output; anything else it refuses, and never replaces.
+
+
+def test_compose_to_stdout_with_a_dash(tmp_path: Path) -> None:
+    result = run("compose", "-o", "-", "--explain", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == compose().text  # the explanation went to stderr
+    assert "wrote" not in result.stderr and result.stderr.strip()
+    assert list(tmp_path.iterdir()) == []  # no file named "-"
+
+
+def test_compose_into_the_null_device(null_device: str) -> None:
+    result = run("compose", "-o", null_device)
+    assert result.returncode == 0, result.stderr
+    assert Path(null_device).is_char_device()
+
+
+def test_split_into_a_link_to_the_null_device_writes_nothing_beside_it(
+    tmp_path: Path, null_device: str
+) -> None:
+    (tmp_path / "out.glsl").symlink_to(null_device)
+    result = run("compose", "--split", "common", "-o", str(tmp_path / "out.glsl"))
+    assert result.returncode == 0, result.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.glsl"]  # no out.common.glsl
+    assert Path(null_device).is_char_device()
+
+
+def test_split_to_stdout_is_a_usage_error() -> None:
+    result = run("compose", "--split", "common", "-o", "-")
+    assert result.returncode == 2
+    assert_one_clear_line(result)
+
+
+@pytest.mark.parametrize(
+    ("kind", "says"),
+    [("fifo", "it is a FIFO"), ("folder", "it is a folder"), ("read-only", "it is read-only")],
+)
+def test_compose_refuses_what_is_not_a_writable_file(tmp_path: Path, kind: str, says: str) -> None:
+    out = tmp_path / "out.glsl"
+    if kind == "fifo":
+        os.mkfifo(out)  # opening it to write would hang until a reader came
+    elif kind == "folder":
+        out.mkdir()
+    else:
+        out.write_text("mine\n")
+        out.chmod(0o444)
+    result = run("compose", "-o", str(out))  # run() gives up after a timeout rather than hang
+    assert result.returncode == 2
+    assert_one_clear_line(result)
+    assert f"glint: cannot write {out}: {says}" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert [p.name for p in tmp_path.iterdir()] == ["out.glsl"]
+    if kind == "fifo":
+        assert stat.S_ISFIFO(out.lstat().st_mode)
+    elif kind == "read-only":
+        assert out.read_text() == "mine\n"
+
+
+@pytest.mark.render
+def test_render_png_to_stdout(tmp_path: Path) -> None:
+    shader = tmp_path / "red.glsl"
+    shader.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0, 0.0, 0.0, 1.0); }\n")
+    result = subprocess.run(
+        [*GLINT, "render", str(shader), "-o", "-", "--size", "8x8", "--json"],
+        capture_output=True, cwd=tmp_path, timeout=120,
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith(b"\x89PNG\r\n\x1a\n")
+    assert json.loads(result.stderr)["nan"] == 0  # the report beside the PNG, on stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["red.glsl"]
+
+
+@pytest.mark.render
+def test_render_into_the_null_device(tmp_path: Path, null_device: str) -> None:
+    shader = tmp_path / "red.glsl"
+    shader.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0, 0.0, 0.0, 1.0); }\n")
+    result = run("render", str(shader), "-o", null_device, "--size", "8x8")
+    assert result.returncode == 0, result.stderr
+    assert Path(null_device).is_char_device()
+
+
+def test_mesh_programs_into_a_link_to_the_null_device_write_nothing_beside_it(
+    tmp_path: Path, null_device: str
+) -> None:
+    (tmp_path / "out").symlink_to(null_device)
+    scene = "snippets/scenes/eight_models.toml"
+    result = run("compose", scene, "--target", "mesh-webgl2", "-o", str(tmp_path / "out"))
+    assert result.returncode == 0, result.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no out.frag, out.vert
+    assert Path(null_device).is_char_device()

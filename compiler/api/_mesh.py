@@ -53,13 +53,16 @@ class MeshShader:
 
     def save(self, base: str | os.PathLike[str]) -> list[Path]:
         """Write every shader (atomically) beside BASE; returns the paths written."""
-        from glint.compiler.files import write_atomic
+        from glint.compiler.files import is_null_device, write_atomic
 
+        # into the null device: every program thrown away, nothing written beside the device
+        thrown = is_null_device(base)
         written = []
         for path, text in self.files(base).items():
-            write_atomic(path, text.encode("utf-8"))
-            written.append(path)
-        return written
+            where = Path(base) if thrown else path
+            write_atomic(where, text.encode("utf-8"))
+            written.append(where)
+        return list(dict.fromkeys(written))
 
     def validate(self) -> list[Diagnostic]:
         """glslangValidator's diagnostics for every stage, at snippet file and line."""

@@ -3,6 +3,7 @@ measurements file the planner reads (`--update`)."""
 
 from __future__ import annotations
 
+import io
 import json
 import math
 from dataclasses import asdict, dataclass, field
@@ -211,7 +212,7 @@ def write_charts(result: BenchResult, folder: Path) -> list[Path]:
             ax.axis("off")
         fig.tight_layout()
         path = folder / "variants.png"
-        fig.savefig(path, dpi=80)
+        _save_figure(fig, path, dpi=80)
         plt.close(fig)
         written.append(path)
     if result.tiers:
@@ -318,8 +319,15 @@ def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
     right.set_ylabel("mean FLIP against the reference tier")
     right.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="scene")
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    _save_figure(fig, path, dpi=90)
     plt.close(fig)
+
+
+def _save_figure(fig: Any, path: Path, dpi: int) -> None:
+    """A chart as PNG through the one output writer (whole, a regular file or nothing)."""
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=dpi)
+    write_atomic(path, buffer.getvalue())
 
 
 def write_report(result: BenchResult, folder: Path, charts: bool = True) -> list[Path]:

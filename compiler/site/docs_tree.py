@@ -13,6 +13,7 @@ from collections.abc import Collection, Mapping
 from pathlib import Path, PurePosixPath
 
 from glint.compiler.errors import UsageError
+from glint.compiler.files import write_atomic
 
 from .catalog_pages import catalog_pages, slot_docs, variant_docs
 from .cli_reference import cli_pages
@@ -88,7 +89,7 @@ def sync_tree(files: Mapping[PurePosixPath, bytes], target: Path) -> None:
         if path.is_file() and path.read_bytes() == data:
             continue
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_bytes(data)
+        write_atomic(path, data)
     wanted = {target / relative for relative in files}
     for path in sorted(target.rglob("*"), reverse=True):  # children before their folders
         if path.is_file() and path not in wanted:
