@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
-from glint.compiler.files import write_atomic
+from glint.compiler.files import is_temporary, write_atomic
 from glint.compiler.glsl.parser import prepare_parser
 from glint.compiler.target.shadertoy import TARGETS
 
@@ -123,6 +123,12 @@ def options_for(args: argparse.Namespace) -> Options:
     return options
 
 
+def _lintable(path: Path) -> bool:
+    """A shader file found in a folder; not a temporary file of glint's own writer (a killed
+    run can leave one behind)."""
+    return path.suffix in EXTENSIONS and not is_temporary(path.name) and path.is_file()
+
+
 def collect(paths: list[str]) -> list[str]:
     """The files to lint: files as given, directories searched for shader extensions."""
     files: list[str] = []
@@ -132,7 +138,7 @@ def collect(paths: list[str]) -> list[str]:
             continue
         path = Path(raw)
         if path.is_dir():
-            found = sorted(p for p in path.rglob("*") if p.suffix in EXTENSIONS and p.is_file())
+            found = sorted(p for p in path.rglob("*") if _lintable(p))
             files += [str(p) for p in found]
         elif path.is_file():
             files.append(raw)
@@ -168,9 +174,11 @@ def cmd_lint(args: argparse.Namespace) -> int:
         if result.fixed:
             fixed += result.fixed
             if file == "-":
-                sys.stdout.write(result.text)
+                sys.stdout.flush()
+                sys.stdout.buffer.write(result.encoded())
+                sys.stdout.buffer.flush()
             else:
-                write_atomic(file, result.text.encode("utf-8"))  # whole, mode kept
+                write_atomic(file, result.encoded())  # whole, in place of what it fixes
     out = sys.stdout if "-" not in files or not args.fix else sys.stderr
     if args.statistics:
         out.write(statistics(findings))
@@ -210,7 +218,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
         results[index] = result
         if cache is not None and not (result.fixed and files[index] == "-"):
             # the bytes the file holds after this run (a fixed file is written as UTF-8)
-            now = result.text.encode("utf-8") if result.fixed else data[index]
+            now = result.encoded() if result.fixed else data[index]
             cache.store(cache.key(names[index], now), result.findings)
     return [result for result in results if result is not None]
 

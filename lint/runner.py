@@ -3,6 +3,7 @@ apply fixes when asked. Nothing here raises on bad input: every problem is a fin
 
 from __future__ import annotations
 
+import codecs
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -32,6 +33,11 @@ class LintResult:
     text: str  # the source after fixes (the original when nothing was fixed)
     fixed: int = 0  # how many fixes were applied
     notes: list[str] = field(default_factory=list)
+    bom: bool = False  # the file opened with a UTF-8 byte-order mark
+
+    def encoded(self) -> bytes:
+        """The bytes to write back after fixes: UTF-8, the file's byte-order mark kept."""
+        return (codecs.BOM_UTF8 if self.bom else b"") + self.text.encode("utf-8")
 
 
 def decode(data: bytes, file: str) -> tuple[str, str | None]:
@@ -171,4 +177,6 @@ def _errors(findings: list[Finding]) -> int:
 def lint_bytes(data: bytes, file: str, options: Options | None = None, fix: bool = False,
                unsafe_fixes: bool = False) -> LintResult:  # fmt: skip
     text, problem = decode(data, file)
-    return lint_text(text, file, options, fix, unsafe_fixes, read_problem=problem or "")
+    result = lint_text(text, file, options, fix, unsafe_fixes, read_problem=problem or "")
+    result.bom = data.startswith(codecs.BOM_UTF8)
+    return result

@@ -4,6 +4,7 @@ configuration, fixes written back in place, and one clear message for bad usage.
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -198,6 +199,80 @@ def test_a_fixed_file_keeps_its_mode(tree: Path) -> None:
     fixed = glint("lint", "t.glsl", "--no-glslang", "--select", "P003", "--fix", cwd=tree)
     assert fixed.returncode == 0 and "texture(" in shader.read_text()
     assert shader.stat().st_mode & 0o777 == 0o644  # not the 0600 of a temporary file
+
+
+FIXABLE = CLEAN.replace("vec4(1.0)", "texture2D(iChannel0, fragCoord)")
+FIX = ("--no-glslang", "--no-cache", "--select", "P003", "--fix")
+
+
+def test_a_fix_keeps_the_byte_order_mark(tree: Path) -> None:
+    shader = tree / "t.glsl"
+    shader.write_bytes(b"\xef\xbb\xbf" + FIXABLE.encode())
+    fixed = glint("lint", "t.glsl", *FIX, cwd=tree)
+    assert fixed.returncode == 0, fixed.stdout + fixed.stderr
+    assert shader.read_bytes() == b"\xef\xbb\xbf" + FIXABLE.replace("texture2D", "texture").encode()
+
+
+def test_a_fix_of_standard_input_keeps_the_byte_order_mark(tree: Path) -> None:
+    fixed = subprocess.run(
+        [sys.executable, "-m", "glint.compiler.cli", "lint", "-", *FIX],
+        input=b"\xef\xbb\xbf" + FIXABLE.encode(), capture_output=True, cwd=tree, timeout=120,
+    )  # fmt: skip
+    assert fixed.returncode == 0, fixed.stderr
+    assert fixed.stdout == b"\xef\xbb\xbf" + FIXABLE.replace("texture2D", "texture").encode()
+
+
+def test_a_fix_writes_through_a_symlink(tree: Path) -> None:
+    (tree / "real.glsl").write_text(FIXABLE)
+    (tree / "link.glsl").symlink_to("real.glsl")
+    fixed = glint("lint", "link.glsl", *FIX, cwd=tree)
+    assert fixed.returncode == 0, fixed.stdout + fixed.stderr
+    assert (tree / "link.glsl").is_symlink()
+    assert "texture(" in (tree / "real.glsl").read_text()
+
+
+def test_a_fix_keeps_hard_links(tree: Path) -> None:
+    (tree / "t.glsl").write_text(FIXABLE)
+    os.link(tree / "t.glsl", tree / "same.glsl")
+    fixed = glint("lint", "t.glsl", *FIX, cwd=tree)
+    assert fixed.returncode == 0, fixed.stdout + fixed.stderr
+    assert (tree / "t.glsl").stat().st_ino == (tree / "same.glsl").stat().st_ino
+    assert "texture(" in (tree / "same.glsl").read_text()
+
+
+def test_a_fix_refuses_a_read_only_file(tree: Path) -> None:
+    shader = tree / "t.glsl"
+    shader.write_text(FIXABLE)
+    shader.chmod(0o444)
+    fixed = glint("lint", "t.glsl", *FIX, cwd=tree)
+    assert fixed.returncode == 2
+    assert fixed.stderr == (
+        "glint: cannot write t.glsl: it is read-only (mode 0444); make it writable (chmod u+w) "
+        "or write elsewhere\n"
+    )
+    assert shader.read_text() == FIXABLE and shader.stat().st_mode & 0o777 == 0o444
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="giving a file to another user needs root")
+def test_a_fix_as_root_leaves_the_file_to_its_owner(tree: Path) -> None:
+    shader = tree / "theirs.glsl"
+    shader.write_text(FIXABLE)
+    os.chown(shader, 65534, 65534)
+    shader.chmod(0o600)
+    fixed = glint("lint", "theirs.glsl", *FIX, cwd=tree)
+    assert fixed.returncode == 0, fixed.stdout + fixed.stderr
+    after = shader.stat()
+    assert (after.st_uid, after.st_gid, after.st_mode & 0o777) == (65534, 65534, 0o600)
+    assert "texture(" in shader.read_text()
+
+
+def test_a_folder_search_skips_the_writers_temporary_files(tree: Path) -> None:
+    (tree / "sub" / "b.frag").unlink()
+    (tree / ".glint-tmp-x.glsl").write_text(BROKEN)  # left by a killed run
+    (tree / "sub" / ".glint-k3x_9abz.frag").write_text(BROKEN)  # an older glint's name
+    result = glint("lint", ".", "--no-glslang", "--no-cache", "--format", "concise", cwd=tree)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert ".glint-" not in result.stdout
 
 
 def test_cache_dir_option_and_environment(
