@@ -1,19 +1,28 @@
-"""The escapes of the docs site's pages (glint.compiler.site.markdown): a value from a file
-(a name, a file name, front matter, a bench label) rendered through the Markdown extensions of
-mkdocs.yml, as mkdocs renders it, stays text: no HTML, no link to another scheme than http(s),
-no attribute, no markup."""
+"""Everything the docs site writes from a file is text: a scene's or a snippet's name, a file
+name, a snippet's front matter (summary, sources, parameters, formula), a bench label. Each
+page is rendered here through the Markdown extensions of mkdocs.yml, as mkdocs renders it, and
+no value may become HTML, a link to another scheme than http(s), an attribute or markup."""
 
 from __future__ import annotations
 
 import html
 import re
 from html.parser import HTMLParser
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import Any
 
 import pytest
 
 import glint
+from glint.compiler.catalog.loader import parse_snippet
+from glint.compiler.site.catalog_pages import (
+    VariantDoc,
+    index_page,
+    slot_docs,
+    slot_page,
+    variant_page,
+)
+from glint.compiler.site.live_canvas import LIVE_DIR
 from glint.compiler.site.markdown import (
     html_attr,
     html_text,
@@ -26,6 +35,10 @@ from glint.compiler.site.markdown import (
     safe_link,
     table,
 )
+from glint.compiler.site.measured import Accuracy, Bench, accuracy_section
+from glint.compiler.site.pictures import Picture
+from glint.compiler.site.scene_pages import scene_reference_page, tiers_page
+from glint.compiler.site.slot_comparison import slot_comparisons
 
 ROOT = Path(__file__).parent.parent
 NEEDS_MKDOCS = "mkdocs is not installed: pip install -e '.[dev]' (make test and make site do)"
@@ -287,3 +300,142 @@ def test_the_real_catalog_reads_as_before(render: Any) -> None:
             after = render(table(["a"], [[md_prose(value)]]))
             assert after == before or _words(_Page(after)) == _words(_Page(before)), value
             assert after.count("<code>") == before.count("<code>"), value
+
+
+# --- the pages, from a hostile catalog and hostile scenes -----------------------------------
+
+
+def _hostile_snippet(tmp_path: Path) -> VariantDoc:
+    """A snippet file of the catalog's form whose name and front matter are hostile, read by
+    the catalog's own loader."""
+    stem = f"evil{IMG}"
+    text = (
+        "/* ---\n"
+        f'id = "D.{stem}"\n'
+        'slot = "D"\n'
+        f'summary = "{LINK} {IMG} {ATTRS} `code` *em*"\n'
+        'provides = ["distribution"]\n'
+        "requires = []\n"
+        f'sources = ["{LINK}", "{IMG}", "[y](data:text/html,x)"]\n'
+        "formula = '''x $$\n<div onclick=alert(1)>x</div>\n\n" + IMG + "\n$$'''\n"
+        'params = { EVIL = { type = "float", default = 1.0 } }\n'
+        "--- */\n"
+        "float distribution(float NoH, float a) { return 1.0; }\n"
+    )
+    path = tmp_path / "snippets" / "D" / f"{stem}.glsl"
+    path.parent.mkdir(parents=True)
+    path.write_text(text, encoding="utf-8")
+    snippet = parse_snippet(text, f"snippets/D/{path.name}")
+    return VariantDoc(
+        id=snippet.id,
+        slot=snippet.slot,
+        summary=snippet.summary,
+        file=snippet.file,
+        source=snippet.body,
+        standalone=snippet.body,
+        provides=snippet.provides,
+        requires=(f"PI`{IMG}`",),
+        params=dict(snippet.params),
+        sources=snippet.sources,
+        formula=snippet.formula,
+        tiers=(f"fast {IMG}",),
+    )
+
+
+def test_catalog_pages_of_a_hostile_snippet_are_text(tmp_path: Path, render: Any) -> None:
+    doc = _hostile_snippet(tmp_path)
+    scheme = VariantDoc(id="javascript:alert(1)//", slot="D", summary=LINK, file="x", source="",
+                        standalone="")  # fmt: skip
+    scene_file = f"snippets/scenes/x`{IMG}`{ATTRS}.toml"
+    picture = Picture(
+        path=PurePosixPath("img/variants") / f"{doc.id}.png",
+        scene_file=scene_file,
+        shader="void mainImage() {}",
+        live="void main() {}",
+    )
+    no_picture = Picture(scene_file=scene_file, note=f"No picture: {picture.scene} fails.")
+    pages = {
+        "variant": variant_page(doc, picture),
+        "no picture": variant_page(doc, no_picture),
+        "scheme": variant_page(scheme),
+        "index": index_page([doc, scheme], slot_docs([doc, scheme]), {doc.id: picture}),
+        "slot": slot_page(slot_docs([doc, scheme])[0]),
+    }
+    image = "../img/variants/D.evil%3Cimg%20src%3Dx%20onerror%3Dalert%281%29%3E.png"
+    for name, markdown in pages.items():
+        images = (image,) if name in ("variant", "index") else ()
+        parsed = _assert_inert(render(markdown), images)
+        words = _words(parsed)
+        if name != "scheme":
+            assert doc.id in words, name  # the hostile name, as text
+        if name in ("variant", "no picture"):
+            assert f"{LINK} {IMG} {ATTRS} code *em*." in words  # the summary, as written
+            assert LINK in words and "[y](data:text/html,x)" in words  # the sources
+            assert f"PI`{IMG}`" in words and scene_file in words
+        if name == "scheme":
+            assert "javascript:alert(1)//" in words
+    assert 'href="javascript%3Aalert%281%29%2F%2F.md"' in render(pages["index"])
+
+
+def _hostile_scenes(tmp_path: Path) -> list[Path]:
+    """Example scenes whose file names are hostile: one with its own GLSL in a file whose name
+    holds backticks, one mesh scene."""
+    source = ROOT / "snippets" / "scenes"
+    folder = tmp_path / "scenes"
+    folder.mkdir()
+    geometry = f"isl`and`{IMG}``.glsl"
+    (folder / geometry).write_text((source / "island.glsl").read_text(encoding="utf-8"))
+    island = (source / "island.toml").read_text(encoding="utf-8")
+    assert 'file = "island.glsl"' in island
+    scene = folder / f"{IMG} {ATTRS}.toml"
+    scene.write_text(island.replace('file = "island.glsl"', f'file = "{geometry}"'))
+    mesh = folder / f"mesh{IMG}.toml"
+    mesh.write_text((source / "eight_models.toml").read_text(encoding="utf-8"))
+    return [scene, mesh]
+
+
+def test_scene_pages_of_hostile_scenes_are_text(tmp_path: Path, render: Any) -> None:
+    scene, mesh = _hostile_scenes(tmp_path)
+    stem = scene.stem
+    renders = {(stem, tier): PurePosixPath(f"img/scenes/{stem}-{tier}.png")
+               for tier in ("fast", "balanced", "reference")}  # fmt: skip
+    live = {stem: LIVE_DIR / f"scene-{stem}.glsl"}
+    live_tiers = {(stem, tier): LIVE_DIR / f"scene-{stem}-{tier}.glsl"
+                  for tier in ("fast", "balanced", "reference")}  # fmt: skip
+    meshes = {mesh.stem: PurePosixPath(f"img/scenes/{mesh.stem}.png")}
+    reference = scene_reference_page(renders, live, meshes, [scene, mesh])
+    encoded = "%3Cimg%20src%3Dx%20onerror%3Dalert%281%29%3E"
+    parsed = _assert_inert(
+        render(reference),
+        (
+            f"img/scenes/{encoded}%20%7Bonclick%3Dalert%281%29%7D-balanced.png",
+            f"img/scenes/mesh{encoded}.png",
+        ),
+    )
+    words = _words(parsed)
+    assert stem in words and mesh.stem in words  # the hostile names, as text
+    assert f"glint render snippets/scenes/{scene.name}" in words
+    assert f"isl`and`{IMG}``.glsl, the scene's own distance function" in words
+    headings = [t for t, _ in parsed.tags if t == "h3"]
+    assert len(headings) == 2
+    tiers = tiers_page(renders, {}, {}, live_tiers, [scene, mesh])
+    parsed = _assert_inert(
+        render(tiers),
+        tuple(
+            f"img/scenes/{encoded}%20%7Bonclick%3Dalert%281%29%7D-{tier}.png"
+            for tier in ("fast", "balanced", "reference")
+        ),
+    )
+    assert stem in _words(parsed) and mesh.stem in _words(parsed)
+
+
+def test_bench_labels_are_text(render: Any) -> None:
+    row = {"id": f"D.{IMG}", "reference": f"`{IMG}`", "error_unit": LINK, "max_abs": 0.5,
+           "rms": 0.1, "max_rel": None, "worst_at": {IMG: 0.25}, "samples": IMG, "spirv": LINK,
+           "gpu_ns": 1.5, "pareto": False}  # fmt: skip
+    bench = Bench(machine=f"{IMG} {LINK}", variants={row["id"]: row})
+    section = slot_comparisons({"D": [row["id"]]}, {}, {}, bench, None).sections["D"]
+    accuracy = accuracy_section(row["id"], Accuracy(row), bench.machine)
+    for markdown in (section, accuracy):
+        words = _words(_assert_inert(render(markdown)))
+        assert f"{IMG} {LINK}" in words and LINK in words

@@ -179,19 +179,3 @@ def math_block(latex: str) -> str:
     body = "\n".join(line for line in latex.strip().splitlines() if line.strip())
     escaped = html.escape(body, quote=False).replace('"', "&quot;")  # as arithmatex escapes
     return f'<div class="arithmatex">\\[\n{escaped}\n\\]</div>\n'
-
-
-# The names the pages use until they move to the functions above.
-def text(value: str) -> str:
-    """Plain text from the catalog as Markdown prose: no raw HTML gets through."""
-    return html.escape(value, quote=False)
-
-
-def cell(value: str) -> str:
-    """Plain text as one cell of a Markdown table."""
-    return text(value).replace("|", "\\|").replace("\n", " ")
-
-
-def code(value: str) -> str:
-    """An inline code span holding `value` exactly."""
-    return md_code(value)
