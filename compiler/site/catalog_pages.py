@@ -17,7 +17,18 @@ from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
 
 from .live_canvas import live_section
-from .markdown import cell, code, fenced, math_block, table, text
+from .markdown import (
+    fenced,
+    math_block,
+    md_code,
+    md_prose,
+    md_text,
+    path_url,
+    safe_image,
+    safe_link,
+    table,
+    url_part,
+)
 from .measured import Accuracy, accuracy_section
 from .pictures import SIZE, TIME, Picture
 
@@ -167,16 +178,16 @@ def index_page(
         rms = measured.get("rms")
         rows.append(
             [
-                f"[{code(doc.id)}]({doc.id}.md)",
-                f"[{code(doc.slot)}](slots/{doc.slot}.md)",
-                cell(doc.summary),
+                _variant_link(doc.id, ""),
+                _slot_link(doc.slot, ""),
+                md_prose(doc.summary),
                 "★" if measured.get("pareto") else "",
                 "" if rms is None else f"{rms:.3g}",
                 f"{measured['gpu_ns']:.2f}" if "gpu_ns" in measured else "",
                 _thumbnail(doc.id, pictures.get(doc.id)),
             ]
         )
-    slot_links = ", ".join(f"[{code(slot.name)}](slots/{slot.name}.md)" for slot in slots)
+    slot_links = ", ".join(_slot_link(slot.name, "") for slot in slots)
     header = ["id", "slot", "summary", "front", "RMS error", "ns per call", "picture"]
     return (
         "# Catalog\n\n"
@@ -193,9 +204,9 @@ def index_page(
 
 def slot_page(slot: SlotDoc) -> str:
     """A slot's contract and its variants."""
-    parts = [f"# Slot {code(slot.name)}\n\n"]
+    parts = [f"# Slot {md_code(slot.name)}\n\n"]
     if slot.summary:
-        summary = text(slot.summary)
+        summary = md_prose(slot.summary)
         parts.append(f"{summary[:1].upper()}{summary[1:]}.\n\n")  # keeps "SDF" as it is
     parts.append("## Contract\n\n")
     if slot.many:
@@ -205,14 +216,14 @@ def slot_page(slot: SlotDoc) -> str:
         )
     if slot.entry and slot.prototype:
         parts.append(
-            f"Every variant defines the entry function {code(slot.entry)} with exactly this "
+            f"Every variant defines the entry function {md_code(slot.entry)} with exactly this "
             "prototype, so that any variant replaces any other:\n\n"
         )
         parts.append(fenced(slot.prototype + ";", "glsl") + "\n")
     elif not slot.many:
         parts.append("No entry function: the scene's own code calls what the variant provides.\n\n")
     parts.append("## Variants\n\n")
-    rows = [[f"[{code(id_)}](../{id_}.md)", cell(summary)] for id_, summary in slot.variants]
+    rows = [[_variant_link(id_, "../"), md_prose(summary)] for id_, summary in slot.variants]
     parts.append(table(["variant", "summary"], rows))
     return "".join(parts)
 
@@ -225,10 +236,10 @@ def variant_page(
 ) -> str:
     """One variant: summary, picture, formula, accuracy and cost, code in tabs, contract,
     tiers, sources."""
+    slot = _slot_link(doc.slot, "")
     parts = [
-        f"# {code(doc.id)}\n\n",
-        f"{text(doc.summary)}. Slot [{code(doc.slot)}](slots/{doc.slot}.md); file "
-        f"{code(doc.file)}.\n\n",
+        f"# {md_code(doc.id)}\n\n",
+        f"{md_prose(doc.summary)}. Slot {slot}; file {md_code(doc.file)}.\n\n",
     ]
     if picture is not None:
         parts += ["## Picture\n\n", picture_block(doc, picture), "\n"]
@@ -241,7 +252,7 @@ def variant_page(
         '=== "Snippet"\n\n',
         fenced(doc.source, "glsl", indent="    "),
         "\n",
-        f'=== "{code("glint catalog show")}"\n\n',
+        f'=== "{md_code("glint catalog show")}"\n\n',
         "    The snippet with everything it needs (other slots at their balanced-tier "
         "variants), as one block to paste:\n\n",
         fenced(doc.standalone, "glsl", indent="    "),
@@ -261,11 +272,11 @@ def variant_page(
         f"- requires: {_codes(doc.requires)}\n",
     ]
     if doc.params:
-        params = ", ".join(code(f"{name} = {value}") for name, value in doc.params.items())
+        params = ", ".join(md_code(f"{name} = {value}") for name, value in doc.params.items())
         parts.append(f"- parameters (`#define`, defaults): {params}\n")
     parts += ["\n## Tiers\n\n", _tiers(doc), "\n"]
     if doc.sources:
-        parts += ["## Sources\n\n", *(f"- {text(source)}\n" for source in doc.sources)]
+        parts += ["## Sources\n\n", *(f"- {md_prose(source)}\n" for source in doc.sources)]
     return "".join(parts)
 
 
@@ -273,43 +284,51 @@ def _scene_tab(picture: Picture) -> str:
     """The tab's title: the scene the variant is composed into."""
     if picture.scene_file is None:
         return "The default scene with it"
-    return f"{PurePosixPath(picture.scene_file).stem} scene with it"
+    return md_text(f"{PurePosixPath(picture.scene_file).stem} scene with it")
+
+
+def _variant_link(snippet_id: str, up: str) -> str:
+    """A link to a variant's page from a page `up` ("", "../") below the catalog folder."""
+    return safe_link(md_code(snippet_id), f"{up}{url_part(snippet_id)}.md")
+
+
+def _slot_link(slot: str, up: str) -> str:
+    return safe_link(md_code(slot), f"{up}slots/{url_part(slot)}.md")
 
 
 def _codes(names: Iterable[str]) -> str:
-    return ", ".join(code(name) for name in names) or "nothing"
+    return ", ".join(md_code(name) for name in names) or "nothing"
 
 
 def _tiers(doc: VariantDoc) -> str:
     if doc.tiers:
-        return f"Used by the tiers: {', '.join(doc.tiers)}.\n"
+        return f"Used by the tiers: {md_text(', '.join(doc.tiers))}.\n"
+    command = md_code(f"glint compose --variant {doc.slot}={doc.id.split('.', 1)[-1]}")
     return (
-        "No tier picks it by default: take it with `glint compose --variant "
-        f"{doc.slot}={doc.id.split('.', 1)[1]}` or a scene's `[quality.variants]`, or the "
-        "scene's content picks it.\n"
+        f"No tier picks it by default: take it with {command} or a scene's "
+        "`[quality.variants]`, or the scene's content picks it.\n"
     )
 
 
 def _alt(snippet_id: str, picture: Picture) -> str:
-    scene = picture.scene.replace("`", "")
-    return text(f"{scene} rendered with {snippet_id}").replace("[", "(").replace("]", ")")
+    return md_text(f"{picture.scene_text} rendered with {snippet_id}")
 
 
 def _thumbnail(snippet_id: str, picture: Picture | None) -> str:
     if picture is None or picture.path is None:
         return ""
-    return f'![{_alt(snippet_id, picture)}](../{picture.path.as_posix()}){{ width="96" }}'
+    return safe_image(_alt(snippet_id, picture), path_url(picture.path, "../")) + '{ width="96" }'
 
 
 def picture_block(doc: VariantDoc, picture: Picture) -> str:
     """The picture and the scene it shows, or the line that says why there is none."""
     if picture.path is None:
-        return f"{text(picture.note)}\n"
-    variant = doc.id.split(".", 1)[1]
+        return f"{picture.note}\n"  # Markdown, escaped where pictures.py makes it
+    variant = doc.id.split(".", 1)[-1]
     scene = f" {picture.scene_file}" if picture.scene_file else ""
-    command = code(f"glint compose{scene} --variant {doc.slot}={variant}")
+    command = md_code(f"glint compose{scene} --variant {doc.slot}={variant}")
     return (
-        f"![{_alt(doc.id, picture)}](../{picture.path.as_posix()})\n\n"
+        f"{safe_image(_alt(doc.id, picture), path_url(picture.path, '../'))}\n\n"
         f"glint's render of {picture.scene} composed with {command} "
         f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n"
     )

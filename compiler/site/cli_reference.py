@@ -13,7 +13,7 @@ from pathlib import PurePosixPath
 
 from glint.compiler.cli import build_parser
 
-from .markdown import code, fenced
+from .markdown import fenced, md_code
 
 CLI_PAGE = PurePosixPath("cli.md")
 HELP_WIDTH = 100  # fixed, so that the page does not depend on the terminal that built it
@@ -27,12 +27,12 @@ def cli_page(parser: argparse.ArgumentParser) -> str:
     """The help of `parser` and of every subcommand under it, each under its own heading."""
     parts = [
         "# Command line\n\n",
-        f"Generated from the argument parser of {code(parser.prog)}: each command's "
-        f"{code('--help')}.\n\n",
+        f"Generated from the argument parser of {md_code(parser.prog)}: each command's "
+        f"{md_code('--help')}.\n\n",
         fenced(_help(parser), "text"),
     ]
     for name, command in commands(parser):
-        parts += [f"\n## {code(name)}\n\n", fenced(_help(command), "text")]
+        parts += [f"\n## {md_code(name)}\n\n", fenced(_help(command), "text")]
     return "".join(parts)
 
 

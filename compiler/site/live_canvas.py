@@ -12,13 +12,13 @@ scene and tier, in tabs.
 
 from __future__ import annotations
 
-import html
 from collections.abc import Mapping, Sequence
 from importlib import resources
 from pathlib import PurePosixPath
 
 import glint
 
+from .markdown import html_attr, html_text
 from .pictures import TIME, Picture
 
 LIVE_DIR = PurePosixPath("img") / "live"
@@ -44,20 +44,20 @@ def canvas_html(
     chooser = ""
     if choices:
         options = "".join(
-            f'<option value="{html.escape(path.as_posix())}"'
-            f"{' selected' if path == shader else ''}>{html.escape(name)}</option>"
+            f'<option value="{html_attr(path.as_posix())}"'
+            f"{' selected' if path == shader else ''}>{html_text(name)}</option>"
             for name, path in choices
         )
         chooser = (
-            f'<select class="glint-live-choice" aria-label="{html.escape(label)}: shader">'
+            f'<select class="glint-live-choice" aria-label="{html_attr(label)}: shader">'
             f"{options}</select>\n"
         )
     return (
         '<div class="glint-live">\n'
         + chooser
         + f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
-        f'data-shader="{html.escape(shader.as_posix())}" data-time="{TIME:g}" '
-        f'aria-label="{html.escape(label)}"></canvas>\n'
+        f'data-shader="{html_attr(shader.as_posix())}" data-time="{TIME:g}" '
+        f'aria-label="{html_attr(label)}"></canvas>\n'
         "</div>\n"
     )
 

@@ -38,7 +38,7 @@ from glint.compiler.files import write_atomic
 from glint.compiler.verify.precision import SIMPLE_TYPES, entry_params, precision_report
 from glint.compiler.verify.probes import run_probe
 
-from .markdown import cell, code, table
+from .markdown import md_code, md_text, path_url, safe_image, table
 
 log = logging.getLogger(__name__)
 
@@ -404,9 +404,10 @@ def accuracy_section(snippet_id: str, accuracy: Accuracy | None, machine: str) -
     if row is not None:
         parts.append(_measured_table(row, accuracy.budget, machine))
     if accuracy.plot is not None and accuracy.plot_kind == "samples":
+        alt = f"{snippet_id}: its GLSL against the float64 reference, sample by sample, and "
+        alt += "the spread of its errors"
         parts.append(
-            f"\n![{snippet_id}: its GLSL against the float64 reference, sample by sample, and "
-            f"the spread of its errors](../{accuracy.plot.as_posix()})\n\n"
+            f"\n{safe_image(md_text(alt), path_url(accuracy.plot, '../'))}\n\n"
             "Measured on the bench's samples (rays and points in its reference scenes) rather "
             "than a grid of inputs. Left: the snippet's own GLSL, run on the GPU in float32, "
             "against its float64 reference for each sample (on the dashed line where they "
@@ -414,9 +415,10 @@ def accuracy_section(snippet_id: str, accuracy: Accuracy | None, machine: str) -
             "samples within each error; the cross marks the worst.\n"
         )
     elif accuracy.plot is not None:
+        alt = f"{snippet_id}: its GLSL against the float64 reference, and the error over "
+        alt += "its domain"
         parts.append(
-            f"\n![{snippet_id}: its GLSL against the float64 reference, and the error over "
-            f"its domain](../{accuracy.plot.as_posix()})\n\n"
+            f"\n{safe_image(md_text(alt), path_url(accuracy.plot, '../'))}\n\n"
             "Left: the snippet's own GLSL, run on the GPU in float32 (solid), against its "
             "float64 reference (dashed). Right: the error over the domain; the cross marks the "
             "worst point.\n"
@@ -430,23 +432,23 @@ def _measured_table(row: dict[str, Any], budget: Mapping[str, float], machine: s
     unit = "" if row.get("error_unit") == "value" else row.get("error_unit") or ""
     rows: list[list[str]] = []
     if row.get("reference"):
-        rows.append(["reference", code(str(row["reference"])), ""])
+        rows.append(["reference", md_code(str(row["reference"])), ""])
         for key, label in (("max_abs", "max error"), ("rms", "RMS error"),
                            ("max_rel", "max relative error")):  # fmt: skip
             value = row.get(key)
             if value is None:
                 continue
-            shown = f"{value:.3g}" + (f" ({cell(unit)})" if unit and key != "max_rel" else "")
+            shown = f"{value:.3g}" + (f" ({md_text(unit)})" if unit and key != "max_rel" else "")
             rows.append([label, shown, _budget(budget.get(key))])
         if row.get("worst_at"):
             where = ", ".join(f"{k} = {v:.4g}" for k, v in row["worst_at"].items())
-            rows.append(["worst at", cell(where), ""])
-        rows.append(["samples", str(row.get("samples", "")), ""])
-    rows.append(["SPIR-V instructions", str(row["spirv"]), ""])
+            rows.append(["worst at", md_text(where), ""])
+        rows.append(["samples", md_text(str(row.get("samples", ""))), ""])
+    rows.append(["SPIR-V instructions", md_text(str(row["spirv"])), ""])
     rows.append(["time per call", f"{row['gpu_ns']:.2f} ns", ""])
     front = "yes" if row.get("pareto") else "no"
     rows.append(["on its slot's cost/error front", front, ""])
-    note = f"Measured by `glint bench` on {cell(machine)}." if machine else ""
+    note = f"Measured by `glint bench` on {md_text(machine)}." if machine else ""
     return table(["", "measured", "budget"], rows) + (f"\n{note}\n" if note else "")
 
 
@@ -464,8 +466,8 @@ def _precision_text(report: Mapping[str, Mapping[str, Any]]) -> str:
     else:
         survives = (
             f"Half precision: it does **not** survive float16 (mediump): "
-            f"{half.get('nonfinite_lanes', 0)} sample(s) turn infinite or NaN where float64 is "
-            "finite"
+            f"{md_text(str(half.get('nonfinite_lanes', 0)))} sample(s) turn infinite or NaN "
+            "where float64 is finite"
         )
     single_err = single.get("max_rel_err_vs_f64")
     tail = f"; float32 is within {single_err:.3g} of float64" if single_err is not None else ""

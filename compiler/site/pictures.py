@@ -27,6 +27,8 @@ from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.compose.scene import load_scene
 from glint.compiler.files import write_atomic
 
+from .markdown import md_code
+
 log = logging.getLogger(__name__)
 
 PICTURE_DIR = PurePosixPath("img") / "variants"
@@ -42,14 +44,19 @@ class Picture:
 
     path: PurePosixPath | None = None
     scene_file: str | None = None  # e.g. "snippets/scenes/lamp.toml"; None: the default scene
-    note: str = ""  # why there is no picture, when `path` is None
+    note: str = ""  # why there is no picture, when `path` is None (Markdown, escaped here)
     shader: str = ""  # the composed shader the picture shows (ShaderToy Image-tab code)
     live: str = ""  # the same composition for the live canvas (webgl2, parameters as uniforms)
 
     @property
     def scene(self) -> str:
-        """The scene as the page names it (Markdown)."""
-        return f"the example scene `{self.scene_file}`" if self.scene_file else DEFAULT_SCENE
+        """The scene as the page names it (Markdown, its file name in a code span)."""
+        return f"the example scene {md_code(self.scene_file)}" if self.scene_file else DEFAULT_SCENE
+
+    @property
+    def scene_text(self) -> str:
+        """The scene as plain text (an image's alt text)."""
+        return f"the example scene {self.scene_file}" if self.scene_file else DEFAULT_SCENE
 
 
 @dataclass

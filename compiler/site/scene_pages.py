@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import json
 import logging
+import re
 import textwrap
-from collections.abc import Collection, Mapping
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 from typing import Any
@@ -25,7 +26,17 @@ from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.render.images import flip_error, png_pixels
 
 from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
-from .markdown import cell, code, fenced, table, text
+from .markdown import (
+    fenced,
+    md_code,
+    md_prose,
+    md_text,
+    path_url,
+    safe_image,
+    safe_link,
+    table,
+    url_part,
+)
 from .measured import load_bench
 from .pictures import SIZE, TIME, render_cached
 
@@ -50,17 +61,21 @@ def example_scenes() -> list[Path]:
 
 
 def scene_pages(
-    source: Path, cache_dir: Path | None, pictured: Collection[str] | None = None
+    source: Path,
+    cache_dir: Path | None,
+    pictured: Collection[str] | None = None,
+    scenes: Sequence[Path] | None = None,
 ) -> ScenePages:
-    """The scene reference and the tiers page. Pictures only with a cache folder, and only of
-    the scenes (by stem) in `pictured` when given."""
+    """The scene reference and the tiers page of the example scenes (or of `scenes`). Pictures
+    only with a cache folder, and only of the scenes (by stem) in `pictured` when given."""
+    scenes = example_scenes() if scenes is None else scenes
     out = ScenePages()
     renders: dict[tuple[str, str], PurePosixPath] = {}
     pixels: dict[tuple[str, str], np.ndarray] = {}
     live: dict[str, PurePosixPath] = {}
     live_tiers: dict[tuple[str, str], PurePosixPath] = {}
     meshes: dict[str, PurePosixPath] = {}
-    for scene in example_scenes():
+    for scene in scenes:
         pictures = cache_dir is not None and (pictured is None or scene.stem in pictured)
         if is_mesh_example(scene):
             # rasterized programs, not a ShaderToy shader: one picture at the scene's own
@@ -89,8 +104,9 @@ def scene_pages(
                 out.files[picture] = png
                 renders[(scene.stem, tier)] = picture
                 pixels[(scene.stem, tier)] = png_pixels(png)
-    out.pages[SCENES_PAGE] = scene_reference_page(renders, live, meshes)
-    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, load_bench(source).tiers, live_tiers)
+    out.pages[SCENES_PAGE] = scene_reference_page(renders, live, meshes, scenes)
+    bench = load_bench(source).tiers
+    out.pages[TIERS_PAGE] = tiers_page(renders, pixels, bench, live_tiers, scenes)
     return out
 
 
@@ -132,10 +148,12 @@ def scene_reference_page(
     renders: Mapping[tuple[str, str], PurePosixPath],
     live: Mapping[str, PurePosixPath] | None = None,
     meshes: Mapping[str, PurePosixPath] | None = None,
+    scenes: Sequence[Path] | None = None,
 ) -> str:
-    """Every key of a scene file, then every example scene with its picture, its live canvas
-    (the shader in `live`, by scene stem) and its TOML. A mesh scene's picture is in `meshes`
-    (by stem), at its own tier, and it has no live canvas."""
+    """Every key of a scene file, then every example scene (or each of `scenes`) with its
+    picture, its live canvas (the shader in `live`, by scene stem) and its TOML. A mesh scene's
+    picture is in `meshes` (by stem), at its own tier, and it has no live canvas."""
+    scenes = example_scenes() if scenes is None else scenes
     live = live or {}
     meshes = meshes or {}
     schema = Scene.model_json_schema()
@@ -152,21 +170,21 @@ def scene_reference_page(
     ]
     for name in sorted(defs):
         model = defs[name]
-        parts.append(f"## {name} {{ #{_anchor(name)} }}\n\n")
+        parts.append(f"## {md_text(name)} {{ #{_anchor(name)} }}\n\n")
         if model.get("description"):
-            parts.append(f"{text(_sentence(model['description']))}\n\n")
+            parts.append(f"{md_prose(_sentence(model['description']))}\n\n")
         parts += [_keys_table(model, defs), "\n"]
     parts.append("## Example scenes\n\n")
-    for scene in example_scenes():
-        parts.append(f"### {scene.stem}\n\n")
+    for scene in scenes:
+        parts.append(f"### {md_text(scene.stem)}\n\n")
         if is_mesh_example(scene):
             parts.append(_mesh_example(scene, meshes.get(scene.stem)))
             continue
         picture = renders.get((scene.stem, "balanced"))
         if picture is not None:
             parts.append(
-                f"![the {scene.stem} scene](img/scenes/{picture.name})\n\n"
-                f"`glint render snippets/scenes/{scene.name}` at the balanced tier "
+                f"{_picture(f'the {scene.stem} scene', picture)}\n\n"
+                f"{_render_command(scene)} at the balanced tier "
                 f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n\n"
             )
         if scene.stem in live:
@@ -175,7 +193,7 @@ def scene_reference_page(
         parts.append(fenced(scene.read_text(encoding="utf-8"), "toml") + "\n")
         geometry = load_scene(scene).geometry
         if geometry is not None:  # the user's own GLSL the scene names
-            parts.append(f"`{geometry.file}`, the scene's own distance function:\n\n")
+            parts.append(f"{md_code(geometry.file)}, the scene's own distance function:\n\n")
             parts.append(fenced(geometry.source, "glsl") + "\n")
     return "".join(parts)
 
@@ -185,9 +203,8 @@ def _mesh_example(scene: Path, picture: PurePosixPath | None) -> str:
     parts = []
     if picture is not None:
         parts.append(
-            f"![the {scene.stem} scene](img/scenes/{picture.name})\n\n"
-            f"`glint render snippets/scenes/{scene.name}` ({SIZE[0]}x{SIZE[1]} pixels, "
-            f"time {TIME:g}).\n\n"
+            f"{_picture(f'the {scene.stem} scene', picture)}\n\n"
+            f"{_render_command(scene)} ({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n\n"
         )
     parts.append(
         "A mesh scene, rasterized from a vertex and a fragment shader per material "
@@ -198,8 +215,19 @@ def _mesh_example(scene: Path, picture: PurePosixPath | None) -> str:
     return "".join(parts)
 
 
+def _picture(alt: str, picture: PurePosixPath) -> str:
+    """A scene's picture (under img/scenes) with `alt` as its text."""
+    return safe_image(md_text(alt), path_url(picture))
+
+
+def _render_command(scene: Path) -> str:
+    return md_code(f"glint render snippets/scenes/{scene.name}")
+
+
 def _anchor(name: str) -> str:
-    return name.lower()
+    """A heading's id: the schema's model name, lower case, nothing but letters, digits, `_`
+    and `-` (an attr_list id)."""
+    return re.sub(r"[^a-z0-9_-]", "-", name.lower())
 
 
 def _sentence(value: str) -> str:
@@ -212,7 +240,7 @@ def _keys_table(model: dict[str, Any], defs: Mapping[str, Any]) -> str:
     for key, prop in model.get("properties", {}).items():
         default = "required" if key in required else _default(prop)
         description = _sentence(prop.get("description", ""))
-        rows.append([code(key), _type(prop, defs), default, cell(description)])
+        rows.append([md_code(key), _type(prop, defs), default, md_prose(description)])
     if not rows:
         return "No keys.\n"
     return table(["key", "type", "default", "what it is"], rows)
@@ -226,23 +254,23 @@ def _default(prop: Mapping[str, Any]) -> str:
         return "absent"
     if isinstance(value, dict):
         return "its defaults" if value else "{}"
-    return code(json.dumps(value))
+    return md_code(json.dumps(value))
 
 
 def _type(prop: Mapping[str, Any], defs: Mapping[str, Any]) -> str:
     """A schema type as a reader reads it: links for tables, ranges and choices inline."""
     if "$ref" in prop:
         name = prop["$ref"].rsplit("/", 1)[-1]
-        return f"[{name}](#{_anchor(name)}) table"
+        return f"{safe_link(md_text(name), f'#{_anchor(name)}')} table"
     for union in ("anyOf", "oneOf"):
         if union in prop:
             kinds = [k for k in prop[union] if k.get("type") != "null"]
             shown = " or ".join(_type(k, defs) for k in kinds)
             return shown + (" (may be absent)" if len(kinds) < len(prop[union]) else "")
     if "enum" in prop:
-        return "one of " + ", ".join(code(json.dumps(v)) for v in prop["enum"])
+        return "one of " + ", ".join(md_code(json.dumps(v)) for v in prop["enum"])
     if "const" in prop:
-        return code(json.dumps(prop["const"]))
+        return md_code(json.dumps(prop["const"]))
     kind = prop.get("type", "")
     if kind == "array":
         item = _type(prop.get("items", {}), defs)
@@ -262,7 +290,7 @@ def _type(prop: Mapping[str, Any], defs: Mapping[str, Any]) -> str:
         if key in prop:
             bounds.append(f"{sign} {prop[key]:g}")
     shown = {"number": "number", "string": "string", "boolean": "true or false",
-             "integer": "integer"}.get(kind, kind or "any")  # fmt: skip
+             "integer": "integer"}.get(kind, md_text(kind) or "any")  # fmt: skip
     return shown + (f" ({', '.join(bounds)})" if bounds else "")
 
 
@@ -274,18 +302,22 @@ def tiers_page(
     pixels: Mapping[tuple[str, str], np.ndarray],
     bench: Mapping[tuple[str, str], Mapping[str, Any]],
     live: Mapping[tuple[str, str], PurePosixPath] | None = None,
+    scenes: Sequence[Path] | None = None,
 ) -> str:
-    """The slot-by-tier table, then per example scene its pictures at every tier with FLIP and
-    frame time, and its live canvases (by scene stem and tier, in `live`) in one tab per tier."""
+    """The slot-by-tier table, then per example scene (or each of `scenes`) its pictures at
+    every tier with FLIP and frame time, and its live canvases (by scene stem and tier, in
+    `live`) in one tab per tier."""
+    scenes = example_scenes() if scenes is None else scenes
     live = live or {}
     table_ = tier_table()
     slots = sorted({slot for tier in TIERS for slot in table_.get(tier, {})})
     rows = []
     for slot in slots:
-        row = [f"[{code(slot)}](catalog/slots/{slot}.md)"]
+        row = [safe_link(md_code(slot), f"catalog/slots/{url_part(slot)}.md")]
         for tier in TIERS:
             variant = tier_choice(table_, tier, slot)
-            row.append(f"[{code(variant)}](catalog/{slot}.{variant}.md)" if variant else "–")
+            page = f"catalog/{url_part(f'{slot}.{variant}')}.md"
+            row.append(safe_link(md_code(variant), page) if variant else "–")
         rows.append(row)
     parts = [
         "# Tiers\n\n",
@@ -300,27 +332,27 @@ def tiers_page(
         "reference tier; the frame time is from `glint bench` (see [Benchmark](bench/bench.md) "
         "for its machine).\n\n",
     ]
-    meshes = [scene.stem for scene in example_scenes() if is_mesh_example(scene)]
+    meshes = [md_text(scene.stem) for scene in scenes if is_mesh_example(scene)]
     if meshes:
         parts.append(
             f"Mesh scenes ({', '.join(meshes)}) are not here: their materials choose their own "
             "models, and the bench measures the tiers of ShaderToy shaders.\n\n"
         )
-    for scene in example_scenes():
+    for scene in scenes:
         if is_mesh_example(scene):
             continue
-        parts.append(f"### {scene.stem}\n\n")
+        parts.append(f"### {md_text(scene.stem)}\n\n")
         cells = []
         truth = pixels.get((scene.stem, "reference"))
         for tier in TIERS:
             picture = renders.get((scene.stem, tier))
-            shown = f"![{scene.stem} at {tier}](img/scenes/{picture.name})" if picture else "–"
+            shown = _picture(f"{scene.stem} at {tier}", picture) if picture else "–"
             flip = "–"
             if truth is not None and (scene.stem, tier) in pixels:
                 flip = f"{flip_error(truth, pixels[(scene.stem, tier)]):.4f}"
             measured = bench.get((scene.stem, tier))
             ms = f"{measured['frame_ms']:.2f} ms" if measured else "–"
-            cells.append([code(tier), shown, flip, ms])
+            cells.append([md_code(tier), shown, flip, ms])
         parts.append(table(["tier", "picture", "FLIP vs reference", "frame time"], cells) + "\n")
         parts.append(_live_tabs(scene.stem, live))
     return "".join(parts)
@@ -333,7 +365,7 @@ def _live_tabs(stem: str, live: Mapping[tuple[str, str], PurePosixPath]) -> str:
     for tier in TIERS:
         if (stem, tier) in live:
             canvas = canvas_html(live[(stem, tier)], LIVE_SIZE, f"the {stem} scene at {tier}, live")
-            tabs.append(f'=== "{tier}"\n\n' + textwrap.indent(canvas, "    ") + "\n")
+            tabs.append(f'=== "{md_text(tier)}"\n\n' + textwrap.indent(canvas, "    ") + "\n")
     if not tabs:
         return ""
     return "Live, one tab per tier:\n\n" + "".join(tabs)

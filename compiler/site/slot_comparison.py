@@ -25,7 +25,7 @@ from glint.compiler.files import write_atomic
 from glint.compiler.render.images import flip_image, png_bytes, png_pixels
 
 from .live_canvas import slot_live_section
-from .markdown import cell, code, table
+from .markdown import md_code, md_text, path_url, safe_image, safe_link, table, url_part
 from .measured import Bench, figure_png, pyplot
 from .pictures import Picture
 
@@ -89,26 +89,35 @@ def _flip_table(
         picture = pictures.get(snippet_id)
         if picture is None or picture.path is None or picture.path not in files:
             continue
-        shown = f'![{snippet_id}](../../{picture.path.as_posix()}){{ width="192" }}'
+        shown = _image(snippet_id, picture.path)
         if snippet_id == reference:
-            rows.append([f"[{code(snippet_id)}](../{snippet_id}.md)", shown, "the reference", "0"])
+            rows.append([_variant_link(snippet_id), shown, "the reference", "0"])
             continue
         error_map, mean = flip_image(truth, png_pixels(files[picture.path]))
         flip_path = FLIP_DIR / f"{snippet_id}.png"
         result.files[flip_path] = png_bytes(error_map)
-        flip = f'![FLIP error of {snippet_id}](../../{flip_path.as_posix()}){{ width="192" }}'
-        rows.append([f"[{code(snippet_id)}](../{snippet_id}.md)", shown, flip, f"{mean:.4f}"])
+        flip = _image(f"FLIP error of {snippet_id}", flip_path)
+        rows.append([_variant_link(snippet_id), shown, flip, f"{mean:.4f}"])
     if len(rows) < 2:
         return ""
     scene = ref_picture.scene
     return (
         "## Side by side\n\n"
-        f"Each variant in {scene}, and its FLIP error image against {code(reference or '')}, "
+        f"Each variant in {scene}, and its FLIP error image against {md_code(reference or '')}, "
         "the variant the reference tier takes (black: no visible difference; bright: "
         "large). The last column is the mean FLIP error over the picture.\n\n"
         + table(["variant", "picture", "FLIP against the reference", "mean FLIP"], rows)
         + "\n"
     )
+
+
+def _image(alt: str, path: PurePosixPath) -> str:
+    """A picture in the side-by-side table (from a slot's page, two folders down)."""
+    return safe_image(md_text(alt), path_url(path, "../../")) + '{ width="192" }'
+
+
+def _variant_link(snippet_id: str) -> str:
+    return safe_link(md_code(snippet_id), f"../{url_part(snippet_id)}.md")
 
 
 def _bench_section(
@@ -124,15 +133,16 @@ def _bench_section(
         chart = _chart(slot, measured, cache_dir)
         path = CHART_DIR / f"{slot}.png"
         result.files[path] = chart
+        alt = md_text(f"cost and error of the {slot} variants")
         parts.append(
-            f"![cost and error of the {slot} variants](../../{path.as_posix()})\n\n"
+            f"{safe_image(alt, path_url(path, '../../'))}\n\n"
             "Each variant's RMS error against its float64 reference over its time per call; "
             "the variants on the front (filled, joined) are those no other variant measured "
             "against the same reference beats on both.\n\n"
         )
     parts.append(_table(rows))
     if machine:
-        parts.append(f"\nMeasured by `glint bench` on {cell(machine)}.\n")
+        parts.append(f"\nMeasured by `glint bench` on {md_text(machine)}.\n")
     return "".join(parts) + "\n"
 
 
@@ -142,12 +152,12 @@ def _table(rows: list[dict[str, Any]]) -> str:
 
     body = [
         [
-            f"[{code(r['id'])}](../{r['id']}.md)",
-            code(str(r["reference"])) if r.get("reference") else "–",
+            _variant_link(str(r["id"])),
+            md_code(str(r["reference"])) if r.get("reference") else "–",
             num(r.get("max_abs")),
             num(r.get("rms")),
             num(r.get("max_rel")),
-            str(r["spirv"]),
+            md_text(str(r["spirv"])),
             f"{r['gpu_ns']:.2f}",
             "★" if r.get("pareto") else "",
         ]
