@@ -300,3 +300,138 @@ def test_entries_of_other_code_versions_are_removed(tree: Path) -> None:
     keep.mkdir()
     glint("lint", "a.glsl", "--no-glslang", cwd=tree)
     assert not old.exists() and keep.exists() and len(_entries(tree)) == 1
+
+
+# --- configuration and selection: every wrong shape is one clear usage error ------------------
+
+
+def lint_here(
+    args: list[str], tree: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture
+) -> tuple[int, str, str]:
+    """`glint lint ARGS` in this process, in `tree`: exit status, stdout and stderr."""
+    from glint.compiler.cli import main
+
+    monkeypatch.chdir(tree)
+    status = main(["lint", *args])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+LINT = "[tool.glint.lint]\n"
+PFI = "[tool.glint.lint.per-file-ignores]\n"
+UNKNOWN = "unknown rule code or prefix"
+WRONG_CONFIGURATIONS = [
+    # (pyproject.toml, the key = value as the message shows them, what it says was expected)
+    ("tool = 3", "tool = 3 (an integer)", "expected a table ([tool])"),
+    ("[tool]\nglint = 3", "tool.glint = 3 (an integer)", 'a table ([tool.glint]) with "lint"'),
+    ("[tool]\nglint = []", "tool.glint = [] (an array)", "expected a table ([tool.glint])"),
+    ("[tool.glint]\nlint = 3", "tool.glint.lint = 3 (an integer)", "expected a table"),
+    ("[tool.glint]\nlint = [1]", "tool.glint.lint = [1] (an array)", "select, ignore"),
+    ('[tool.glint]\nlint = "N"', 'tool.glint.lint = "N" (a string)', "expected a table"),
+    ("[tool.glint]\nlnt = {}", "tool.glint.lnt = {}", 'unknown key "lnt"'),
+    ("[tool.glint.lnt]\nselect = 1", "tool.glint.lnt = {select = 1}", 'did you mean "lint"?'),
+    (LINT + 'select = "N001"', 'select = "N001" (a string)', "a list of rule codes"),
+    (LINT + "select = [1]", "select = [1] (an array)", "1 is an integer"),
+    (LINT + 'select = ["N", true]', "select = [", "true is a boolean"),
+    (LINT + "select = [[]]", "select = [[]] (an array)", "[] is an array"),
+    (LINT + "select = [{a = 1}]", "select = [{a = 1}]", "{a = 1} is a table"),
+    (LINT + "select = [1979-05-27]", "select = [1979-05-27]", "is a date"),
+    (LINT + "select = []", "select = [] (an array)", "an empty list selects no rule"),
+    (LINT + 'select = [""]', 'select = [""]', 'an empty rule code ""'),
+    (LINT + 'select = ["Q123"]', 'select = ["Q123"]', UNKNOWN + ' "Q123"'),
+    (LINT + 'select = ["P9"]', 'select = ["P9"]', UNKNOWN + ' "P9"'),
+    (LINT + "ignore = {}", "ignore = {} (a table)", "a list of rule codes"),
+    (LINT + "ignore = 1.5", "ignore = 1.5 (a float)", "a list of rule codes"),
+    (LINT + 'ignore = ["N", "X1"]', 'ignore = ["N", "X1"]', UNKNOWN + ' "X1"'),
+    (LINT + 'sellect = ["N"]', 'tool.glint.lint.sellect = ["N"]', 'did you mean "select"?'),
+    (LINT + "target = 3", "target = 3 (an integer)", 'one of "shadertoy", "webgl2"'),
+    (LINT + 'target = ["webgl2"]', 'target = ["webgl2"] (an array)', "one of"),
+    (LINT + 'target = "metal"', 'target = "metal" (a string)', "one of"),
+    (LINT + "per-file-ignores = []", "per-file-ignores = [] (an array)", "a table of file pattern"),
+    (LINT + 'per-file-ignores = "N"', 'per-file-ignores = "N" (a string)', "a table of"),
+    (PFI + '"a.glsl" = "N"', 'per-file-ignores."a.glsl" = "N" (a string)', "a list of rule codes"),
+    (PFI + '"a b/*.glsl" = [true]', 'per-file-ignores."a b/*.glsl" = [true]', "true is a boolean"),
+    (PFI + 'x = ["ZZ1"]', 'per-file-ignores.x = ["ZZ1"]', UNKNOWN + ' "ZZ1"'),
+    (PFI + "x = {N = 1}", "per-file-ignores.x = {N = 1} (a table)", "a list of rule codes"),
+]
+
+
+@pytest.mark.parametrize(("toml", "shown", "expected"), WRONG_CONFIGURATIONS)
+def test_every_wrong_configuration_is_one_usage_error_naming_file_key_value_and_expectation(
+    tree: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture,
+    toml: str,
+    shown: str,
+    expected: str,
+) -> None:
+    (tree / "pyproject.toml").write_text(toml + "\n")
+    status, out, err = lint_here(["a.glsl", "--no-cache"], tree, monkeypatch, capsys)
+    assert status == 2 and out == "", err
+    assert err.startswith(f"glint: {tree.resolve() / 'pyproject.toml'}: "), err
+    assert shown in err and expected in err, err
+    assert "internal error" not in err and len(err.splitlines()) == 1
+
+
+def test_a_configuration_that_leaves_no_rule_is_a_usage_error(
+    tree: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture
+) -> None:
+    (tree / "pyproject.toml").write_text('[tool.glint.lint]\nignore = ["ALL"]\n')
+    status, out, err = lint_here(["sub/b.frag", "--no-cache"], tree, monkeypatch, capsys)
+    assert status == 2 and out == ""
+    assert err == (
+        "glint: no rule is left to run: select DEFAULT (the default), ignore ALL "
+        f"({tree.resolve() / 'pyproject.toml'}); select a rule that is not ignored, "
+        "e.g. --select DEFAULT\n"
+    )
+    # a flag that selects a rule again makes it a valid run: the most specific pattern wins
+    status, out, err = lint_here(
+        ["sub/b.frag", "--no-cache", "--no-glslang", "--select", "C003"], tree, monkeypatch, capsys
+    )
+    assert status == 1 and "C003" in out and err == ""
+
+
+@pytest.mark.parametrize(
+    ("flags", "message"),
+    [
+        (["--select", ""], "glint: --select: no rule code given"),
+        (["--select", ","], "glint: --select: no rule code given"),
+        (["--select", " , "], "glint: --select: no rule code given"),
+        (["--select", "C", "--ignore", "C"], "no rule is left to run: select C (--select), "
+                                              "ignore C (--ignore)"),
+        (["--ignore", "ALL"], "no rule is left to run: select DEFAULT (the default), "
+                              "ignore ALL (--ignore)"),
+        (["--select", "N0", "--ignore", "N00"], "no rule is left to run"),
+        (["--select", "C003,Q1"], "glint: --select: unknown rule code or prefix 'Q1'"),
+        (["--ignore", "N001,XY"], "glint: --ignore: unknown rule code or prefix 'XY'"),
+        (["--select", "P9"], "glint: --select: unknown rule code or prefix 'P9'"),
+    ],
+)  # fmt: skip
+def test_a_selection_of_no_rule_or_an_unknown_code_is_a_usage_error(
+    tree: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture,
+    flags: list[str],
+    message: str,
+) -> None:
+    # the broken file: a selection that ran nothing would call it "All clean"
+    status, out, err = lint_here(["sub/b.frag", "--no-cache", *flags], tree, monkeypatch, capsys)
+    assert status == 2 and out == "" and message in err, err
+    assert "All clean" not in out and len(err.splitlines()) == 1
+
+
+def test_an_empty_ignore_ignores_nothing(
+    tree: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture
+) -> None:
+    status, out, _ = lint_here(
+        ["sub/b.frag", "--no-cache", "--no-glslang", "--ignore", ""], tree, monkeypatch, capsys
+    )
+    assert status == 1 and "C003" in out
+
+
+def test_rule_codes_are_read_without_importing_the_rules_and_match_them() -> None:
+    from glint.lint.options import default_codes
+    from glint.lint.rules import all_rules, rule_codes
+
+    assert rule_codes() == set(all_rules())
+    assert default_codes()  # an empty DEFAULT would make `enables_some_rule` wrong
