@@ -11,6 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from glint.lint.finding import Finding
+
 CLEAN = "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(1.0);\n}\n"
 BROKEN = "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n    fragColor = vec4(1.0)\n}\n"
 
@@ -435,3 +437,81 @@ def test_rule_codes_are_read_without_importing_the_rules_and_match_them() -> Non
 
     assert rule_codes() == set(all_rules())
     assert default_codes()  # an empty DEFAULT would make `enables_some_rule` wrong
+
+
+# --- report formats: a file name or a message can neither forge a line nor drive a terminal ----
+
+HOSTILE = "x\n::error file=evil.glsl::pwned,100%\x1b[31m.glsl"  # a real (if odd) file name
+
+
+def _github_unescape(value: str) -> str:
+    """What GitHub's runner reads back from an escaped property value."""
+    for escaped, char in (("%0D", "\r"), ("%0A", "\n"), ("%3A", ":"), ("%2C", ","), ("%25", "%")):
+        value = value.replace(escaped, char)
+    return value
+
+
+def test_github_format_escapes_a_file_name_that_would_inject_a_workflow_command(
+    tree: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture
+) -> None:
+    (tree / HOSTILE).write_text(BROKEN)
+    args = [HOSTILE, "--no-cache", "--no-glslang", "--format", "github"]
+    status, out, err = lint_here(args, tree, monkeypatch, capsys)
+    assert status == 1 and err == ""
+    [line] = out.splitlines()  # one finding, one command: nothing injected
+    assert line == (
+        "::error file=x%0A%3A%3Aerror file=evil.glsl%3A%3Apwned%2C100%25\x1b[31m.glsl,"
+        "line=3,col=1,endLine=3,endColumn=2,title=C003::unexpected '}', expected one of "
+        "';', ',', '(', an operator"
+    )
+    properties = line.split("::")[1].split(" ", 1)[1]
+    values = dict(item.split("=", 1) for item in properties.split(","))
+    assert _github_unescape(values["file"]) == HOSTILE
+
+
+def test_github_format_escapes_the_message_and_every_property() -> None:
+    from glint.lint.reporters import REPORTERS
+
+    finding = Finding("a,b:c.glsl", 1, 1, 1, 2, "N001", "info", "50%\r\nmore\n::warning::x")
+    assert REPORTERS["github"]([finding], {}) == (
+        "::notice file=a%2Cb%3Ac.glsl,line=1,col=1,endLine=1,endColumn=2,title=N001::"
+        "50%25%0D%0Amore%0A::warning::x\n"
+    )
+
+
+@pytest.mark.parametrize("format", ["text", "concise"])
+def test_text_formats_show_control_characters_of_a_file_name_escaped(
+    tree: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture, format: str
+) -> None:
+    (tree / HOSTILE).write_text(BROKEN)
+    args = [HOSTILE, "--no-cache", "--no-glslang", "--format", format]
+    status, out, _ = lint_here(args, tree, monkeypatch, capsys)
+    assert status == 1 and "\x1b" not in out
+    shown = "x\\n::error file=evil.glsl::pwned,100%\\x1b[31m.glsl"
+    assert out.splitlines()[0].startswith(f"{shown}:3:1: C003 unexpected '}}'")
+    # the finding's line, for text the excerpt and its caret, then the summary: nothing forged
+    assert len(out.splitlines()) == (4 if format == "text" else 2)
+
+
+def test_text_excerpt_shows_control_characters_of_the_source_as_pictures_under_the_caret(
+    tree: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture
+) -> None:
+    (tree / "esc.glsl").write_bytes(BROKEN.replace("}", "} // \x1b[2J\rX\x7f", 1).encode())
+    args = ["esc.glsl", "--no-cache", "--no-glslang"]
+    status, out, _ = lint_here(args, tree, monkeypatch, capsys)
+    assert status == 1 and "\x1b" not in out and "\r" not in out and "\x7f" not in out
+    assert out.splitlines()[1:3] == ["    3 | } // \u241b[2J\u240dX\u2421", "        ^"]
+    # a CRLF file's line ends are not shown
+    (tree / "crlf.glsl").write_bytes(BROKEN.replace("\n", "\r\n").encode())
+    status, out, _ = lint_here(
+        ["crlf.glsl", "--no-cache", "--no-glslang"], tree, monkeypatch, capsys
+    )
+    assert status == 1 and out.splitlines()[1] == "    3 | }"
+
+
+def test_text_format_escapes_control_characters_of_a_message() -> None:
+    from glint.lint.reporters import REPORTERS
+
+    finding = Finding("a.glsl", 1, 1, 1, 2, "N001", "warning", "bad\nb.glsl:9:9: N002 \x1b]0;x\x07")
+    out = REPORTERS["concise"]([finding], {})
+    assert out == "a.glsl:1:1: N001 bad\\nb.glsl:9:9: N002 \\x1b]0;x\\x07\n"
