@@ -204,7 +204,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     results: list[LintResult | None] = [None] * len(files)
     if cache is not None and not args.fix:
         for index, (name, content) in enumerate(zip(names, data, strict=True)):
-            found = cache.load(cache.key(name, content))
+            found = cache.load(name, content)
             if found is not None:
                 results[index] = LintResult(name, found, decode(content, name)[0])
     todo = [index for index, result in enumerate(results) if result is None]
@@ -221,7 +221,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
         if cache is not None and not (result.fixed and files[index] == "-"):
             # the bytes the file holds after this run (a fixed file is written as UTF-8)
             now = result.text.encode("utf-8") if result.fixed else data[index]
-            cache.store(cache.key(names[index], now), result.findings)
+            cache.store(names[index], now, result.findings)
     return [result for result in results if result is not None]
 
 
