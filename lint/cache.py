@@ -5,20 +5,27 @@ An entry's key is a hash of everything its findings depend on:
 
 - the file's bytes and its name (findings carry the name; per-file ignores match it);
 - glint's version and a hash of the linter's own source (every file of the `glint.lint`
-  package and of the GLSL front end, glslang runner and ShaderToy prelude it uses), so that
-  any change to the code invalidates every entry;
+  package, precision.json included, and of the compiler's GLSL front end `compiler/glsl/`, its
+  targets, glslang runner and ShaderToy prelude `compiler/target/`, and `compiler/errors.py`),
+  so that any change to the code invalidates every entry;
 - the effective options: select, ignore, per-file ignores, target, glslang on or off, and,
-  with glslang on, which glslangValidator (its path, size and modification time).
+  with glslang on, which glslangValidator (its path, size, modification time and the version
+  it prints).
 
 Entries hold the findings as JSON (the `--format json` objects, fixes included), one file per
 entry, written atomically (a temporary file renamed over the entry), so that an interrupted or
-concurrent run never leaves half an entry; an entry that cannot be read is a miss. The cache is
-never read when fixing (`--fix` lints fresh); `--no-cache` turns it off.
+concurrent run never leaves half an entry. An entry is trusted only when it is what this code
+wrote for this file: a regular file (never followed through a symbolic link, never larger than
+MAX_ENTRY_BYTES), valid JSON of the entry's schema (every field of its type, a known rule code
+and severity, lines and columns positive and within the file), and bound to the file: it names
+the file, the SHA-256 of its bytes and the settings, and all three must match. Anything else is
+a miss, and the entry is written anew. The cache is never read when fixing (`--fix` lints
+fresh); `--no-cache` turns it off.
 
 The directory is `.glint_cache/` beside the nearest pyproject.toml (the project's root), else in
 the current directory; `--cache-dir` or `GLINT_CACHE_DIR` choose another. Entries live under a
-folder named for the code's hash; folders of other versions of the code are removed when an
-entry is first written.
+folder named for the entry format and the code's hash; folders of other formats and versions of
+the code are removed when an entry is first written.
 """
 
 from __future__ import annotations
@@ -28,6 +35,8 @@ import json
 import os
 import re
 import shutil
+import stat
+import subprocess
 import tempfile
 from functools import cache
 from importlib.metadata import PackageNotFoundError, version
@@ -39,13 +48,26 @@ from .options import Options
 
 DIRECTORY_NAME = ".glint_cache"
 ENVIRONMENT_VARIABLE = "GLINT_CACHE_DIR"
-FORMAT = "v1"  # the layout and the entry format; bump when either changes
+FORMAT = "v2"  # the layout and the entry format; bump when either changes
+# An entry larger than this is not written and not read: a file of 1 MB (the most lint
+# analyses) with a finding on every line stays well under it.
+MAX_ENTRY_BYTES = 32 << 20
 _LINT_DIR = Path(__file__).resolve().parent
 _COMPILER_DIR = _LINT_DIR.parent / "compiler"
-# The parts of the compiler whose behaviour is part of the findings.
-_COMPILER_SOURCES = ("glsl", "glslang.py", "shadertoy.py", "sourcemap.py", "errors.py")
+# The parts of the compiler whose behaviour is part of the findings: the GLSL front end, the
+# targets (the ShaderToy prelude that glslang compiles the file in, the glslang runner, source
+# markers) and the errors. Lint imports nothing else of the compiler (a test checks).
+_COMPILER_SOURCES = ("glsl", "target", "errors.py")
 _SOURCE_SUFFIXES = (".py", ".lark", ".json", ".toml")
-_VERSION_FOLDER = re.compile(rf"^{FORMAT}-[0-9a-f]{{16}}$")
+_VERSION_FOLDER = re.compile(r"^v\d+-[0-9a-f]{16}$")
+_SEVERITIES = frozenset({"error", "warning", "info"})
+_APPLICABILITY = frozenset({"safe", "unsafe"})
+_ENTRY_KEYS = frozenset({"format", "file", "sha256", "settings", "findings"})
+_FINDING_KEYS = frozenset(
+    {"file", "line", "column", "end_line", "end_column", "code", "severity", "message", "fix"}
+)
+_FIX_KEYS = frozenset({"message", "applicability", "edits"})
+_EDIT_KEYS = frozenset({"line", "column", "end_line", "end_column", "content"})
 
 
 def cache_directory(explicit: str | None, pyproject: Path | None) -> Path:
@@ -58,6 +80,11 @@ def cache_directory(explicit: str | None, pyproject: Path | None) -> Path:
     return (pyproject.parent if pyproject is not None else Path.cwd()) / DIRECTORY_NAME
 
 
+def fingerprint_roots() -> list[Path]:
+    """The files and folders whose source the findings depend on."""
+    return [_LINT_DIR] + [_COMPILER_DIR / part for part in _COMPILER_SOURCES]
+
+
 @cache
 def code_fingerprint() -> str:
     """A hash of glint's version and of the source files the findings depend on."""
@@ -66,8 +93,7 @@ def code_fingerprint() -> str:
         digest.update(version("glint").encode())
     except PackageNotFoundError:  # run from a checkout that is not installed
         digest.update(b"uninstalled")
-    roots = [_LINT_DIR] + [_COMPILER_DIR / part for part in _COMPILER_SOURCES]
-    for root in roots:
+    for root in fingerprint_roots():
         files = sorted(root.rglob("*")) if root.is_dir() else [root]
         for path in files:
             if path.suffix not in _SOURCE_SUFFIXES or "__pycache__" in path.parts:
@@ -81,16 +107,24 @@ def code_fingerprint() -> str:
     return digest.hexdigest()
 
 
+@cache
 def _glslang_identity() -> str:
-    """Which glslangValidator runs: a new one may report differently."""
+    """Which glslangValidator runs, and the version it says it is: a new one may report
+    differently, and a wrapper script keeps its size and time when what it runs changes."""
     path = shutil.which("glslangValidator")
     if path is None:
         return "none"
     try:
-        stat = os.stat(path)
+        info = os.stat(path)
+        where = f"{path}:{info.st_size}:{info.st_mtime_ns}"
     except OSError:
-        return path
-    return f"{path}:{stat.st_size}:{stat.st_mtime_ns}"
+        where = path
+    try:
+        run = subprocess.run([path, "--version"], capture_output=True, timeout=10, check=False)
+        said = hashlib.sha256(run.stdout).hexdigest()[:16]
+    except (OSError, subprocess.SubprocessError):
+        said = "unknown"
+    return f"{where}:{said}"
 
 
 class LintCache:
@@ -109,6 +143,7 @@ class LintCache:
             "glslang": _glslang_identity() if options.glslang else False,
         }
         self._settings = json.dumps(settings, sort_keys=True).encode()
+        self._settings_value = json.loads(self._settings)  # as an entry holds them
         self._prepared = False
         self.hits = 0
         self.misses = 0
@@ -119,31 +154,71 @@ class LintCache:
         digest.update(data)
         return digest.hexdigest()
 
-    def load(self, key: str) -> list[Finding] | None:
-        """The findings stored under `key`, or None (a miss)."""
-        try:
-            entry = json.loads((self.folder / f"{key}.json").read_bytes())
-            findings = [finding_from_json(item) for item in entry["findings"]]
-        except (OSError, ValueError, KeyError, TypeError):
+    def load(self, name: str, data: bytes) -> list[Finding] | None:
+        """The findings stored for the file `name` holding `data`, or None (a miss): when there
+        is no entry, or it is anything but what `store` writes for this file and settings."""
+        raw = _read_entry(self.folder / f"{self.key(name, data)}.json")
+        findings = None
+        if raw is not None:
+            try:
+                entry = json.loads(raw)
+            except (ValueError, RecursionError):  # not JSON, or nested beyond the parser
+                entry = None
+            findings = self._findings(entry, name, data)
+        if findings is None:
             self.misses += 1
             return None
         self.hits += 1
         return findings
 
-    def store(self, key: str, findings: list[Finding]) -> None:
-        """Write the entry atomically: a temporary file in the same folder, renamed over it."""
+    def store(self, name: str, data: bytes, findings: list[Finding]) -> None:
+        """Write the entry atomically: a temporary file in the same folder, renamed over it
+        (over anything there: a broken entry, a symbolic link, a folder)."""
+        entry = {
+            "format": FORMAT,
+            "file": name,
+            "sha256": hashlib.sha256(data).hexdigest(),
+            "settings": self._settings_value,
+            "findings": [f.as_json() for f in findings],
+        }
+        if self._findings(entry, name, data) is None:
+            return  # it would not be read back (a finding out of the file?): a miss next time
+        content = json.dumps(entry).encode()  # ASCII: anything else is escaped
+        if len(content) > MAX_ENTRY_BYTES:
+            return
+        path = self.folder / f"{self.key(name, data)}.json"
         try:
             self._prepare()
-            fd, tmp = tempfile.mkstemp(prefix=f".{key[:16]}.", suffix=".tmp", dir=self.folder)
+            fd, tmp = tempfile.mkstemp(prefix=f".{path.stem[:16]}.", suffix=".tmp", dir=self.folder)
             try:
-                with os.fdopen(fd, "w", encoding="utf-8") as out:
-                    json.dump({"findings": [f.as_json() for f in findings]}, out)
-                os.replace(tmp, self.folder / f"{key}.json")
+                with os.fdopen(fd, "wb") as out:
+                    out.write(content)
+                if path.is_dir() and not path.is_symlink():
+                    shutil.rmtree(path, ignore_errors=True)
+                os.replace(tmp, path)
             except BaseException:
                 Path(tmp).unlink(missing_ok=True)
                 raise
         except OSError:
             pass  # a read-only or full disk: glint works without its cache
+
+    def _findings(self, entry: Any, name: str, data: bytes) -> list[Finding] | None:
+        """The entry's findings when it is well formed and bound to this file and these
+        settings; None otherwise."""
+        if not (
+            isinstance(entry, dict)
+            and entry.keys() == _ENTRY_KEYS
+            and entry["format"] == FORMAT
+            and entry["file"] == name
+            and entry["sha256"] == hashlib.sha256(data).hexdigest()
+            and entry["settings"] == self._settings_value
+            and isinstance(entry["findings"], list)
+        ):
+            return None
+        bounds = _Bounds(data)
+        if not all(bounds.finding_ok(item, name) for item in entry["findings"]):
+            return None
+        return [finding_from_json(item) for item in entry["findings"]]
 
     def _prepare(self) -> None:
         """Create the folder on first write; mark the cache as one (CACHEDIR.TAG, a .gitignore
@@ -163,8 +238,98 @@ class LintCache:
                 encoding="utf-8",
             )
         for other in self.root.iterdir():
-            if other != self.folder and other.is_dir() and _VERSION_FOLDER.match(other.name):
+            if (
+                other != self.folder
+                and _VERSION_FOLDER.match(other.name)
+                and other.is_dir()
+                and not other.is_symlink()
+            ):
                 shutil.rmtree(other, ignore_errors=True)
+
+
+def _read_entry(path: Path) -> bytes | None:
+    """The bytes of an entry, or None when there is none or it is not a regular file of at most
+    MAX_ENTRY_BYTES: a symbolic link is not followed (to /dev/zero it would be read until
+    memory runs out), a FIFO is not waited on."""
+    try:
+        if not stat.S_ISREG(os.lstat(path).st_mode):
+            return None
+        flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
+        fd = os.open(path, flags | getattr(os, "O_BINARY", 0))
+    except OSError:
+        return None
+    try:
+        info = os.fstat(fd)  # the file opened, whatever replaced the path since lstat
+        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_ENTRY_BYTES:
+            return None
+        chunks, size = [], 0
+        while size <= MAX_ENTRY_BYTES:  # it may grow while being read
+            chunk = os.read(fd, 1 << 20)
+            if not chunk:
+                return b"".join(chunks)
+            chunks.append(chunk)
+            size += len(chunk)
+        return None
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
+
+
+class _Bounds:
+    """What a finding of a file may hold: lines from 1 to the file's line count (a line break
+    being LF or CR, whichever counts more), columns from 1 to its length, a known rule code
+    and severity."""
+
+    def __init__(self, data: bytes) -> None:
+        from .rules import rule_codes  # the codes without importing the rules
+
+        self.lines = max(data.count(b"\n"), data.count(b"\r")) + 1
+        self.columns = len(data) + 1
+        self.codes = rule_codes()
+
+    def span_ok(self, item: dict[str, Any]) -> bool:
+        numbers = (item["line"], item["column"], item["end_line"], item["end_column"])
+        if not all(type(n) is int for n in numbers):  # bool is an int, but not a position
+            return False
+        line, column, end_line, end_column = numbers
+        return (
+            1 <= line <= end_line <= self.lines
+            and 1 <= column <= self.columns
+            and 1 <= end_column <= self.columns
+            and (end_line > line or end_column >= column)
+        )
+
+    def finding_ok(self, item: Any, name: str) -> bool:
+        if not (isinstance(item, dict) and item.keys() == _FINDING_KEYS and self.span_ok(item)):
+            return False
+        fix = item["fix"]
+        return (
+            item["file"] == name
+            and type(item["code"]) is str
+            and item["code"] in self.codes
+            and type(item["severity"]) is str
+            and item["severity"] in _SEVERITIES
+            and type(item["message"]) is str
+            and (fix is None or self.fix_ok(fix))
+        )
+
+    def fix_ok(self, fix: Any) -> bool:
+        return (
+            isinstance(fix, dict)
+            and fix.keys() == _FIX_KEYS
+            and type(fix["message"]) is str
+            and type(fix["applicability"]) is str
+            and fix["applicability"] in _APPLICABILITY
+            and isinstance(fix["edits"], list)
+            and all(
+                isinstance(edit, dict)
+                and edit.keys() == _EDIT_KEYS
+                and type(edit["content"]) is str
+                and self.span_ok(edit)
+                for edit in fix["edits"]
+            )
+        )
 
 
 def finding_from_json(item: dict[str, Any]) -> Finding:

@@ -21,11 +21,11 @@ from .cache import LintCache, cache_directory
 from .config import find_pyproject, load_options
 from .docs import rules_markdown
 from .finding import Finding
-from .options import Options
+from .options import Options, enables_some_rule, unknown_code
 from .parallel import lint_items
 from .precision import precision_note
 from .reporters import FORMATS, REPORTERS, statistics, summary
-from .rules import CATEGORY_PREFIX, all_rules, rule_doc
+from .rules import all_rules, rule_doc
 from .runner import LintResult, decode
 
 EXTENSIONS = (".glsl", ".frag", ".fs")
@@ -95,31 +95,41 @@ def _code_list(text: str) -> list[str]:
 
 
 def _check_codes(codes: list[str], flag: str) -> None:
-    prefixes = set(CATEGORY_PREFIX.values())
-    for code in codes:
-        known = code in ("ALL", "DEFAULT") or code in prefixes
-        # all_rules() imports every rule module: only for a code to look up (a run that finds
-        # every file in the cache then needs none of them)
-        known = known or any(c.startswith(code) for c in all_rules())
-        if not known:
-            raise UsageError(
-                f"{flag}: unknown rule code or prefix {code!r}; see `glint rule --all`"
-            )
+    if not codes:
+        raise UsageError(f"{flag}: no rule code given; e.g. {flag} N001,L (ALL: every rule)")
+    unknown = unknown_code(codes)
+    if unknown is not None:
+        raise UsageError(f"{flag}: unknown rule code or prefix {unknown!r}; see `glint rule --all`")
 
 
 def options_for(args: argparse.Namespace) -> Options:
-    options, _ = load_options()
+    """The configuration file's options (checked as it is read), then the flags; a selection
+    that leaves no rule to run is a usage error rather than a silent "All clean"."""
+    options, path = load_options()
     if args.select is not None:
         _check_codes(args.select, "--select")
         options.select = args.select
     if args.ignore is not None:
-        _check_codes(args.ignore, "--ignore")
+        if args.ignore:
+            _check_codes(args.ignore, "--ignore")
         options.ignore = args.ignore
-    for codes, where in ((options.select, "select"), (options.ignore, "ignore")):
-        _check_codes(codes, f"[tool.glint.lint].{where}")
     if args.target is not None:
         options.target = args.target
     options.glslang = not args.no_glslang
+    if not enables_some_rule(options):
+        default = Options()
+
+        def origin(flag: str, given: list[str] | None, codes: list[str], usual: list[str]) -> str:
+            where = flag if given is not None else "the default" if codes == usual else path
+            return f"{','.join(codes) or 'nothing'} ({where})"
+
+        raise UsageError(
+            "no rule is left to run: select "
+            + origin("--select", args.select, options.select, default.select)
+            + ", ignore "
+            + origin("--ignore", args.ignore, options.ignore, default.ignore)
+            + "; select a rule that is not ignored, e.g. --select DEFAULT"
+        )
     return options
 
 
@@ -202,7 +212,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     results: list[LintResult | None] = [None] * len(files)
     if cache is not None and not args.fix:
         for index, (name, content) in enumerate(zip(names, data, strict=True)):
-            found = cache.load(cache.key(name, content))
+            found = cache.load(name, content)
             if found is not None:
                 results[index] = LintResult(name, found, decode(content, name)[0])
     todo = [index for index, result in enumerate(results) if result is None]
@@ -217,9 +227,9 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     for index, result in zip(todo, fresh, strict=True):
         results[index] = result
         if cache is not None and not (result.fixed and files[index] == "-"):
-            # the bytes the file holds after this run (a fixed file is written as UTF-8)
+            # the bytes the file holds after this run (a fixed file: UTF-8, its BOM kept)
             now = result.encoded() if result.fixed else data[index]
-            cache.store(cache.key(names[index], now), result.findings)
+            cache.store(names[index], now, result.findings)
     return [result for result in results if result is not None]
 
 

@@ -1,4 +1,5 @@
-"""Which rules run and how: select and ignore by code or prefix, per-file ignores, the target."""
+"""Which rules run and how: select and ignore by code or prefix, per-file ignores, the target;
+and the checks that a selection names known codes and leaves some rule to run."""
 
 from __future__ import annotations
 
@@ -53,9 +54,42 @@ def default_codes() -> frozenset[str]:
 def _prefix_ok(code: str, pattern: str) -> bool:
     # "P" must not select "PF001": a letter prefix matches only codes of that category.
     rest = code[len(pattern) :]
-    return not rest or rest[0].isdigit() or pattern[-1].isdigit()
+    return not rest or rest[0].isdigit() or pattern[-1:].isdigit()
 
 
 def _matches(file: str, glob: str) -> bool:
     path = PurePath(file)
     return fnmatch.fnmatch(str(path), glob) or fnmatch.fnmatch(path.name, glob)
+
+
+def unknown_code(codes: list[str]) -> str | None:
+    """The first of `codes` that is neither ALL, DEFAULT, a category prefix nor a prefix of a
+    rule's code (N, N0, N001), or None when all are known. An empty code is unknown."""
+    from .rules import CATEGORY_PREFIX, rule_codes  # no rule module is imported
+
+    prefixes = set(CATEGORY_PREFIX.values())
+    for raw in codes:
+        code = raw.strip().upper()
+        if code in ("ALL", "DEFAULT") or code in prefixes:
+            continue
+        if not code or not any(c.startswith(code) and _prefix_ok(c, code) for c in rule_codes()):
+            return raw
+    return None
+
+
+def enables_some_rule(options: Options) -> bool:
+    """Whether the selection, after ignore, runs at least one rule (per-file ignores aside: a
+    file may be ignored whole). Imports the rules only to tell which are in DEFAULT when an
+    ignore list could remove them all."""
+    from .rules import rule_codes
+
+    select = [c.strip().upper() for c in options.select]
+    explicit = Options(select=[c for c in select if c != "DEFAULT"], ignore=options.ignore)
+    if any(explicit.enabled(code) for code in rule_codes()):
+        return True
+    if "DEFAULT" not in select:
+        return False
+    if not options.ignore:
+        return True  # DEFAULT holds rules (a test checks)
+    plain = Options(select=select, ignore=options.ignore)
+    return any(plain.enabled(code) for code in rule_codes())

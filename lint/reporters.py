@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import json
+import re
 from collections import Counter
 from collections.abc import Callable, Sequence
 from importlib.metadata import version
@@ -16,17 +17,20 @@ FORMATS = ("text", "concise", "json", "sarif", "github")
 
 def concise(findings: Sequence[Finding], sources: dict[str, str]) -> str:
     del sources
-    return "".join(f"{_where(f)}: {f.code} {f.message}{_fixable(f)}\n" for f in findings)
+    return "".join(
+        f"{_where(f)}: {_printable(f.code)} {_printable(f.message)}{_fixable(f)}\n"
+        for f in findings
+    )
 
 
 def text(findings: Sequence[Finding], sources: dict[str, str]) -> str:
     """`file:line:col: CODE message`, then the line with a caret under the span."""
     out = []
     for f in findings:
-        out.append(f"{_where(f)}: {f.code} {f.message}{_fixable(f)}\n")
+        out.append(f"{_where(f)}: {_printable(f.code)} {_printable(f.message)}{_fixable(f)}\n")
         lines = sources.get(f.file, "").split("\n")
         if 1 <= f.line <= len(lines) and lines[f.line - 1].strip():
-            source = lines[f.line - 1].expandtabs(4)
+            source = _visible(lines[f.line - 1].removesuffix("\r").expandtabs(4))
             width = max(1, (f.end_column - f.column) if f.end_line == f.line else 1)
             width = min(width, max(1, len(source) - f.column + 1))
             gutter = f"{f.line:>5} | "
@@ -40,12 +44,15 @@ def as_json(findings: Sequence[Finding], sources: dict[str, str]) -> str:
 
 
 def github(findings: Sequence[Finding], sources: dict[str, str]) -> str:
+    """Workflow commands (`::error file=...::message`), escaped as GitHub's runner reads them:
+    in a property `%`, CR, LF, `:` and `,`; in the message `%`, CR and LF. Unescaped, a file
+    name holding a line break would start a workflow command of its own."""
     del sources
     level = {"error": "error", "warning": "warning", "info": "notice"}
     return "".join(
-        f"::{level[f.severity]} file={f.file},line={f.line},col={f.column},"
-        f"endLine={f.end_line},endColumn={f.end_column},title={f.code}::"
-        f"{_escape(f.message)}\n"
+        f"::{level[f.severity]} file={_property(f.file)},line={f.line},col={f.column},"
+        f"endLine={f.end_line},endColumn={f.end_column},title={_property(f.code)}::"
+        f"{_data(f.message)}\n"
         for f in findings
     )
 
@@ -136,12 +143,40 @@ def summary(findings: Sequence[Finding], fixed: int) -> str:
 
 
 def _where(f: Finding) -> str:
-    return f"{f.file}:{f.line}:{f.column}"
+    return f"{_printable(f.file)}:{f.line}:{f.column}"
 
 
 def _fixable(f: Finding) -> str:
     return " [*]" if f.fix is not None and f.fix.applicability == "safe" else ""
 
 
-def _escape(message: str) -> str:
+def _data(message: str) -> str:
+    """A workflow command's message, escaped (actions/toolkit `escapeData`)."""
     return message.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+
+
+def _property(value: str) -> str:
+    """A workflow command's property value, escaped (actions/toolkit `escapeProperty`)."""
+    return _data(value).replace(":", "%3A").replace(",", "%2C")
+
+
+# Characters that a terminal acts on or that break a line: C0 and C1 controls, DEL, the line
+# and paragraph separators, and the bidirectional overrides that reorder what is shown.
+_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def _printable(text: str) -> str:
+    """Text for a terminal: each unsafe character as its Python escape (`\\n`, `\\x1b`), so a
+    file name or a message can neither forge a line of the report nor drive the terminal."""
+    return _UNSAFE.sub(lambda m: repr(m.group())[1:-1], text)
+
+
+def _visible(line: str) -> str:
+    """A source line for the excerpt: each control character as its Unicode control picture
+    (ESC as U+241B), one column wide like the character it shows, so the caret stays put."""
+    return _UNSAFE.sub(_picture, line)
+
+
+def _picture(match: re.Match[str]) -> str:
+    code = ord(match.group())
+    return chr(0x2400 + code) if code < 0x20 else "\u2421" if code == 0x7F else "\ufffd"

@@ -16,6 +16,7 @@ Codes never change meaning. Categories and their prefixes:
 from __future__ import annotations
 
 import importlib
+import os
 import pkgutil
 import re
 from collections.abc import Iterator
@@ -85,6 +86,25 @@ def _import_rule_modules() -> None:
     # packages on the file system each time cost as much as a small rule.
     for module in pkgutil.walk_packages(__path__, prefix=f"{__name__}."):
         importlib.import_module(module.name)
+
+
+@cache
+def rule_codes() -> frozenset[str]:
+    """Every rule's code, read from the rule modules' names (`n001_pow_negative_base.py` is
+    N001) without importing them: checking a code on the command line, in the configuration or
+    in a cache entry need not load every rule (a test checks this equals `all_rules()`)."""
+    codes = set()
+    for package in pkgutil.iter_modules(__path__):
+        if package.ispkg:
+            folder = os.path.join(package.module_finder.path, package.name)  # type: ignore[union-attr]
+            for module in pkgutil.iter_modules([folder]):
+                match = _MODULE.match(module.name)
+                if match:
+                    codes.add(match.group(1).upper())
+    return frozenset(codes)
+
+
+_MODULE = re.compile(r"^((?:c|p|n|l|pf|s)\d{3})_\w+$")
 
 
 def all_rules() -> dict[str, type[Rule]]:

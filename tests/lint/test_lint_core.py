@@ -169,9 +169,9 @@ def test_pyproject_table_is_read_from_the_nearest_pyproject(tmp_path: Path) -> N
 @pytest.mark.parametrize(
     ("table", "message"),
     [
-        ({"selct": ["N"]}, "unknown key 'selct'"),
+        ({"selct": ["N"]}, 'unknown key "selct"'),
         ({"select": "N"}, "expected a list of rule codes"),
-        ({"target": "metal"}, "unknown value 'metal'"),
+        ({"target": "metal"}, 'target = "metal" \\(a string\\): expected one of "shadertoy"'),
     ],
 )
 def test_bad_configuration_is_one_clear_usage_error(table: dict, message: str) -> None:
