@@ -28,7 +28,7 @@ _ROOT = Path(__file__).resolve().parents[1]
 # is its own package).
 LAYERS: list[tuple[str, ...]] = [
     ("errors",),
-    ("files",),  # reading input files, writing output files whole
+    ("files", "markdown"),  # reading input files, writing output files whole; page text escaped
     ("glsl",),
     ("target", "evaluator"),  # the evaluator runs GLSL on the CPU: it needs the front end only
     ("catalog",),

@@ -5,6 +5,7 @@ no value may become HTML, a link to another scheme than http(s), an attribute or
 
 from __future__ import annotations
 
+import dataclasses
 import html
 import re
 from html.parser import HTMLParser
@@ -15,15 +16,7 @@ import pytest
 
 import glint
 from glint.compiler.catalog.loader import parse_snippet
-from glint.compiler.site.catalog_pages import (
-    VariantDoc,
-    index_page,
-    slot_docs,
-    slot_page,
-    variant_page,
-)
-from glint.compiler.site.live_canvas import LIVE_DIR
-from glint.compiler.site.markdown import (
+from glint.compiler.markdown import (
     html_attr,
     html_text,
     is_safe_url,
@@ -35,6 +28,14 @@ from glint.compiler.site.markdown import (
     safe_link,
     table,
 )
+from glint.compiler.site.catalog_pages import (
+    VariantDoc,
+    index_page,
+    slot_docs,
+    slot_page,
+    variant_page,
+)
+from glint.compiler.site.live_canvas import LIVE_DIR
 from glint.compiler.site.measured import Accuracy, Bench, accuracy_section
 from glint.compiler.site.pictures import Picture
 from glint.compiler.site.scene_pages import scene_reference_page, tiers_page
@@ -439,3 +440,22 @@ def test_bench_labels_are_text(render: Any) -> None:
     for markdown in (section, accuracy):
         words = _words(_assert_inert(render(markdown)))
         assert f"{IMG} {LINK}" in words and LINK in words
+
+
+def test_the_bench_report_is_text(render: Any) -> None:
+    """bench.md, which the site shows as its Benchmark page: a scene, a variant, a slot and a
+    machine named with markup stay text."""
+    from glint.compiler.bench.report import BenchResult, to_markdown
+    from glint.compiler.bench.scenes import Goal, TierMeasure
+    from glint.compiler.bench.variants import VariantMeasure
+
+    fields = {f.name for f in dataclasses.fields(VariantMeasure)}
+    variant = VariantMeasure(**{name: None for name in fields} | {
+        "id": f"D.{IMG}", "slot": LINK, "reference": IMG, "spirv": 3, "pareto": True})  # fmt: skip
+    tier = TierMeasure(scene=IMG, tier=LINK, frame_ms=1.0, flip=0.0, time_vs_reference=1.0,
+                       spirv=10)  # fmt: skip
+    goal = Goal(name=IMG, target=LINK, reached=True, measured=IMG)
+    result = BenchResult({"renderer": IMG, "platform": LINK, "cpu": True}, [variant], [tier],
+                         [goal])  # fmt: skip
+    words = _words(_assert_inert(render(to_markdown(result))))
+    assert IMG in words and LINK in words

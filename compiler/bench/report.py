@@ -21,6 +21,7 @@ from glint.compiler.bench.scenes import (
 from glint.compiler.bench.variants import VariantMeasure
 from glint.compiler.catalog.measurements import measurements_path
 from glint.compiler.files import write_atomic
+from glint.compiler.markdown import md_text
 
 
 @dataclass
@@ -105,7 +106,8 @@ def to_markdown(result: BenchResult) -> str:
     lines = [
         "# glint bench",
         "",
-        f"Measured on {machine.get('renderer', '?')}: {timing}; {machine.get('platform', '')}.",
+        f"Measured on {md_text(str(machine.get('renderer', '?')))}: {timing}; "
+        f"{md_text(str(machine.get('platform', '')))}.",
         "",
     ]
     if result.goals:
@@ -118,7 +120,8 @@ def to_markdown(result: BenchResult) -> str:
         ]
         lines += ["| goal | target | measured | reached |", "|---|---|---|---|"]
         lines += [
-            f"| {g.name} | {g.target} | {g.measured} | {'yes' if g.reached else '**no**'} |"
+            f"| {md_text(g.name)} | {md_text(g.target)} | {md_text(g.measured)} "
+            f"| {'yes' if g.reached else '**no**'} |"
             for g in result.goals
         ]
         lines.append("")
@@ -139,18 +142,25 @@ def to_markdown(result: BenchResult) -> str:
                 slot = v.slot
                 lines += [
                     "",
-                    f"### {slot}",
+                    f"### {md_text(slot)}",
                     "",
                     "| variant | reference | max abs | rms | max rel | worst at | SPIR-V | ns "
                     "| front |",
                     "|---|---|---|---|---|---|---|---|---|",
                 ]
             lines.append(
-                f"| {v.id} | {v.reference or '–'} | {_num(v.max_abs)} | {_num(v.rms)} "
+                f"| {md_text(v.id)} | {md_text(v.reference or '–')} "
+                f"| {_num(v.max_abs)} | {_num(v.rms)} "
                 f"| {_num(v.max_rel)} | {_where(v.worst_at)} | {v.spirv} | {_num(v.gpu_ns)} "
                 f"| {'★' if v.pareto else ''} |"
             )
     return "\n".join(lines) + "\n"
+
+
+def _label(text: str) -> str:
+    """A label for a chart: matplotlib reads text between two `$` as math (and fails on what is
+    not), so a dollar in a scene's name is shown as a dollar."""
+    return text.replace("$", r"\$")
 
 
 def _share(value: float | None) -> str:
@@ -169,7 +179,8 @@ def tier_table(tiers: list[TierMeasure]) -> list[str]:
     for t in tiers:
         p99 = "–" if t.flip_p99 is None else f"{t.flip_p99:.4f}"
         lines.append(
-            f"| {t.scene} | {t.tier} | {t.frame_ms:.2f} | {t.time_vs_reference:.2f} "
+            f"| {md_text(t.scene)} | {md_text(t.tier)} "
+            f"| {t.frame_ms:.2f} | {t.time_vs_reference:.2f} "
             f"| {_num(t.time_vs_template, 2)} | {t.flip:.4f} | {p99} | {_share(t.outliers)} "
             f"| {_num(t.flip_vs_truth, 3)} | {t.spirv} |"
         )
@@ -273,7 +284,7 @@ def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
             [t.flip for t in rows],
             color=colour[scene],
             lw=1,
-            label=scene,
+            label=_label(scene),
         )
         for t in rows:
             right.scatter(
@@ -286,7 +297,7 @@ def _tiers_chart(plt: Any, result: BenchResult, path: Path) -> None:
             )
             if t.tier != REFERENCE_TIER:
                 right.annotate(
-                    f"{scene} {t.tier}",
+                    _label(f"{scene} {t.tier}"),
                     (t.time_vs_reference, t.flip),
                     xytext=(4, -11 if t.tier == "fast" else 3),
                     textcoords="offset points",

@@ -15,9 +15,7 @@ from pathlib import PurePosixPath
 import glint
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
-
-from .live_canvas import live_section
-from .markdown import (
+from glint.compiler.markdown import (
     fenced,
     math_block,
     md_code,
@@ -29,6 +27,8 @@ from .markdown import (
     table,
     url_part,
 )
+
+from .live_canvas import live_section
 from .measured import Accuracy, accuracy_section
 from .pictures import SIZE, TIME, Picture
 

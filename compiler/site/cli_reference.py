@@ -12,8 +12,7 @@ from collections.abc import Iterator
 from pathlib import PurePosixPath
 
 from glint.compiler.cli import build_parser
-
-from .markdown import fenced, md_code
+from glint.compiler.markdown import fenced, md_code
 
 CLI_PAGE = PurePosixPath("cli.md")
 HELP_WIDTH = 100  # fixed, so that the page does not depend on the terminal that built it

@@ -8,9 +8,9 @@ import re
 from pathlib import Path, PurePosixPath
 
 from glint.compiler.errors import InputError
+from glint.compiler.markdown import fenced
 
 from .live_canvas import home_canvas
-from .markdown import fenced
 
 HOME_PAGE = PurePosixPath("index.md")
 PICTURE = "examples/default.png"  # under site/docs, as the README shows it

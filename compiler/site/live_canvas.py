@@ -17,8 +17,8 @@ from importlib import resources
 from pathlib import PurePosixPath
 
 import glint
+from glint.compiler.markdown import html_attr, html_text
 
-from .markdown import html_attr, html_text
 from .pictures import TIME, Picture
 
 LIVE_DIR = PurePosixPath("img") / "live"

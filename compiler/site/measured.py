@@ -35,10 +35,9 @@ from glint.compiler.catalog.loader import Snippet, load_catalog
 from glint.compiler.compose.snippet_evaluation import snippet_source
 from glint.compiler.evaluator.errors import UnsupportedError
 from glint.compiler.files import write_atomic
+from glint.compiler.markdown import md_code, md_text, path_url, safe_image, table
 from glint.compiler.verify.precision import SIMPLE_TYPES, entry_params, precision_report
 from glint.compiler.verify.probes import run_probe
-
-from .markdown import md_code, md_text, path_url, safe_image, table
 
 log = logging.getLogger(__name__)
 

@@ -26,8 +26,7 @@ from glint.compiler.catalog.loader import snippets_root
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.compose.scene import load_scene
 from glint.compiler.files import write_atomic
-
-from .markdown import md_code
+from glint.compiler.markdown import md_code
 
 log = logging.getLogger(__name__)
 

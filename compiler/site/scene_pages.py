@@ -23,10 +23,7 @@ import glint
 from glint.compiler.catalog.loader import snippets_root
 from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
 from glint.compiler.compose.scene import Scene, load_scene
-from glint.compiler.render.images import flip_error, png_pixels
-
-from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
-from .markdown import (
+from glint.compiler.markdown import (
     fenced,
     md_code,
     md_prose,
@@ -37,6 +34,9 @@ from .markdown import (
     table,
     url_part,
 )
+from glint.compiler.render.images import flip_error, png_pixels
+
+from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
 from .measured import load_bench
 from .pictures import SIZE, TIME, render_cached
 

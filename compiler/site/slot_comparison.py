@@ -22,10 +22,18 @@ import numpy as np
 import glint
 from glint.compiler.catalog.tiers import tier_choice, tier_table
 from glint.compiler.files import write_atomic
+from glint.compiler.markdown import (
+    md_code,
+    md_text,
+    path_url,
+    safe_image,
+    safe_link,
+    table,
+    url_part,
+)
 from glint.compiler.render.images import flip_image, png_bytes, png_pixels
 
 from .live_canvas import slot_live_section
-from .markdown import md_code, md_text, path_url, safe_image, safe_link, table, url_part
 from .measured import Bench, figure_png, pyplot
 from .pictures import Picture
 

@@ -1,5 +1,6 @@
-"""Markdown building blocks for the generated pages, and the one place where a value from a
-file (a scene's name, a file name, a snippet's front matter, a bench label) becomes page text.
+"""Markdown building blocks for the generated pages (the site's, and the bench report that the
+site shows), and the one place where a value from a file (a scene's name, a file name, a
+snippet's front matter, a bench label) becomes page text.
 
 Markdown passes raw HTML through untouched and turns brackets, backticks, braces (attr_list)
 and dollars (arithmatex) into markup, so every such value goes through one of these:
