@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import sys
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -38,7 +39,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return handler(args)
     except GlintError as exc:
-        print(f"{PROG}: {exc.message}", file=sys.stderr)
+        print(f"{PROG}: {shown(exc.message)}", file=sys.stderr)
         return exc.exit_code
     except KeyboardInterrupt:
         print(f"{PROG}: interrupted", file=sys.stderr)
@@ -54,6 +55,19 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
+
+
+# Characters a terminal acts on (ESC, CR, backspace, the C1 controls, bidirectional overrides):
+# a file name or a value quoted in a message must not rewrite what the user sees. A line feed
+# stays: some messages list one problem per line.
+_TERMINAL_CONTROLS = re.compile(
+    "[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]"
+)
+
+
+def shown(message: str) -> str:
+    """A message for the terminal: each control character as its Python escape (`\\x1b`)."""
+    return _TERMINAL_CONTROLS.sub(lambda m: repr(m.group())[1:-1], message)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -24,7 +24,7 @@ from .finding import Finding
 from .options import Options, enables_some_rule, unknown_code
 from .parallel import lint_items
 from .precision import precision_note
-from .reporters import FORMATS, REPORTERS, statistics, summary
+from .reporters import FORMATS, REPORTERS, printable, statistics, summary
 from .rules import all_rules, rule_doc
 from .runner import LintResult, decode
 
@@ -153,7 +153,7 @@ def collect(paths: list[str]) -> list[str]:
         elif path.is_file():
             files.append(raw)
         else:
-            raise UsageError(f"{raw}: no such file or directory")
+            raise UsageError(f"{printable(raw)}: no such file or directory")
     return files
 
 
@@ -164,7 +164,7 @@ def read_source(file: str) -> bytes:
     try:
         return Path(file).read_bytes()
     except OSError as exc:
-        raise EnvironmentProblem(f"{file}: cannot read: {exc.strerror}") from None
+        raise EnvironmentProblem(f"{printable(file)}: cannot read: {exc.strerror}") from None
 
 
 def cmd_lint(args: argparse.Namespace) -> int:

@@ -18,7 +18,7 @@ FORMATS = ("text", "concise", "json", "sarif", "github")
 def concise(findings: Sequence[Finding], sources: dict[str, str]) -> str:
     del sources
     return "".join(
-        f"{_where(f)}: {_printable(f.code)} {_printable(f.message)}{_fixable(f)}\n"
+        f"{_where(f)}: {printable(f.code)} {printable(f.message)}{_fixable(f)}\n"
         for f in findings
     )
 
@@ -27,7 +27,7 @@ def text(findings: Sequence[Finding], sources: dict[str, str]) -> str:
     """`file:line:col: CODE message`, then the line with a caret under the span."""
     out = []
     for f in findings:
-        out.append(f"{_where(f)}: {_printable(f.code)} {_printable(f.message)}{_fixable(f)}\n")
+        out.append(f"{_where(f)}: {printable(f.code)} {printable(f.message)}{_fixable(f)}\n")
         lines = sources.get(f.file, "").split("\n")
         if 1 <= f.line <= len(lines) and lines[f.line - 1].strip():
             source = _visible(lines[f.line - 1].removesuffix("\r").expandtabs(4))
@@ -143,7 +143,7 @@ def summary(findings: Sequence[Finding], fixed: int) -> str:
 
 
 def _where(f: Finding) -> str:
-    return f"{_printable(f.file)}:{f.line}:{f.column}"
+    return f"{printable(f.file)}:{f.line}:{f.column}"
 
 
 def _fixable(f: Finding) -> str:
@@ -165,7 +165,7 @@ def _property(value: str) -> str:
 _UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
 
-def _printable(text: str) -> str:
+def printable(text: str) -> str:
     """Text for a terminal: each unsafe character as its Python escape (`\\n`, `\\x1b`), so a
     file name or a message can neither forge a line of the report nor drive the terminal."""
     return _UNSAFE.sub(lambda m: repr(m.group())[1:-1], text)

@@ -270,3 +270,17 @@ def test_mesh_programs_into_a_link_to_the_null_device_write_nothing_beside_it(
     assert result.returncode == 0, result.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no out.frag, out.vert
     assert Path(null_device).is_char_device()
+
+
+def test_a_message_cannot_drive_the_terminal(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A file name with an escape sequence or a carriage return, quoted in an error, is shown
+    escaped: it can neither recolour the terminal nor overwrite the line it is on."""
+    from glint.compiler.cli import main
+
+    name = str(tmp_path / "a\x1b[2J\rfake.toml")
+    assert main(["compose", name]) == 1
+    err = capsys.readouterr().err
+    assert "\x1b" not in err and "\r" not in err
+    assert "\\x1b[2J\\rfake.toml" in err

@@ -857,3 +857,12 @@ def test_random_json_as_an_entry_never_changes_the_output(tmp_path: Path) -> Non
             assert entry.read_bytes() == written  # the entry was rewritten from the fresh run
 
         check()
+
+
+def test_a_missing_file_name_is_shown_on_one_line(capsys: pytest.CaptureFixture[str]) -> None:
+    """A file name holding a line feed is quoted escaped, so the message stays one line."""
+    from glint.compiler.cli import main
+
+    assert main(["lint", "no\nsuch\x1b.glsl"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "no\\nsuch\\x1b.glsl" in err
