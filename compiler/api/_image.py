@@ -76,7 +76,7 @@ class Image:
         return self.to_png()
 
     def __repr__(self) -> str:
-        mean = ", ".join(f"{v:.4g}" for v in self.stats["mean"])
+        mean = ", ".join("n/a" if v is None else f"{v:.4g}" for v in self.stats["mean"])
         return (
             f"<glint.Image {self.width}x{self.height}, iTime {self.time:g}, "
             f"NaN pixels {self.stats['nan']}, Inf pixels {self.stats['inf']}, "
