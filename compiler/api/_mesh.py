@@ -10,8 +10,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from glint.compiler.catalog.tiers import TIERS
+from glint.compiler.errors import UsageError
 from glint.compiler.target.mesh import MESH_TARGETS
 
+from . import _args
 from ._shader import _check_choice, load_scene
 
 if TYPE_CHECKING:
@@ -49,6 +51,12 @@ class MeshShader:
 
     def files(self, base: str | os.PathLike[str]) -> dict[Path, str]:
         """The shaders by the file names `save` gives them (see MeshComposition.files)."""
+        base = _args.path("base", base)
+        if Path(base).name in ("", ".", ".."):
+            raise UsageError(
+                f"base: {base!r} names a folder; give a file stem such as 'out/sphere' "
+                "(sphere.vert, sphere.frag, sphere.background.frag)"
+            )
         return self.composition.files(base)
 
     def save(self, base: str | os.PathLike[str]) -> list[Path]:
@@ -87,8 +95,9 @@ def compose_mesh(
     _check_choice("target", target, MESH_TARGETS)
     if tier is not None:
         _check_choice("tier", tier, TIERS)
+    overrides = _args.str_mapping("variants", variants)
     model = load_scene(scene)
-    return MeshShader(compose_mesh_scene(model, target, tier, dict(variants or {})))
+    return MeshShader(compose_mesh_scene(model, target, tier, overrides))
 
 
 def draw_mesh_shader(
