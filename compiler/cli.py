@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import re
 import sys
@@ -22,6 +23,7 @@ from typing import TYPE_CHECKING
 from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import GlintError, UsageError
 from glint.compiler.files import read_text_file
+from glint.compiler.render import limits
 from glint.compiler.target.cross import LANGS
 from glint.compiler.target.mesh import MESH_TARGETS
 from glint.compiler.target.shadertoy import TARGETS
@@ -115,11 +117,21 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument(
         "-o", "--output", required=True, help="PNG file to write (-: standard output)"
     )
-    render.add_argument("--size", default="640x360", type=_size, help="WxH (default 640x360)")
-    render.add_argument("--time", type=float, default=0.0, help="iTime in seconds")
-    render.add_argument("--frame", type=int, default=0, help="iFrame")
+    render.add_argument(
+        "--size",
+        default="640x360",
+        type=_render_size,
+        help=f"WxH, each 1..{limits.MAX_SIDE}, within the memory available (default 640x360)",
+    )
+    render.add_argument("--time", type=_uniform_float, default=0.0, help="iTime in seconds")
+    render.add_argument("--frame", type=_frame, default=0, help=f"iFrame, 0..{limits.MAX_FRAME}")
     render.add_argument("--mouse", type=_mouse, default=(0.0, 0.0, 0.0, 0.0), help="x,y,z,w")
-    render.add_argument("--timeout", type=float, default=60.0, help="seconds before giving up")
+    render.add_argument(
+        "--timeout",
+        type=_timeout,
+        default=60.0,
+        help=f"seconds before giving up (default 60, at most {limits.MAX_TIMEOUT_S:g})",
+    )
     render.add_argument("--json", action="store_true", help="print the report as JSON")
     _add_quality(render)
     render.set_defaults(handler=cmd_render)
@@ -214,9 +226,54 @@ def _size(text: str) -> tuple[int, int]:
         w, h = (int(v) for v in text.lower().split("x"))
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected WxH such as 640x360, got {text!r}") from None
-    if not (1 <= w <= 8192 and 1 <= h <= 8192):
-        raise argparse.ArgumentTypeError(f"width and height must be 1..8192, got {text!r}")
+    if not (1 <= w <= limits.MAX_SIDE and 1 <= h <= limits.MAX_SIDE):
+        raise argparse.ArgumentTypeError(
+            f"width and height must be 1..{limits.MAX_SIDE}, got {text!r}"
+        )
     return w, h
+
+
+def _render_size(text: str) -> tuple[int, int]:
+    """WxH, and no larger than what the machine can render (limits.size_problem)."""
+    width, height = _size(text)
+    problem = limits.size_problem(width, height)
+    if problem is not None:
+        raise argparse.ArgumentTypeError(problem)
+    return width, height
+
+
+def _number(text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+
+
+def _timeout(text: str) -> float:
+    seconds = _number(text)
+    problem = limits.timeout_problem(seconds)
+    if problem is not None:
+        raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
+    return seconds
+
+
+def _uniform_float(text: str) -> float:
+    value = _number(text)
+    problem = limits.float32_problem(value)
+    if problem is not None:
+        raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
+    return value
+
+
+def _frame(text: str) -> int:
+    try:
+        frame = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+    problem = limits.frame_problem(frame)
+    if problem is not None:
+        raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
+    return frame
 
 
 def _names(text: str) -> list[str]:
@@ -243,6 +300,10 @@ def _mouse(text: str) -> tuple[float, float, float, float]:
         values = ()
     if len(values) != 4:
         raise argparse.ArgumentTypeError(f"expected four numbers x,y,z,w, got {text!r}")
+    if any(limits.float32_problem(v) for v in values):
+        raise argparse.ArgumentTypeError(
+            f"each of x,y,z,w {limits.float32_problem(float('inf'))}, got {text!r}"
+        )
     return values  # type: ignore[return-value]
 
 
@@ -459,7 +520,9 @@ def cmd_render(args: argparse.Namespace) -> int:
     }
     out = sys.stderr if to_stdout else sys.stdout
     if args.json:
-        print(json.dumps(report, indent=2), file=out)
+        # JSON has no NaN or Infinity (json.dumps would write them, and JSON readers refuse
+        # them): a figure that is not finite is null, as stats give None where nothing is.
+        print(json.dumps(_finite_or_null(report), indent=2, allow_nan=False), file=out)
     else:
         where = "standard output" if to_stdout else args.output
         size = f"{width}x{height}, iTime {args.time}"
@@ -471,6 +534,17 @@ def cmd_render(args: argparse.Namespace) -> int:
             file=out,
         )
     return 1 if stats["nan"] or stats["inf"] else 0
+
+
+def _finite_or_null(value: object) -> object:
+    """`value` with every float that is NaN or infinite, at any depth, replaced by None."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {key: _finite_or_null(item) for key, item in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite_or_null(item) for item in value]
+    return value
 
 
 # Suffixes of the HLSL and Metal files `compose --target hlsl|msl` writes.

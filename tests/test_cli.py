@@ -284,3 +284,81 @@ def test_a_message_cannot_drive_the_terminal(
     err = capsys.readouterr().err
     assert "\x1b" not in err and "\r" not in err
     assert "\\x1b[2J\\rfake.toml" in err
+@pytest.mark.parametrize(
+    "option, value, message",
+    [
+        ("--timeout", "inf", "--timeout: must be more than 0 and at most 3600 seconds, got 'inf'"),
+        ("--timeout", "nan", "--timeout: must be more than 0 and at most 3600 seconds, got 'nan'"),
+        ("--timeout", "1e308", "--timeout: must be more than 0 and at most 3600 seconds"),
+        ("--timeout", "0", "--timeout: must be more than 0 and at most 3600 seconds, got '0'"),
+        ("--timeout", "-1", "--timeout: must be more than 0 and at most 3600 seconds, got '-1'"),
+        ("--timeout", "3601", "--timeout: must be more than 0 and at most 3600 seconds"),
+        ("--timeout", "soon", "--timeout: expected a number, got 'soon'"),
+        ("--time", "inf", "--time: must be a finite number from -3.4e+38 to 3.4e+38"),
+        ("--time", "nan", "--time: must be a finite number"),
+        ("--time", "1e39", "--time: must be a finite number"),
+        ("--frame", "99999999999", "--frame: must be from 0 to 2147483647"),
+        ("--frame", "-1", "--frame: must be from 0 to 2147483647"),
+        ("--frame", "1.5", "--frame: expected a whole number, got '1.5'"),
+        ("--mouse", "inf,0,0,0", "--mouse: each of x,y,z,w must be a finite number"),
+        ("--mouse", "0,nan,0,0", "--mouse: each of x,y,z,w must be a finite number"),
+        ("--mouse", "1,2", "--mouse: expected four numbers x,y,z,w, got '1,2'"),
+        ("--size", "0x5", "--size: width and height must be 1..8192, got '0x5'"),
+        ("--size", "-5x5", "--size: width and height must be 1..8192, got '-5x5'"),
+        ("--size", "8193x8", "--size: width and height must be 1..8192"),
+        ("--size", "8x", "--size: expected WxH such as 640x360, got '8x'"),
+    ],
+)
+def test_render_options_out_of_range_are_usage_errors(
+    tmp_path: Path, option: str, value: str, message: str
+) -> None:
+    shader = tmp_path / "flat.glsl"
+    shader.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }\n")
+    out = tmp_path / "flat.png"
+    result = run("render", str(shader), "-o", str(out), f"{option}={value}")
+    assert result.returncode == 2, result.stderr
+    assert "Traceback" not in result.stderr and "internal error" not in result.stderr
+    assert f"glint render: error: argument {message}" in result.stderr
+    assert not out.exists()
+
+
+def test_render_refuses_a_size_past_the_memory_it_may_use(tmp_path: Path) -> None:
+    """8192x8192 needs about 4.6 GB; under a 1 GB data limit (ulimit -d) it is refused before
+    anything is drawn, with what it needs and what there is."""
+    shader = tmp_path / "flat.glsl"
+    shader.write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }\n")
+    out = tmp_path / "big.png"
+    command = " ".join([*GLINT, "render", str(shader), "-o", str(out), "--size", "8192x8192"])
+    result = subprocess.run(
+        ["sh", "-c", f"ulimit -d 1048576 && exec {command}"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert result.returncode == 2, result.stderr
+    assert (
+        "argument --size: 8192x8192 needs about 4.6 GB of memory to render, and only 1.0 GB is "
+        "available here; choose a smaller size" in result.stderr
+    )
+    assert not out.exists()
+
+
+@pytest.mark.render
+def test_render_json_is_json_when_pixels_are_nan(tmp_path: Path) -> None:
+    """A channel with no finite value has no mean: null in the report, never NaN (which no JSON
+    reader accepts)."""
+    shader = tmp_path / "nan.glsl"
+    shader.write_text(
+        "void mainImage(out vec4 c, in vec2 p) {\n"
+        "    c = vec4(sqrt(-1.0 - iTime), 1.0 / (iTime - iTime), 0.25, 1.0);\n}\n"
+    )
+    result = run("render", str(shader), "-o", str(tmp_path / "nan.png"), "--size", "8x4", "--json")
+    assert result.returncode == 1, result.stderr
+
+    def refuse(constant: str) -> None:
+        raise AssertionError(f"{constant} in the JSON report")
+
+    report = json.loads(result.stdout, parse_constant=refuse)
+    assert (report["nan"], report["inf"]) == (32, 32)
+    assert report["mean"] == [None, None, 0.25] and report["std"] == [None, None, 0.0]
+    assert report["finite_min"] == report["finite_max"] == 0.25

@@ -10,6 +10,7 @@ import pytest
 
 from glint.compiler.errors import EnvironmentProblem, InputError
 from glint.compiler.render.images import (
+    BLOCK_PIXELS,
     OUTLIER_FLOOR,
     flip_error,
     flip_map,
@@ -19,7 +20,10 @@ from glint.compiler.render.images import (
     luminance,
     outlier_mask,
     outlier_share,
+    png_bytes,
+    png_pixels,
     save_png,
+    to_display,
 )
 
 
@@ -51,6 +55,54 @@ def test_stats_count_broken_and_blank_pixels() -> None:
     assert stats["black_fraction"] == pytest.approx(10 / 16)
     assert stats["white_fraction"] == pytest.approx(4 / 16)
     assert stats["finite_max"] == 1.0
+
+
+def test_a_channel_with_no_finite_value_has_no_mean() -> None:
+    img = np.zeros((2, 3, 4), dtype=np.float32)
+    img[:, :, 0] = np.nan
+    img[:, :, 1] = np.inf
+    stats = image_stats(img)
+    assert stats["mean"] == [None, None, 0.0] and stats["std"] == [None, None, 0.0]
+    assert stats["finite_min"] == stats["finite_max"] == 0.0
+
+
+def test_stats_of_a_large_image_are_numpy_s_over_the_whole() -> None:
+    """Taken in blocks of rows, the figures are those of numpy over the whole image."""
+    rng = np.random.default_rng(7)
+    img = rng.normal(0.5, 0.5, (3 * BLOCK_PIXELS // 500 + 7, 500, 4)).astype(np.float32)
+    img[3, 4, 0] = np.nan
+    img[-1, -1, 2] = -np.inf
+    stats = image_stats(img)
+    rgb = img[:, :, :3].astype(np.float64)
+    masked = np.ma.masked_invalid(rgb)
+    assert stats["mean"] == pytest.approx(list(masked.mean(axis=(0, 1))), rel=1e-12)
+    assert stats["std"] == pytest.approx(list(masked.std(axis=(0, 1))), rel=1e-9)
+    assert stats["finite_min"] == float(masked.min()) and stats["finite_max"] == float(masked.max())
+    assert (stats["nan"], stats["inf"]) == (1, 1)
+    # The PNG, written in blocks, is the whole image in display space.
+    display = (to_display(img) * 255.0).round().astype(np.uint8)
+    assert np.array_equal(png_pixels(png_bytes(img)), display / np.float32(255.0))
+    assert tuple(display[3, 4]) == (255, 0, 255)  # NaN is magenta
+
+
+def test_stats_and_png_of_a_large_image_take_little_memory() -> None:
+    """Statistics and PNG output of a 1024x1024 float frame (16 MB) allocate what a few blocks
+    take and the PNG's 8-bit pixels (3 MB) and its bytes, not copies of the frame (measured
+    with tracemalloc: 6.5 MB and 7.3 MB; 109 MB and 40 MB before they went by blocks)."""
+    import tracemalloc
+
+    img = np.random.default_rng(3).random((1024, 1024, 4), dtype=np.float32)
+    tracemalloc.start()
+    try:
+        image_stats(img)
+        _, stats_peak = tracemalloc.get_traced_memory()
+        tracemalloc.reset_peak()
+        png_bytes(img)
+        _, png_peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert stats_peak < 16 << 20, stats_peak
+    assert png_peak < 16 << 20, png_peak
 
 
 def test_png_round_trip(tmp_path: os.PathLike[str]) -> None:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
-from glint.compiler.render import image_stats, render, render_full
+from glint.compiler.render import image_stats, limits, render, render_full
 
 pytestmark = pytest.mark.render
 
@@ -111,3 +111,57 @@ def test_no_egl_driver_is_an_environment_problem(monkeypatch: pytest.MonkeyPatch
     with pytest.raises(EnvironmentProblem, match="libegl-mesa0") as raised:
         render(shader("fragColor = vec4(1.0);"), 8, 4)
     assert raised.value.exit_code == 2
+
+
+def test_the_worker_runs_under_a_memory_limit(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The worker's RLIMIT_DATA holds: a frame past it is "ran out of memory" with the size and
+    the limit, while a small frame renders under the same limit. Two llvmpipe threads, so that
+    the driver's own need (about 160 MB, measured) does not depend on this machine's CPUs."""
+    monkeypatch.setenv("LP_NUM_THREADS", "2")
+    monkeypatch.setattr(limits, "worker_memory_limit", lambda pixels, extra=0: 400 << 20)
+    flat = shader("fragColor = vec4(0.5);")
+    assert (render(flat, 64, 64) == 0.5).all()
+    start = time.monotonic()
+    with pytest.raises(InputError) as raised:
+        render(flat, 8192, 4096)  # 512 MB for the frame alone
+    message = raised.value.message
+    assert message.startswith(
+        "the renderer ran out of memory drawing a 8192x4096 image (its limit was 400 MB"
+    ), message
+    assert "render a smaller size, or simplify the shader" in message
+    assert time.monotonic() - start < 30
+
+
+def test_the_memory_limit_leaves_room_for_the_default_scene() -> None:
+    """The limit for a 640x360 frame is well above what the default scene needs (159 MB of
+    data with two threads, measured; 16 MB more for each further thread)."""
+    threads = limits._llvmpipe_threads()
+    needed = (159 << 20) + (16 << 20) * max(0, threads - 2)
+    assert limits.worker_memory_limit(640 * 360) >= 2 * needed
+
+
+def test_a_size_past_the_memory_available_is_refused_up_front(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(limits, "available_memory", lambda: 300 << 20)
+    with pytest.raises(UsageError) as raised:
+        render(shader("fragColor = vec4(1.0);"), 4096, 4096)
+    assert raised.value.message.startswith("image size: 4096x4096 needs about ")
+    assert "only 300 MB is available here; choose a smaller size" in raised.value.message
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"timeout": 0}, "timeout: must be more than 0"),
+        ({"timeout": float("inf")}, "timeout: must be more than 0 and at most 3600 seconds"),
+        ({"time": float("nan")}, "time: must be a finite number"),
+        ({"frame": 2**31}, "frame: must be from 0 to 2147483647"),
+        ({"mouse": (0.0, 0.0, float("inf"), 0.0)}, r"mouse\[2\]: must be a finite number"),
+    ],
+)
+def test_values_the_renderer_cannot_take_are_usage_errors(
+    kwargs: dict[str, object], message: str
+) -> None:
+    with pytest.raises(UsageError, match=message):
+        render(shader("fragColor = vec4(1.0);"), 8, 4, **kwargs)  # type: ignore[arg-type]

@@ -6,10 +6,18 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from glint.compiler.errors import InputError
+from glint.compiler.errors import InputError, UsageError
 
 if TYPE_CHECKING:
     from glint.compiler.catalog import loader
+
+
+class UnknownSnippet(InputError, KeyError):
+    """An id that names no snippet: an InputError like every error of glint's, and a KeyError
+    as a Mapping's lookup raises, so that `in` and `get` work."""
+
+    def __str__(self) -> str:  # KeyError's own would quote the message
+        return self.message
 
 
 @dataclass(frozen=True, repr=False)
@@ -54,13 +62,17 @@ class Catalog(Mapping[str, Snippet]):
         self._snippets = {key: _snippet(value) for key, value in snippets.snippets.items()}
 
     def __getitem__(self, snippet_id: str) -> Snippet:
+        if not isinstance(snippet_id, str):
+            raise UnknownSnippet(
+                f"a snippet id is a str such as 'D.ggx', not {type(snippet_id).__name__}"
+            )
         if snippet_id in self._snippets:
             return self._snippets[snippet_id]
         try:
             self._loaded.get(snippet_id)  # raises, naming the closest ids
         except InputError as exc:
-            raise KeyError(exc.message) from None
-        raise KeyError(snippet_id)
+            raise UnknownSnippet(exc.message) from None
+        raise UnknownSnippet(f"unknown snippet {snippet_id!r}; see `glint catalog`")
 
     def __iter__(self) -> Iterator[str]:
         return iter(self._snippets)
@@ -69,8 +81,14 @@ class Catalog(Mapping[str, Snippet]):
         return len(self._snippets)
 
     def slot(self, name: str) -> list[Snippet]:
-        """The variants of one slot, e.g. `slot("D")`."""
-        return [s for s in self._snippets.values() if s.slot == name]
+        """The variants of one slot, e.g. `slot("D")`; InputError for a slot that has none."""
+        if not isinstance(name, str):
+            raise UsageError(f"slot: expected a str such as 'D', not {type(name).__name__}")
+        found = [s for s in self._snippets.values() if s.slot == name]
+        if not found:
+            slots = ", ".join(dict.fromkeys(s.slot for s in self._snippets.values()))
+            raise InputError(f"unknown slot {name!r}; slots: {slots}")
+        return found
 
     def __repr__(self) -> str:
         slots = len({s.slot for s in self._snippets.values()})
@@ -79,7 +97,8 @@ class Catalog(Mapping[str, Snippet]):
 
 def catalog() -> Catalog:
     """The snippet catalog: `catalog()["D.ggx"].source`, `catalog().slot("shadow")`. An unknown
-    id raises KeyError with the message of `glint catalog show` (naming the closest ids)."""
+    id raises an InputError that is also a KeyError, with the message of `glint catalog show`
+    (naming the closest ids)."""
     from glint.compiler.catalog.loader import load_catalog
 
     return Catalog(load_catalog())

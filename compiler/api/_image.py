@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 from glint.compiler.errors import UsageError
 from glint.compiler.files import read_text_file
 
+from . import _args
 from ._mesh import MeshShader, compose_mesh, draw_mesh_shader
 from ._shader import Shader, compose, is_source, load_scene
 
@@ -18,8 +19,6 @@ if TYPE_CHECKING:
     import numpy as np
 
     from glint.compiler.compose.scene import Scene
-
-MAX_SIZE = 8192  # as `glint render --size`
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -64,7 +63,8 @@ class Image:
         """Write the PNG to `path` (atomically); returns the path."""
         from glint.compiler.render.images import save_png
 
-        save_png(self.pixels, str(path))
+        path = _args.path("path", path)
+        save_png(self.pixels, path)
         return Path(path)
 
     def __array__(self, dtype: Any = None, copy: bool | None = None) -> np.ndarray:
@@ -76,7 +76,7 @@ class Image:
         return self.to_png()
 
     def __repr__(self) -> str:
-        mean = ", ".join(f"{v:.4g}" for v in self.stats["mean"])
+        mean = ", ".join("n/a" if v is None else f"{v:.4g}" for v in self.stats["mean"])
         return (
             f"<glint.Image {self.width}x{self.height}, iTime {self.time:g}, "
             f"NaN pixels {self.stats['nan']}, Inf pixels {self.stats['inf']}, "
@@ -107,11 +107,15 @@ def render(
     raise: see `Image.finite`.
     """
     from glint.compiler.render import image_stats, render_full
+    from glint.compiler.render.limits import check_request
 
-    width, height = _size(size)
-    if len(mouse) != 4:
-        raise UsageError(f"mouse: expected four numbers x, y, z, w, got {tuple(mouse)!r}")
-    x, y, z, w = (float(v) for v in mouse)
+    width, height = _args.numbers_of("size", size, 2, whole=True)
+    x, y, z, w = _args.numbers_of("mouse", mouse, 4)
+    time = _args.number("time", time)
+    frame = _args.integer("frame", frame)
+    timeout = _args.number("timeout", timeout)
+    # The values (size and the memory it takes, timeout, float32 uniforms) before any work.
+    check_request(width, height, time, frame, (x, y, z, w), timeout)
     meshes = _mesh_shader(shader)
     if meshes is not None:
         result = draw_mesh_shader(meshes, (width, height), time, (x, y, z, w), timeout)
@@ -119,7 +123,8 @@ def render(
         source = _source(shader)
         result = render_full(source, width, height, time, frame, (x, y, z, w), timeout=timeout)
     return Image(
-        pixels=result.image[:, :, :3].copy(),
+        # A view of the RGBA frame, not a copy: a large frame is in memory once.
+        pixels=result.image[:, :, :3],
         stats=image_stats(result.image),  # over RGBA, as `glint render` counts NaN and Inf
         renderer=result.renderer,
         glsl_version=result.glsl_version,
@@ -129,23 +134,13 @@ def render(
     )
 
 
-def _size(size: tuple[int, int]) -> tuple[int, int]:
-    try:
-        width, height = (int(v) for v in size)
-    except (TypeError, ValueError):
-        raise UsageError(f"size: expected (width, height), got {size!r}") from None
-    if not (1 <= width <= MAX_SIZE and 1 <= height <= MAX_SIZE):
-        raise UsageError(f"size: width and height must be 1..{MAX_SIZE}, got {width}x{height}")
-    return width, height
-
-
 def _mesh_shader(shader: object) -> MeshShader | None:
     """The mesh shader to draw: `shader` itself, or a mesh scene composed for mesh-desktop."""
     if isinstance(shader, MeshShader):
         return shader
     if is_source(shader) or isinstance(shader, Shader):
         return None
-    if isinstance(shader, str | os.PathLike) and not os.fspath(shader).endswith(".toml"):
+    if isinstance(shader, str | os.PathLike) and not _args.path("shader", shader).endswith(".toml"):
         return None
     from glint.compiler.compose.scene import Scene
 
@@ -167,8 +162,8 @@ def _source(shader: object) -> str:
     if is_source(shader):
         return str(shader)
     if isinstance(shader, str | os.PathLike):
-        path = os.fspath(shader)
-        return compose(path).text if str(path).endswith(".toml") else read_text_file(str(path))
+        path = _args.path("shader", shader)
+        return compose(path).text if path.endswith(".toml") else read_text_file(path)
     from glint.compiler.compose.scene import Scene
 
     if isinstance(shader, Mapping | Scene):

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 from glint.compiler.errors import UsageError
 from glint.compiler.target.shadertoy import TARGETS
 
+from . import _args
 from ._shader import Shader, is_source
 
 if TYPE_CHECKING:
@@ -42,22 +43,39 @@ def lint_shader(
 
     if isinstance(shader, Shader):
         target = target or shader.target
-    if target is not None and target not in TARGETS:
-        raise UsageError(f"target: unknown value {target!r}; expected one of {', '.join(TARGETS)}")
+    if target is not None:
+        _args.choice("target", target, TARGETS)
+    selected = _codes("select", select)
+    if selected == []:
+        raise UsageError(
+            "select: no rule codes given; pass codes or prefixes such as 'N001', 'L' or 'ALL' "
+            "(None: the configured selection)"
+        )
     flags = argparse.Namespace(
-        select=_codes(select), ignore=_codes(ignore), target=target, no_glslang=not glslang
+        select=selected,
+        ignore=_codes("ignore", ignore),
+        target=target,
+        no_glslang=not _args.flag("glslang", glslang),
     )
     options = options_for(flags)  # the configuration file, then the flags, checked as the CLI
     if isinstance(shader, Shader) or is_source(shader):
         return lint_bytes(str(shader).encode("utf-8"), "<input>", options).findings
+    if not isinstance(shader, str | os.PathLike):
+        raise UsageError(
+            "shader: expected GLSL text (a str with a line break), the path of a file or a "
+            f"folder, or a Shader, not {type(shader).__name__}"
+        )
+    path = _args.path("shader", shader)
+    if path == "-":
+        raise UsageError("shader: '-' (standard input) is for `glint lint`; pass the text itself")
     findings: list[Finding] = []
-    for file in collect([os.fspath(shader)]):  # type: ignore[arg-type]
+    for file in collect([path]):
         findings += lint_bytes(read_source(file), file, options).findings
     return findings
 
 
-def _codes(codes: str | Sequence[str] | None) -> list[str] | None:
-    if codes is None:
+def _codes(name: str, codes: object) -> list[str] | None:
+    items = _args.str_list(name, codes)
+    if items is None:
         return None
-    items = codes.split(",") if isinstance(codes, str) else codes
     return [c.strip().upper() for c in items if c.strip()]

@@ -10,8 +10,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from glint.compiler.catalog.tiers import TIERS
+from glint.compiler.errors import UsageError
 from glint.compiler.target.mesh import MESH_TARGETS
 
+from . import _args
 from ._shader import _check_choice, load_scene
 
 if TYPE_CHECKING:
@@ -49,16 +51,23 @@ class MeshShader:
 
     def files(self, base: str | os.PathLike[str]) -> dict[Path, str]:
         """The shaders by the file names `save` gives them (see MeshComposition.files)."""
+        base = _args.path("base", base)
+        if Path(base).name in ("", ".", ".."):
+            raise UsageError(
+                f"base: {base!r} names a folder; give a file stem such as 'out/sphere' "
+                "(sphere.vert, sphere.frag, sphere.background.frag)"
+            )
         return self.composition.files(base)
 
     def save(self, base: str | os.PathLike[str]) -> list[Path]:
         """Write every shader (atomically) beside BASE; returns the paths written."""
         from glint.compiler.files import is_null_device, write_atomic
 
+        files = self.files(base)  # checks `base` first
         # into the null device: every program thrown away, nothing written beside the device
         thrown = is_null_device(base)
         written = []
-        for path, text in self.files(base).items():
+        for path, text in files.items():
             where = Path(base) if thrown else path
             write_atomic(where, text.encode("utf-8"))
             written.append(where)
@@ -90,8 +99,9 @@ def compose_mesh(
     _check_choice("target", target, MESH_TARGETS)
     if tier is not None:
         _check_choice("tier", tier, TIERS)
+    overrides = _args.str_mapping("variants", variants)
     model = load_scene(scene)
-    return MeshShader(compose_mesh_scene(model, target, tier, dict(variants or {})))
+    return MeshShader(compose_mesh_scene(model, target, tier, overrides))
 
 
 def draw_mesh_shader(

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import html
-import math
 import os
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -14,6 +13,8 @@ from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import UsageError
 from glint.compiler.target.cross import LANGS
 from glint.compiler.target.shadertoy import TARGETS
+
+from . import _args
 
 # What `compose` writes: the GLSL targets, and HLSL and MSL converted from the shadertoy one.
 COMPOSE_TARGETS = TARGETS + LANGS
@@ -83,6 +84,7 @@ class Shader:
         from glint.compiler.compose.pipeline import emit_shader
 
         _check_choice("target", target, COMPOSE_TARGETS)
+        params_as_uniforms = _args.flag("params_as_uniforms", params_as_uniforms)
         _check_uniforms(target, params_as_uniforms)
         emit_as = "shadertoy" if target in LANGS else target
         composed = emit_shader(
@@ -111,6 +113,7 @@ class Shader:
         """Write the shader to `path` (atomically, like `glint compose -o`); returns the path."""
         from glint.compiler.files import write_atomic
 
+        path = _args.path("path", path)
         write_atomic(path, self.text.encode("utf-8"))
         return Path(path)
 
@@ -162,14 +165,16 @@ def compose(
     from glint.compiler.compose.pipeline import compose_scene
 
     _check_choice("target", target, COMPOSE_TARGETS)
+    params_as_uniforms = _args.flag("params_as_uniforms", params_as_uniforms)
     _check_uniforms(target, params_as_uniforms)
     if tier is not None:
         _check_choice("tier", tier, TIERS)
-    if budget is not None and not (0 < budget < math.inf):
+    overrides = _args.str_mapping("variants", variants)
+    if budget is not None and not _args.number("budget", budget) > 0:
         raise UsageError(f"budget: expected a positive number of ns, got {budget!r}")
     model = load_scene(scene)
     emit_as = "shadertoy" if target in LANGS else target
-    composed = compose_scene(model, emit_as, tier, dict(variants or {}), budget, params_as_uniforms)
+    composed = compose_scene(model, emit_as, tier, overrides, budget, params_as_uniforms)
     return Shader(
         _converted(composed.text, target, model.name),
         target,
@@ -201,8 +206,10 @@ def load_scene(scene: SceneInput) -> Scene:
     """The validated scene of a path, a dict, a Scene or None (the embedded default)."""
     from glint.compiler.compose import scene as scenes
 
-    if scene is None or isinstance(scene, str | os.PathLike):
-        return scenes.load_scene(scene)
+    if scene is None:
+        return scenes.load_scene(None)
+    if isinstance(scene, str | os.PathLike):
+        return scenes.load_scene(_args.path("scene", scene))
     if isinstance(scene, scenes.Scene):
         return scene
     if isinstance(scene, Mapping):
@@ -220,8 +227,7 @@ def _check_uniforms(target: str, params_as_uniforms: bool) -> None:
 
 
 def _check_choice(name: str, value: str, choices: tuple[str, ...]) -> None:
-    if value not in choices:
-        raise UsageError(f"{name}: unknown value {value!r}; expected one of {', '.join(choices)}")
+    _args.choice(name, value, choices)
 
 
 def is_source(value: object) -> bool:

@@ -141,6 +141,9 @@ def draw(ctx: Any, program: Any, frame: Frame, repeats: int = 1) -> tuple[np.nda
         texture = ctx.texture((cols, rows), 4, np.ascontiguousarray(data, np.float32), dtype="f4")
         texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
         texture.use(location=unit)
+    # The array the frame is read into comes first: where memory is short, numpy says so with
+    # a MemoryError, where the driver would fail in ways that are harder to tell apart.
+    pixels = np.empty((frame.height, frame.width, 4), dtype=np.float32)
     target = ctx.texture((frame.width, frame.height), 4, dtype="f4")
     framebuffer = ctx.framebuffer(color_attachments=[target])
     framebuffer.use()
@@ -153,7 +156,20 @@ def draw(ctx: Any, program: Any, frame: Frame, repeats: int = 1) -> tuple[np.nda
         vertex_array.render(moderngl.TRIANGLES, vertices=3)
         ctx.finish()
         seconds.append(time.perf_counter() - start)
-    raw = framebuffer.read(components=4, dtype="f4")
-    pixels = np.frombuffer(raw, dtype=np.float32).reshape(frame.height, frame.width, 4)
-    # GL's origin is the bottom-left corner; images start at the top.
-    return np.ascontiguousarray(pixels[::-1]), seconds
+    return read_frame(framebuffer, pixels), seconds
+
+
+def read_frame(framebuffer: Any, pixels: np.ndarray) -> np.ndarray:
+    """Read the framebuffer into `pixels` (H x W x 4 float32) and put row 0 at the top.
+
+    Read in place, with no bytes object and no flipped copy in between, so that a frame costs
+    its own size once more, not three times."""
+    framebuffer.read_into(pixels, components=4, dtype="f4")
+    # GL's origin is the bottom-left corner; images start at the top. Swap rows in place.
+    height = pixels.shape[0]
+    for top in range(height // 2):
+        bottom = height - 1 - top
+        row = pixels[top].copy()
+        pixels[top] = pixels[bottom]
+        pixels[bottom] = row
+    return pixels

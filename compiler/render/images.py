@@ -35,35 +35,72 @@ def _rgb(img: np.ndarray) -> np.ndarray:
     return array[:, :, :3].astype(np.float32)
 
 
+# Statistics and PNG output go through a large image in blocks of about this many pixels, so that
+# their temporary arrays stay a few MB however large the image (limits.PIPELINE_BYTES_PER_PIXEL).
+BLOCK_PIXELS = 1 << 16
+
+
+def _row_blocks(array: np.ndarray) -> list[np.ndarray]:
+    """Views of consecutive rows of `array`, each about BLOCK_PIXELS pixels."""
+    height = array.shape[0]
+    width = array.shape[1] if array.ndim > 1 else 1
+    step = max(1, BLOCK_PIXELS // max(width, 1))
+    return [array[top : top + step] for top in range(0, height, step)]
+
+
 def image_stats(img: np.ndarray) -> dict[str, Any]:
     """Summarise an image so a test or a report can tell a real render from a blank or broken one.
 
     `nan`/`inf` count pixels with any such channel (alpha included); the other figures are over
-    the finite RGB values, and are None when there are none.
+    the finite RGB values, and are None when there are none (`mean` and `std` per channel:
+    None for a channel with no finite value).
     """
     array = np.asarray(img, dtype=np.float32)
-    channels = array if array.ndim == 3 else array[:, :, None]
-    rgb = _rgb(array)
-    finite = np.isfinite(rgb)
-    values = rgb[finite]
-    all_finite = finite.all(axis=2)
-    # float64 so that a constant channel has a standard deviation of exactly 0.
-    masked = np.ma.masked_array(rgb.astype(np.float64), mask=~finite)
-    black = all_finite & (rgb <= BLACK_LEVEL).all(axis=2)
-    white = all_finite & (rgb >= WHITE_LEVEL).all(axis=2)
-    pixels = max(rgb.shape[0] * rgb.shape[1], 1)
-    has_values = values.size > 0
+    if array.ndim == 3:
+        _rgb(array[:1, :1])  # the shape check, before any work
+    blocks = _row_blocks(array)
+    nan = inf = black = white = 0
+    counts = np.zeros(3, dtype=np.int64)
+    sums = np.zeros(3, dtype=np.float64)
+    low, high = np.inf, -np.inf
+    for block in blocks:
+        channels = block if block.ndim == 3 else block[:, :, None]
+        nan += int(np.isnan(channels).any(axis=2).sum())
+        inf += int(np.isinf(channels).any(axis=2).sum())
+        rgb = _rgb(block)
+        finite = np.isfinite(rgb)
+        all_finite = finite.all(axis=2)
+        black += int((all_finite & (rgb <= BLACK_LEVEL).all(axis=2)).sum())
+        white += int((all_finite & (rgb >= WHITE_LEVEL).all(axis=2)).sum())
+        counts += finite.sum(axis=(0, 1))
+        values = np.where(finite, rgb, 0.0)
+        # float64 sums: a constant channel's mean is then exactly its value, its std exactly 0.
+        sums += values.sum(axis=(0, 1), dtype=np.float64)
+        if finite.any():
+            low = min(low, float(rgb[finite].min()))
+            high = max(high, float(rgb[finite].max()))
+    has = counts > 0
+    means = np.where(has, sums / np.maximum(counts, 1), 0.0)
+    squares = np.zeros(3, dtype=np.float64)
+    for block in blocks:  # a second pass: deviations from the mean, as numpy's std takes them
+        rgb = _rgb(block)
+        deviation = np.where(np.isfinite(rgb), rgb.astype(np.float64) - means, 0.0)
+        squares += (deviation * deviation).sum(axis=(0, 1))
+    stds = np.sqrt(squares / np.maximum(counts, 1))
+    height = array.shape[0]
+    width = array.shape[1] if array.ndim > 1 else 0
+    pixels = max(height * width, 1)
     return {
-        "width": int(rgb.shape[1]),
-        "height": int(rgb.shape[0]),
-        "nan": int(np.isnan(channels).any(axis=2).sum()),
-        "inf": int(np.isinf(channels).any(axis=2).sum()),
-        "finite_min": float(values.min()) if has_values else None,
-        "finite_max": float(values.max()) if has_values else None,
-        "mean": [float(v) for v in masked.mean(axis=(0, 1)).filled(np.nan)],
-        "std": [float(v) for v in masked.std(axis=(0, 1)).filled(np.nan)],
-        "black_fraction": float(black.sum()) / pixels,
-        "white_fraction": float(white.sum()) / pixels,
+        "width": int(width),
+        "height": int(height),
+        "nan": nan,
+        "inf": inf,
+        "finite_min": low if has.any() else None,
+        "finite_max": high if has.any() else None,
+        "mean": [float(m) if h else None for m, h in zip(means, has, strict=True)],
+        "std": [float(d) if h else None for d, h in zip(stds, has, strict=True)],
+        "black_fraction": black / pixels,
+        "white_fraction": white / pixels,
     }
 
 
@@ -78,7 +115,14 @@ def to_display(img: np.ndarray) -> np.ndarray:
 
 def png_bytes(img: np.ndarray) -> bytes:
     """The image as an 8-bit RGB PNG (to_display: clamped to [0, 1], NaN shown magenta)."""
-    pixels = (to_display(img) * 255.0).round().astype(np.uint8)
+    array = np.asarray(img)
+    if array.ndim == 3:
+        _rgb(array[:1, :1])  # the shape check
+    pixels = np.empty((*array.shape[:2], 3), dtype=np.uint8)
+    row = 0
+    for block in _row_blocks(array):  # to_display's float copies, a block at a time
+        pixels[row : row + block.shape[0]] = (to_display(block) * 255.0).round().astype(np.uint8)
+        row += block.shape[0]
     buffer = io.BytesIO()
     Image.fromarray(pixels, mode="RGB").save(buffer, format="PNG")
     return buffer.getvalue()

@@ -67,6 +67,7 @@ def draw_meshes(ctx: Any, job: dict[str, Any], frame: gl.Frame) -> tuple[np.ndar
         if "cameraPosition" in program:
             program["cameraPosition"].value = tuple(job["eye"])
         draws.append(vertex_array)
+    pixels = np.empty((frame.height, frame.width, 4), dtype=np.float32)  # first: see gl.draw
     target = ctx.texture(size, 4, dtype="f4")
     depth = ctx.depth_renderbuffer(size)
     framebuffer = ctx.framebuffer(color_attachments=[target], depth_attachment=depth)
@@ -80,9 +81,7 @@ def draw_meshes(ctx: Any, job: dict[str, Any], frame: gl.Frame) -> tuple[np.ndar
         vertex_array.render(moderngl.TRIANGLES)
     ctx.finish()
     seconds = [time.perf_counter() - start]
-    raw = framebuffer.read(components=4, dtype="f4")
-    pixels = np.frombuffer(raw, dtype=np.float32).reshape(frame.height, frame.width, 4)
-    return np.ascontiguousarray(pixels[::-1]), seconds
+    return gl.read_frame(framebuffer, pixels), seconds
 
 
 def glsl_version(job: dict[str, Any]) -> str:

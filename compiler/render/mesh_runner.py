@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.errors import UsageError
+from glint.compiler.render import limits
 from glint.compiler.render.runner import DEFAULT_DATE, DEFAULT_TIMEOUT_S, RenderResult, run_job
 
 
@@ -49,8 +49,7 @@ def render_meshes(
 ) -> RenderResult:
     """Draw `background` (a complete full-screen fragment shader with ShaderToy's uniforms),
     then every mesh with the depth test. Raises as `runner.render_full` does."""
-    if width < 1 or height < 1:
-        raise UsageError(f"image size must be positive, got {width}x{height}")
+    limits.check_request(width, height, time, 0, mouse, timeout)
     with tempfile.TemporaryDirectory(prefix="glint-render-") as output_dir:
         items = []
         for index, draw in enumerate(draws):

@@ -1,8 +1,9 @@
-"""Render a ShaderToy shader in a child process, under a wall-clock limit.
+"""Render a ShaderToy shader in a child process, under a wall-clock limit and a memory limit.
 
-A shader can loop forever and a driver can crash; either must cost the tool one error message,
-never a hang or its own life. So each frame is drawn by `worker.py` in a fresh process, which is
-killed, with everything it started, when the time is up.
+A shader can loop forever, a driver can crash or allocate without end; each must cost the tool
+one error message, never a hang, the machine's memory or the tool's own life. So each frame is
+drawn by `worker.py` in a fresh process, which is killed, with everything it started, when the
+time is up, and which may use no more memory than limits.worker_memory_limit allows.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
-from glint.compiler.render import gl
+from glint.compiler.render import gl, limits
 from glint.compiler.target.sourcemap import split_lines
 
 DEFAULT_TIMEOUT_S = 60.0
@@ -55,10 +56,16 @@ def _kill(process: subprocess.Popen[bytes]) -> None:
     process.wait()
 
 
-def _run_worker(job: dict[str, object], timeout: float) -> str:
-    """Run the worker on `job`; return its stderr. Raises InputError on timeout."""
+def _run_worker(job: dict[str, object], timeout: float, memory_limit: int) -> str:
+    """Run the worker on `job`; return its stderr. Raises InputError on timeout, a crash or
+    running out of memory.
+
+    The worker sets its own RLIMIT_DATA to `memory_limit` as the first thing it does (see
+    worker.main), rather than a preexec_fn here: preexec_fn is not safe in a process that has
+    threads (the site's preview server has one), and the limit applies all the same to every
+    allocation that matters, the driver's and the image's."""
     process = subprocess.Popen(
-        [sys.executable, "-m", "glint.compiler.render.worker"],
+        [sys.executable, "-m", "glint.compiler.render.worker", str(memory_limit)],
         stdin=subprocess.PIPE,
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
@@ -76,6 +83,10 @@ def _run_worker(job: dict[str, object], timeout: float) -> str:
         _kill(process)  # e.g. Ctrl-C: leave no worker behind
         raise
     message = stderr.decode(errors="replace")
+    if process.returncode == -signal.SIGKILL or _OUT_OF_MEMORY.search(message):
+        # Nothing here kills the worker but the watchdog above: a SIGKILL is the system's
+        # out-of-memory killer; a driver that failed to allocate says so on stderr.
+        raise InputError(_out_of_memory(job, memory_limit, message))
     if process.returncode < 0:
         name = signal.Signals(-process.returncode).name
         raise InputError(
@@ -87,6 +98,26 @@ def _run_worker(job: dict[str, object], timeout: float) -> str:
             f"the renderer failed (exit status {process.returncode}): {_tail(message) or '?'}"
         )
     return message
+
+
+# What a driver, LLVM or the C library writes when an allocation fails.
+_OUT_OF_MEMORY = re.compile(
+    r"out of memory|cannot allocate memory|bad_alloc|MemoryError|GL_OUT_OF_MEMORY", re.IGNORECASE
+)
+
+
+def _out_of_memory(job: dict[str, object], memory_limit: int, detail: str) -> str:
+    size = f"{job['width']}x{job['height']}"
+    return (
+        f"the renderer ran out of memory drawing a {size} image (its limit was "
+        f"{memory_limit / 2**20:.0f} MB, the machine has "
+        f"{_megabytes(limits.available_memory())} available): render a smaller size, or "
+        f"simplify the shader; the renderer said: {_tail(detail) or 'nothing'}"
+    )
+
+
+def _megabytes(count: int | None) -> str:
+    return "an unknown amount" if count is None else f"{count / 2**20:.0f} MB"
 
 
 def _outcome(output_dir: str, stderr: str) -> dict[str, object]:
@@ -131,6 +162,14 @@ def _save_channels(channels: Sequence[np.ndarray], output_dir: str) -> list[str]
     return paths
 
 
+def _input_bytes(job: dict[str, object]) -> int:
+    """What the worker loads besides the image: channel data and mesh arrays, counted twice
+    (the loaded array and the driver's copy)."""
+    paths = list(job.get("channels", []))  # type: ignore[call-overload]
+    paths += [draw["arrays"] for draw in job.get("draws", [])]  # type: ignore[attr-defined]
+    return 2 * sum(os.path.getsize(path) for path in paths)
+
+
 def render_full(
     source: str,
     width: int = 640,
@@ -145,8 +184,7 @@ def render_full(
 ) -> RenderResult:
     """Render one frame of a ShaderToy Image-tab shader; see `render`. With `repeats` > 1 the
     frame is drawn that many times in one context and every draw is timed (for benchmarks)."""
-    if width < 1 or height < 1:
-        raise UsageError(f"image size must be positive, got {width}x{height}")
+    limits.check_request(width, height, time, frame, mouse, timeout)
     with tempfile.TemporaryDirectory(prefix="glint-render-") as output_dir:
         job = {
             "source": source,
@@ -174,9 +212,15 @@ def run_job(
     """Run a render job in the worker and read back its image, or raise the error its outcome
     says; `rejected(message, outcome)` words a compile error. The job's output_dir must exist
     until this returns."""
-    stderr = _run_worker(job, timeout)
+    memory_limit = limits.worker_memory_limit(
+        int(job["width"]) * int(job["height"]),  # type: ignore[call-overload]
+        _input_bytes(job),
+    )
+    stderr = _run_worker(job, timeout, memory_limit)
     outcome = _outcome(str(job["output_dir"]), stderr)
     status, message = outcome.get("status"), str(outcome.get("message", ""))
+    if status == "memory":
+        raise InputError(_out_of_memory(job, memory_limit, message))
     if status == "environment":
         raise EnvironmentProblem(
             f"{message}; install {gl.EGL_PACKAGES} (Debian) or run `make setup`"
