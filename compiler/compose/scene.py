@@ -27,6 +27,12 @@ from glint.compiler.compose.shapes import (
     parts,
 )
 from glint.compiler.errors import InputError
+from glint.compiler.files import MiB, read_user_text
+
+# The largest files a scene reads: its own TOML and a [geometry] GLSL file (a scene or a
+# distance function of a few MiB is already far beyond what anyone writes by hand).
+SCENE_FILE_LIMIT = 4 * MiB
+GEOMETRY_FILE_LIMIT = 4 * MiB
 
 Unit = Annotated[float, Field(strict=True, ge=0.0, le=1.0)]
 Color = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
@@ -234,15 +240,15 @@ class Geometry(Strict):
     def read(self, base: Path) -> None:
         """Read the file, relative to the scene's folder `base`."""
         found = base / self.file
-        try:
-            self._source = found.read_text(encoding="utf-8")
-        except FileNotFoundError:
+        if not found.exists() and not found.is_symlink():
             raise InputError(
                 f"geometry.file: {self.file}: no such file (looked for {found}); the path is "
                 "relative to the scene file"
-            ) from None
-        except (OSError, UnicodeDecodeError) as exc:
-            raise InputError(f"geometry.file: {found}: cannot read it: {exc}") from None
+            )
+        try:
+            self._source = read_user_text(found, GEOMETRY_FILE_LIMIT, "GLSL file")
+        except InputError as exc:
+            raise InputError(f"geometry.file: {exc.message}") from None
         self._path = _shown_path(found)
 
 
@@ -423,12 +429,9 @@ def default_scene_path() -> Path:
 def load_scene(path: str | Path | None = None) -> Scene:
     """Read and validate a scene file; None means the embedded default scene."""
     path = Path(path) if path is not None else default_scene_path()
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such scene file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{path}: cannot read the scene: {exc}") from None
+    if not path.exists() and not path.is_symlink():
+        raise InputError(f"{path}: no such scene file")
+    text = read_user_text(path, SCENE_FILE_LIMIT, "scene TOML file")
     return parse_scene(text, str(path))
 
 
