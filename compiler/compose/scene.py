@@ -464,10 +464,21 @@ class Scene(Strict):
                 f"(objects[{meshes[0]}]); a scene is either all meshes (rasterized) or has "
                 "none (raymarched): make every object a mesh, or none"
             )
+        for name in self.used_materials():
+            if not _FILE_NAME_PART.fullmatch(name):
+                raise ValueError(
+                    f"materials: the name {shown(name)} names a program of a mesh scene, and "
+                    "so its files (BASE.NAME.vert); use letters, digits, '_' and '-' (at most "
+                    "64 of them)"
+                )
         if self.geometry is not None:
             raise ValueError("geometry: a mesh scene has no distance field; remove [geometry]")
         if self.medium is not None:
             raise ValueError("medium: not available in mesh scenes yet; remove [medium]")
+
+
+# A mesh scene's material name, which names its program's files.
+_FILE_NAME_PART = re.compile(r"[A-Za-z0-9_-]{1,64}")
 
 
 def default_scene_path() -> Path:

@@ -1,5 +1,5 @@
 """What every value of a scene must be, in one place: the types of its numbers, the rule for
-its directions and how deep its tables may nest.
+its directions, how deep its tables may nest, and how its strings reach a shader.
 
 - A number is a finite float32 (the shader's precision): not nan or inf (TOML has both), not
   beyond ±3.4e38 (1e300, or an integer of any size, which TOML gives as it is), and not so
@@ -11,11 +11,14 @@ its directions and how deep its tables may nest.
   its squared length is neither 0 nor inf in float32.
 - Groups nest at most MAX_GROUP_DEPTH levels, and nothing else in a scene nests deeper than
   its groups may (the walks over a scene are bounded by it, and pydantic's own is ~250).
+- A string of the scene (its name, a material's, a file's) reaches a shader only inside a
+  comment, through `comment_text`, which leaves no line break, control character or `*/` in it.
 """
 
 from __future__ import annotations
 
 import math
+import unicodedata
 from collections.abc import Mapping
 from typing import Annotated, Any
 
@@ -140,3 +143,40 @@ def shown(value: Any, limit: int = 60) -> str:
     if len(text) <= limit:
         return text
     return f"{text[: limit - 12]}…({len(text)} characters)"
+
+
+# Characters that end a line for some reader of GLSL (or the editor showing it), besides the
+# control characters: NEL, LINE SEPARATOR and PARAGRAPH SEPARATOR.
+_LINE_ENDS = frozenset("\x85\u2028\u2029")
+# Unicode categories escaped: control, surrogate (not UTF-8), format (the bidirectional
+# overrides that make a line read as other code), line and paragraph separators.
+_ESCAPED = frozenset({"Cc", "Cs", "Cf", "Zl", "Zp"})
+
+
+def comment_text(text: str) -> str:
+    """`text` as it may stand inside a GLSL comment, on one line: control, format and
+    surrogate characters and line separators as \\xNN or \\uNNNN escapes, a backslash doubled
+    (so that no escape is ambiguous), `*/` and `/*` broken up. Callers put it between quotes
+    or before more text, so that no line ends with a backslash (a line continuation in GLSL)."""
+    out = []
+    for char in text:
+        if char == "\\":
+            out.append("\\\\")
+        elif char in _LINE_ENDS or unicodedata.category(char) in _ESCAPED:
+            code = ord(char)
+            out.append(f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}")
+        else:
+            out.append(char)
+    return "".join(out).replace("*/", "*\\/").replace("/*", "/\\*")
+
+
+def marker_path(path: str) -> str:
+    """A file path as a `// source: PATH:LINE` marker holds it: one word on one line, each
+    whitespace or control character percent-encoded (a space as %20)."""
+    return "".join(
+        char if char.isprintable() and not char.isspace() else _percent(char) for char in path
+    )
+
+
+def _percent(char: str) -> str:
+    return "".join(f"%{byte:02X}" for byte in char.encode("utf-8", "surrogatepass"))
