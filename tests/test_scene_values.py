@@ -6,6 +6,7 @@ every walk over a scene survives the deepest scene allowed."""
 from __future__ import annotations
 
 import math
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -18,6 +19,8 @@ import glint
 from glint.compiler.compose.scene import parse_scene, scene_from_dict
 from glint.compiler.compose.scene_values import MAX_GROUP_DEPTH
 from glint.compiler.errors import InputError
+
+ROOT = Path(__file__).parent.parent
 
 
 def _with_sphere(**keys: Any) -> dict[str, Any]:
@@ -270,6 +273,18 @@ def test_a_box_of_bounds_past_float32_is_left_out_for_the_whole_ray() -> None:
     ]))  # fmt: skip
     body = span_unit(scene.objects, False).body
     assert "return vec2(0.0, 1e30);" in body and "e+50" not in body
+
+
+def test_the_readme_example_message_is_what_glint_says() -> None:
+    readme = (ROOT / "README.md").read_text()
+    found = re.search(r"Each of these is one message with the key, e\.g\. `(.*?)`", readme, re.S)
+    assert found is not None
+    quoted = " ".join(found.group(1).split())
+    data = base_scene(objects=[
+        {"shape": "sphere", "material": "m"},
+        {"shape": "plane", "material": "m", "normal": [1e-300, 1.0, 0.0]},
+    ])  # fmt: skip
+    assert error(data) == quoted
 
 
 def test_geometry_material_ids_are_glsl_ints() -> None:
