@@ -16,6 +16,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, Field, PrivateAttr, ValidationError, model_validator
 
 from glint.compiler.compose.scene_values import (
+    DIRECTION_RANGE,
     AtLeastOne,
     Color,
     NonNegative,
@@ -93,9 +94,13 @@ def _check_line_of_sight(sight: list[float], points: list[float], keys: str) -> 
             "close for float32, which then sees one point; move the eye further from the "
             f"target (at least {far * _SIGHT_PRECISION:g})"
         )
-    problem = direction_problem(sight)
-    if problem is not None:
-        raise ValueError(f"{keys}: the line of sight {problem}")
+    low, high = DIRECTION_RANGE
+    if not low <= length <= high:
+        raise ValueError(
+            f"{keys}: the eye is {length:g} from the target (along an axis), too "
+            f"{'close' if length < low else 'far'} for float32 to normalise the line of sight "
+            f"{shown(sight)}; keep them between {low:g} and {high:g} apart"
+        )
 
 
 ShadingMode = Literal["gouraud", "phong", "flat"]
