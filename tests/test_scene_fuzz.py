@@ -158,14 +158,21 @@ def _scenes() -> st.SearchStrategy[dict[str, Any]]:
     )
 
 
-def _places(value: Any, path: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
-    """The path of every key and item under `value`."""
-    found = []
-    items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(
-        value, list) else ()  # fmt: skip
-    for key, child in items:
-        found.append((*path, key))
-        found += _places(child, (*path, key))
+def _places(value: Any) -> list[tuple[Any, ...]]:
+    """The path of every key and item under `value`, to 40 levels (a deep group or list put
+    there by an earlier mutation is not walked to its bottom)."""
+    found: list[tuple[Any, ...]] = []
+    stack: list[tuple[Any, tuple[Any, ...]]] = [(value, ())]
+    while stack:
+        value, path = stack.pop()
+        if len(path) >= 40:
+            continue
+        items = value.items() if isinstance(value, dict) else (
+            enumerate(value) if isinstance(value, list) else ()
+        )  # fmt: skip
+        for key, child in items:
+            found.append((*path, key))
+            stack.append((child, (*path, key)))
     return found
 
 
