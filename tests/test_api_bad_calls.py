@@ -80,7 +80,7 @@ BAD_CALLS: list[tuple[str, Call, str]] = [
     ("compose-scene-bytes", lambda t: glint.compose(b"x.toml"), "not bytes"),
     ("compose-scene-empty", lambda t: glint.compose(""), "scene: expected a path"),
     ("compose-scene-missing", lambda t: glint.compose(t.missing), "no such scene file"),
-    ("compose-scene-folder", lambda t: glint.compose(t.folder), "cannot read the scene"),
+    ("compose-scene-folder", lambda t: glint.compose(t.folder), "is a folder, expected a scene"),
     ("compose-scene-nul", lambda t: glint.compose("a\0b.toml"), "NUL"),
     ("compose-dict-empty", lambda t: glint.compose({}), "materials: required key"),
     ("compose-dict-int-key", lambda t: glint.compose({1: 2}), r"<scene>"),

@@ -228,3 +228,13 @@ def test_temporary_names_are_recognised() -> None:
     assert not is_temporary("glint-tmp-x.glsl")
     assert not is_temporary(".glint-config.glsl")
     assert not is_temporary("shader.glsl")
+
+
+def test_a_shader_that_is_a_fifo_or_a_device_is_refused_unread(tmp_path: Path) -> None:
+    """`glint validate` and `glint.render` read a shader through read_text_file: a FIFO would
+    block forever and /dev/zero never ends, so neither is opened for reading."""
+    fifo = tmp_path / "pipe.glsl"
+    os.mkfifo(fifo)
+    for path in (fifo, Path("/dev/zero")):
+        with pytest.raises(InputError, match="not a regular file"):
+            read_text_file(path)

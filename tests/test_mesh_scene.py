@@ -11,7 +11,12 @@ import numpy as np
 import pytest
 from mesh_scenes import mesh_scene, raymarched_scene
 
-from glint.compiler.compose.mesh_geometry import builtin_mesh, model_matrix, normal_matrix
+from glint.compiler.compose.mesh_geometry import (
+    builtin_mesh,
+    model_matrix,
+    normal_matrix,
+    smooth_normals,
+)
 from glint.compiler.compose.scene import parse_scene, scene_from_dict
 from glint.compiler.compose.shapes import Mesh
 from glint.compiler.errors import InputError
@@ -105,6 +110,63 @@ def test_obj_file_normals_are_kept(tmp_path: Path) -> None:
     assert isinstance(mesh, Mesh)
     arrays = mesh.arrays
     assert np.allclose(arrays.normals, [0.0, 0.0, 1.0])
+
+
+def _random_mesh(seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """An irregular closed surface: a sphere's vertices moved at random, and one degenerate
+    face (three times the same vertex) that the normals must leave out."""
+    sphere = builtin_mesh("icosphere", 2)
+    rng = np.random.default_rng(seed)
+    scale = rng.uniform(0.7, 1.3, (len(sphere.positions), 1))
+    vertices = sphere.positions.astype(np.float64) * scale
+    faces = np.vstack([sphere.indices.astype(np.int64), [[0, 0, 0]]])
+    return vertices, faces
+
+
+def test_smooth_normals_are_trimeshs_without_its_slow_loop() -> None:
+    import trimesh
+
+    vertices, faces = _random_mesh(7)
+    mesh = trimesh.Trimesh(vertices, faces, process=False)
+    # trimesh's own formula (its loop: the form it takes without scipy)
+    theirs = trimesh.geometry.weighted_vertex_normals(
+        len(vertices), faces, mesh.face_normals, mesh.face_angles, use_loop=True
+    )
+    ours = smooth_normals(vertices, faces)
+    ours /= np.linalg.norm(ours, axis=1, keepdims=True)
+    assert np.abs(ours - theirs).max() < 1e-12
+
+
+def test_a_mesh_file_with_a_nan_vertex_or_a_bad_index_names_it(tmp_path: Path) -> None:
+    (tmp_path / "nan.obj").write_text(TETRAHEDRON.replace("v 1 0 0", "v 1 nan 0"))
+    with pytest.raises(InputError) as caught:
+        parse_scene(_file_scene("nan.obj"), str(tmp_path / "scene.toml"))
+    assert "objects[0].file: " in caught.value.message
+    assert "vertex 2 is not a finite float32 position (1.0, nan, 0.0)" in caught.value.message
+    (tmp_path / "huge.obj").write_text(TETRAHEDRON.replace("v 1 0 0", "v 1e39 0 0"))
+    with pytest.raises(InputError, match="vertex 2 is not a finite float32 position"):
+        parse_scene(_file_scene("huge.obj"), str(tmp_path / "scene.toml"))
+
+
+def test_a_mesh_file_past_the_limits_is_refused(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import glint.compiler.compose.mesh_geometry as mesh_geometry
+
+    (tmp_path / "tet.obj").write_text(TETRAHEDRON)
+    monkeypatch.setattr(mesh_geometry, "MAX_TRIANGLES", 3)
+    with pytest.raises(InputError, match="4 triangles, more than the 3 glint draws"):
+        parse_scene(_file_scene("tet.obj"), str(tmp_path / "scene.toml"))
+    monkeypatch.setattr(mesh_geometry, "MESH_FILE_LIMIT", 16)
+    with pytest.raises(InputError, match="larger than the .* MiB glint reads for a mesh file"):
+        parse_scene(_file_scene("tet.obj"), str(tmp_path / "scene.toml"))
+
+
+def test_archives_and_unknown_suffixes_are_not_mesh_files(tmp_path: Path) -> None:
+    for name in ("model.zip", "model.tar.gz", "model.txt"):
+        (tmp_path / name).write_bytes(b"PK\x03\x04")
+        with pytest.raises(InputError, match="not a mesh format glint reads"):
+            parse_scene(_file_scene(name), str(tmp_path / "scene.toml"))
 
 
 @pytest.mark.parametrize("name", ["uv_sphere", "icosphere"])

@@ -42,6 +42,10 @@ SPAN = "sceneSpan"
 # Grown on every side by this share of the box's size (and at least MARGIN): a march stops a
 # little short of a surface, so the box must hold the points where it stops.
 MARGIN = 1e-3
+# A box reaching further than this from the origin is not written: its corners (scaled,
+# repeated values of a scene, each a float32) can pass float32's range, and a box of inf sides
+# would cut rays wrongly. Such a scene marches the whole ray instead, as an unbounded one.
+FARTHEST = 1e30
 
 
 def _local(shape: Placed) -> Bounds | None:
@@ -160,6 +164,8 @@ def span_unit(
         boxes.append((np.asarray(field_bounds[0], float), np.asarray(field_bounds[1], float)))
         user_field = False
     box = _union(boxes)
+    if box is not None and not np.abs(np.concatenate(box)).max() <= FARTHEST:  # or NaN
+        box = None
     unbounded = user_field or any(analytic(p) is None for p in planes)
     unbounded = unbounded or (bool(boxes) and box is None)
     body = span_glsl(box, planes, unbounded)

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog, glsl_value
 from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.scene_values import comment_text
 from glint.compiler.compose.uniform_params import UniformParam
 from glint.compiler.compose.units import CONSTANTS, GENERATED, Unit, generated
 from glint.compiler.target import shadertoy
@@ -66,17 +67,22 @@ def header(
     """The comment that opens a shader; `where` says where a ShaderToy one is pasted, `what`
     (if given) what the shader is."""
     snippets = [u for u in units if u.origin != GENERATED]
-    width = max((len(u.id) for u in snippets), default=0)
+    width = max((len(comment_text(u.id)) for u in snippets), default=0)
     if not what:
         what = (
             where or IMAGE_TAB if target == "shadertoy" else f"A complete {target} fragment shader."
         )
+    # the scene's strings (its name, a material's in `what`, a file's in a unit's id) go into
+    # the comment only through comment_text: no line break or `*/` can end it early
     lines = [
-        f"// glint {version} - scene '{scene_name}', tier {plan.tier}, target {target}",
-        f"// {what}",
+        f"// glint {version} - scene '{comment_text(scene_name)}', tier {plan.tier}, "
+        f"target {target}",
+        f"// {comment_text(what)}",
         "// Snippets, in order:",
     ]
-    lines += [f"//   {u.id.ljust(width)}  {u.summary}" for u in snippets]
+    lines += [
+        f"//   {comment_text(u.id).ljust(width)}  {comment_text(u.summary)}" for u in snippets
+    ]
     return "\n".join(lines) + "\n"
 
 

@@ -3,9 +3,10 @@ raymarched camera snippets (snippets/camera/): the same eye, the same basis, the
 
 A camera snippet sends the ray normalize(uv.x·right + uv.y·up + focal·forward) through the
 pixel at uv = (2·fragCoord − iResolution.xy) / iResolution.y, with forward toward the target,
-right = normalize(forward × ŷ) and up = right × forward. So a point at depth d along forward
-and (x, y) across is seen at uv = focal·(x, y)/d: a perspective of vertical field of view
-2·atan(1/focal) whose x is divided by the aspect ratio.
+right = normalize(forward × ŷ) (x when forward is vertical: camera_right) and up =
+right × forward. So a point at depth d along forward and (x, y) across is seen at uv =
+focal·(x, y)/d: a perspective of vertical field of view 2·atan(1/focal) whose x is divided by
+the aspect ratio.
 """
 
 from __future__ import annotations
@@ -52,7 +53,7 @@ def camera_matrices(
     far) along the view direction."""
     eye, target = eye_and_target(scene, time, mouse, size)
     forward = _unit(target - eye)
-    right = _unit(np.cross(forward, [0.0, 1.0, 0.0]))
+    right = camera_right(forward)
     up = np.cross(right, forward)
     view = np.eye(4)
     view[0, :3], view[1, :3], view[2, :3] = right, up, -forward
@@ -66,6 +67,15 @@ def camera_matrices(
     projection[2, 3] = 2.0 * far * near / (near - far)
     projection[3, 2] = -1.0
     return CameraMatrices(eye, view, projection)
+
+
+def camera_right(forward: np.ndarray) -> np.ndarray:
+    """The screen's x for a unit line of sight, as the camera snippets take it:
+    normalize(forward × ŷ), except straight up or down (the same test as theirs), where that
+    vanishes and it is the world's x."""
+    if forward[0] ** 2 + forward[2] ** 2 > 1e-8:
+        return _unit(np.cross(forward, [0.0, 1.0, 0.0]))
+    return np.array([1.0, 0.0, 0.0])
 
 
 def depth_range(eye: np.ndarray, centre: np.ndarray, radius: float) -> tuple[float, float]:

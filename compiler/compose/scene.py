@@ -6,6 +6,7 @@ effects, post) and how much accuracy to pay for (quality). Nothing in it execute
 
 from __future__ import annotations
 
+import re
 import tomllib
 from collections.abc import Mapping
 from importlib import resources
@@ -14,22 +15,30 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, Field, PrivateAttr, ValidationError, model_validator
 
-from glint.compiler.compose.shapes import (
-    SHAPE_TAGS,
-    Mesh,
+from glint.compiler.compose.scene_values import (
+    DIRECTION_RANGE,
+    AtLeastOne,
+    Color,
     NonNegative,
     Number,
     Positive,
-    Shape,
-    Strict,
+    PositiveVec3,
+    SignedUnit,
+    Unit,
     Vec3,
-    exact,
-    parts,
+    direction_problem,
+    key_path,
+    nesting_problem,
+    shown,
 )
+from glint.compiler.compose.shapes import SHAPE_TAGS, Mesh, Shape, Strict, exact, parts
 from glint.compiler.errors import InputError
+from glint.compiler.files import MiB, read_user_text
 
-Unit = Annotated[float, Field(strict=True, ge=0.0, le=1.0)]
-Color = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
+# The largest files a scene reads: its own TOML and a [geometry] GLSL file (a scene or a
+# distance function of a few MiB is already far beyond what anyone writes by hand).
+SCENE_FILE_LIMIT = 4 * MiB
+GEOMETRY_FILE_LIMIT = 4 * MiB
 
 
 class OrbitCamera(Strict):
@@ -45,6 +54,11 @@ class OrbitCamera(Strict):
     focal: Positive = 1.5
     """Focal length in screen heights: larger zooms in."""
 
+    @model_validator(mode="after")
+    def _eye_apart(self) -> OrbitCamera:
+        _check_line_of_sight([self.radius, self.height, 0.0], self.target, "radius and height")
+        return self
+
 
 class LookAtCamera(Strict):
     type: Literal["lookat"]
@@ -59,7 +73,34 @@ class LookAtCamera(Strict):
     def _distinct(self) -> LookAtCamera:
         if self.position == self.target:
             raise ValueError("position and target must differ")
+        sight = [t - p for p, t in zip(self.position, self.target, strict=True)]
+        _check_line_of_sight(sight, [*self.position, *self.target], "position and target")
         return self
+
+
+# float32 tells two points apart when they are at least this share of their distance from the
+# origin apart (its precision is 6e-8: the line of sight is then good to a few per cent)
+_SIGHT_PRECISION = 1e-6
+
+
+def _check_line_of_sight(sight: list[float], points: list[float], keys: str) -> None:
+    """The camera's line of sight (from the eye to the target) must be a direction the shader
+    can normalise, and the eye a point float32 tells apart from the target."""
+    length = max(abs(x) for x in sight)
+    far = max((abs(x) for x in points), default=0.0)
+    if length < far * _SIGHT_PRECISION:
+        raise ValueError(
+            f"{keys}: the eye is {length:g} from the target, {far:g} from the origin: too "
+            "close for float32, which then sees one point; move the eye further from the "
+            f"target (at least {far * _SIGHT_PRECISION:g})"
+        )
+    low, high = DIRECTION_RANGE
+    if not low <= length <= high:
+        raise ValueError(
+            f"{keys}: the eye is {length:g} from the target (along an axis), too "
+            f"{'close' if length < low else 'far'} for float32 to normalise the line of sight "
+            f"{shown(sight)}; keep them between {low:g} and {high:g} apart"
+        )
 
 
 ShadingMode = Literal["gouraud", "phong", "flat"]
@@ -82,7 +123,7 @@ class Material(Strict):
     subsurface: Color | None = None
     """Light that passes through the body and scatters toward the eye (translucency), per
     channel: the interior's scattering colour. Absent: the material is opaque."""
-    subsurface_g: Annotated[float, Field(strict=True, ge=-1.0, le=1.0)] = 0.5
+    subsurface_g: SignedUnit = 0.5
     """Asymmetry g of the interior's phase function: > 0 scatters forward (glows when back-lit)."""
     shading: ShadingMode | None = None
     """Mesh scenes only: where the light is computed on this material's meshes (gouraud: per
@@ -111,14 +152,19 @@ class DirectionalLight(Strict):
     """Whether it casts shadows (the `shadow` slot)."""
     shadow_distance: Positive = 5.0
     """How far a shadow ray looks for an occluder."""
-    penumbra: Annotated[list[Positive], Field(min_length=3, max_length=3)] | None = None
+    penumbra: PositiveVec3 | None = None
     """Per-channel exponents applied to the shadow, e.g. [1.0, 1.2, 1.5]: penumbrae turn cool."""
 
     @model_validator(mode="after")
     def _nonzero(self) -> DirectionalLight:
-        if not any(self.direction):
-            raise ValueError("direction must not be the zero vector")
+        _check_direction(self.direction)
         return self
+
+
+def _check_direction(direction: list[float] | None) -> None:
+    problem = direction_problem(direction) if direction is not None else None
+    if problem is not None:
+        raise ValueError(f"direction {problem}")
 
 
 class PointLight(Strict):
@@ -147,6 +193,11 @@ class BackLight(Strict):
     color: Color = [0.15, 0.1, 0.08]
     intensity: NonNegative = 1.0
 
+    @model_validator(mode="after")
+    def _nonzero(self) -> BackLight:
+        _check_direction(self.direction)
+        return self
+
 
 class BounceLight(Strict):
     type: Literal["bounce"]
@@ -154,6 +205,11 @@ class BounceLight(Strict):
     """Toward the light; by default the key light's direction mirrored and made horizontal."""
     color: Color = [0.40, 0.28, 0.20]
     intensity: NonNegative = 1.0
+
+    @model_validator(mode="after")
+    def _nonzero(self) -> BounceLight:
+        _check_direction(self.direction)
+        return self
 
 
 class EnvironmentLight(Strict):
@@ -181,7 +237,7 @@ class Geometry(Strict):
 
     file: str
     """The GLSL file, relative to the scene file."""
-    lipschitz: Annotated[float, Field(strict=True, ge=1.0, allow_inf_nan=False)] = 1.0
+    lipschitz: AtLeastOne = 1.0
     """A bound on how fast the field changes (1 for an exact distance; more for displaced or
     noisy fields): every march divides its steps by it."""
     material: str | None = None
@@ -203,8 +259,11 @@ class Geometry(Strict):
                 "sceneMaterial returns), one of them"
             )
         for key in self.materials:
-            if not key.lstrip("-").isdigit():
-                raise ValueError(f"materials: key {key!r} is not an integer id")
+            if not re.fullmatch(r"-?[0-9]{1,10}", key) or not -(2**31) < int(key) < 2**31:
+                raise ValueError(
+                    f"materials: key {shown(key)} is not an integer id (a GLSL int, from "
+                    f"{-(2**31) + 1} to {2**31 - 1})"
+                )
         return self
 
     @model_validator(mode="after")
@@ -234,15 +293,15 @@ class Geometry(Strict):
     def read(self, base: Path) -> None:
         """Read the file, relative to the scene's folder `base`."""
         found = base / self.file
-        try:
-            self._source = found.read_text(encoding="utf-8")
-        except FileNotFoundError:
+        if not found.exists() and not found.is_symlink():
             raise InputError(
                 f"geometry.file: {self.file}: no such file (looked for {found}); the path is "
                 "relative to the scene file"
-            ) from None
-        except (OSError, UnicodeDecodeError) as exc:
-            raise InputError(f"geometry.file: {found}: cannot read it: {exc}") from None
+            )
+        try:
+            self._source = read_user_text(found, GEOMETRY_FILE_LIMIT, "GLSL file")
+        except InputError as exc:
+            raise InputError(f"geometry.file: {exc.message}") from None
         self._path = _shown_path(found)
 
 
@@ -410,10 +469,21 @@ class Scene(Strict):
                 f"(objects[{meshes[0]}]); a scene is either all meshes (rasterized) or has "
                 "none (raymarched): make every object a mesh, or none"
             )
+        for name in self.used_materials():
+            if not _FILE_NAME_PART.fullmatch(name):
+                raise ValueError(
+                    f"materials: the name {shown(name)} names a program of a mesh scene, and "
+                    "so its files (BASE.NAME.vert); use letters, digits, '_' and '-' (at most "
+                    "64 of them)"
+                )
         if self.geometry is not None:
             raise ValueError("geometry: a mesh scene has no distance field; remove [geometry]")
         if self.medium is not None:
             raise ValueError("medium: not available in mesh scenes yet; remove [medium]")
+
+
+# A mesh scene's material name, which names its program's files.
+_FILE_NAME_PART = re.compile(r"[A-Za-z0-9_-]{1,64}")
 
 
 def default_scene_path() -> Path:
@@ -423,12 +493,9 @@ def default_scene_path() -> Path:
 def load_scene(path: str | Path | None = None) -> Scene:
     """Read and validate a scene file; None means the embedded default scene."""
     path = Path(path) if path is not None else default_scene_path()
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such scene file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{path}: cannot read the scene: {exc}") from None
+    if not path.exists() and not path.is_symlink():
+        raise InputError(f"{path}: no such scene file")
+    text = read_user_text(path, SCENE_FILE_LIMIT, "scene TOML file")
     return parse_scene(text, str(path))
 
 
@@ -437,12 +504,22 @@ def parse_scene(text: str, filename: str = "<scene>") -> Scene:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"{filename}: not valid TOML: {exc}") from None
+    except RecursionError:  # tomllib parses nested arrays and inline tables recursively
+        raise InputError(
+            f"{filename}: arrays or inline tables nested too deep to read (thousands of "
+            "levels); no value of a scene nests that deep"
+        ) from None
     return scene_from_dict(data, filename)
 
 
 def scene_from_dict(data: Mapping[str, Any], filename: str = "<scene>") -> Scene:
     """A scene from the tables of a scene file (a dict), validated, with one message naming
     the first problem's key."""
+    if not isinstance(data, Mapping):
+        raise InputError(f"{filename}: a scene is a table of tables, not {type(data).__name__}")
+    problem = nesting_problem(data)
+    if problem is not None:
+        raise InputError(f"{filename}: {problem}")
     try:
         scene = Scene.model_validate(dict(data))
     except ValidationError as exc:
@@ -489,7 +566,7 @@ def describe_error(error: Any) -> str:
     message = error["msg"].removeprefix("Value error, ")
     if kind == "value_error":
         return f"{loc}: {message}" if loc else message
-    return f"{loc}: {message[0].lower()}{message[1:]} (got {value!r})"
+    return f"{loc}: {message[0].lower()}{message[1:]} (got {shown(value)})"
 
 
 _TAGS: dict[str, type[BaseModel]] = {
@@ -512,11 +589,11 @@ def _walk(loc: tuple[Any, ...]) -> tuple[str, Any]:
 
     Union tags that pydantic puts in the location are not keys of the file and are dropped.
     """
-    path = ""
+    path: list[Any] = []
     model: Any = Scene
     for item in loc:
         if isinstance(item, int):
-            path += f"[{item}]"
+            path.append(item)
             continue
         fields = getattr(model, "model_fields", {})
         if model is _MATERIALS:
@@ -526,8 +603,8 @@ def _walk(loc: tuple[Any, ...]) -> tuple[str, Any]:
             continue
         else:
             model = _section(fields[item].annotation, item) if item in fields else None
-        path += f".{item}" if path else str(item)
-    return path, model
+        path.append(item)
+    return key_path(tuple(path)), model
 
 
 def _section(annotation: Any, key: str) -> Any:

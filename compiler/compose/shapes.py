@@ -1,6 +1,6 @@
 """The objects of a scene: primitives, each placed by a position, a rotation and a uniform
 scale, and the groups that combine them (union, intersection, subtraction, sharp or smooth,
-nested as deep as needed) or repeat them on a grid.
+nested up to scene_values.MAX_GROUP_DEPTH levels) or repeat them on a grid.
 
 A top-level object carries the material of everything under it; the parts of a group take
 their group's. Rotation is in degrees about the x, then the y, then the z axis, all fixed
@@ -13,11 +13,17 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, model_validator
 
-Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
-Positive = Annotated[float, Field(strict=True, gt=0.0, allow_inf_nan=False)]
-NonNegative = Annotated[float, Field(strict=True, ge=0.0, allow_inf_nan=False)]
-Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
-PositiveVec3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
+from glint.compiler.compose.scene_values import (
+    NonNegative,
+    NonNegativeVec3,
+    Number,
+    Positive,
+    PositiveVec3,
+    Vec3,
+    direction_problem,
+    integer,
+)
+
 MAX_SUBDIVISIONS = 7  # a level-7 uv_sphere has 1024 x 512 quads: finer is no longer useful
 
 
@@ -92,8 +98,9 @@ class Plane(Placed):
 
     @model_validator(mode="after")
     def _nonzero(self) -> Plane:
-        if not any(self.normal):
-            raise ValueError("normal must not be the zero vector")
+        problem = direction_problem(self.normal)
+        if problem is not None:
+            raise ValueError(f"normal {problem}")
         return self
 
 
@@ -162,12 +169,10 @@ class Repeat(Placed):
     shape: Literal["repeat"]
     children: Annotated[list[Shape], Field(min_length=1)]
     """The parts of one copy (their union)."""
-    spacing: Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
+    spacing: NonNegativeVec3
     """Distance between copies along x, y and z; 0 on an axis that is not repeated."""
-    count: Annotated[
-        list[Annotated[int, Field(strict=True, ge=1)]], Field(min_length=3, max_length=3)
-    ]
-    """Copies along x, y and z (1 on an axis that is not repeated)."""
+    count: Annotated[list[integer(1)], Field(min_length=3, max_length=3)]
+    """Copies along x, y and z (1 on an axis that is not repeated), at most 2^24 each."""
 
     @model_validator(mode="after")
     def _axes(self) -> Repeat:
@@ -191,7 +196,7 @@ class Mesh(Placed):
     normals are used when it has them, else trimesh's smooth vertex normals."""
     builtin: Literal["uv_sphere", "icosphere", "torus", "cube"] | None = None
     """A tessellated shape with exact (analytic) normals."""
-    subdivisions: Annotated[int, Field(strict=True, ge=0, le=MAX_SUBDIVISIONS)] = 3
+    subdivisions: integer(0, MAX_SUBDIVISIONS) = 3
     """Refinement of a built-in shape, 0 to 7: each level halves the edges (uv_sphere:
     8·2^n segments around, 4·2^n bands; icosphere: trimesh's subdivisions of an icosahedron;
     torus: 8·2^n around the ring, 4·2^n around the tube; cube: 2^n × 2^n quads a face)."""

@@ -23,6 +23,7 @@ from pathlib import Path
 
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.compose.scene import Geometry
+from glint.compiler.compose.scene_values import marker_path
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import FunctionDef, analyze
@@ -71,7 +72,7 @@ def user_unit(geometry: Geometry, constants: Collection[str] = ()) -> Unit:
         provides=tuple(sorted(symbols.defined)),
         requires=tuple(sorted(requires)),
         body=geometry.source,
-        origin=path.replace(" ", "%20"),  # a source marker's path has no spaces
+        origin=marker_path(path),  # one word: a space is %20, a line break %0A
         line=1,
         summary="the scene's own distance function",
     )

@@ -310,7 +310,10 @@ void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     }
     ro = CAMERA_TARGET + vec3(CAMERA_RADIUS * cos(angle), height, CAMERA_RADIUS * sin(angle));
     vec3 ww = normalize(CAMERA_TARGET - ro);
-    vec3 uu = normalize(cross(ww, vec3(0.0, 1.0, 0.0)));
+    // Looking straight up or down, ww x y vanishes: the screen's x is then the world's, and
+    // its up -z looking down (+z looking up), as for a camera tilted from looking along -z.
+    vec3 uu = vec3(1.0, 0.0, 0.0);
+    if (dot(ww.xz, ww.xz) > 1e-8) uu = normalize(cross(ww, vec3(0.0, 1.0, 0.0)));
     vec3 vv = cross(uu, ww);
     rd = normalize(uv.x * uu + uv.y * vv + CAMERA_FOCAL * ww);
 }
