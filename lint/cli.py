@@ -152,6 +152,11 @@ def collect(paths: list[str]) -> list[str]:
             files += [str(p) for p in found]
         elif path.is_file():
             files.append(raw)
+        elif path.exists():  # a device or a FIFO: endless, or blocks until someone writes
+            raise UsageError(
+                f"{printable(raw)}: not a regular file (a device, a FIFO or a socket); name a "
+                "shader file, or pipe it in with -"
+            )
         else:
             raise UsageError(f"{printable(raw)}: no such file or directory")
     return files

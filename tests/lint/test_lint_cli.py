@@ -866,3 +866,16 @@ def test_a_missing_file_name_is_shown_on_one_line(capsys: pytest.CaptureFixture[
     assert main(["lint", "no\nsuch\x1b.glsl"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "no\\nsuch\\x1b.glsl" in err
+
+
+def test_a_fifo_or_a_device_named_to_lint_is_refused_unread(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A FIFO would block the run and /dev/zero never ends: both are named for what they are."""
+    from glint.compiler.cli import main
+
+    fifo = tmp_path / "pipe.glsl"
+    os.mkfifo(fifo)
+    for path in (str(fifo), "/dev/zero"):
+        assert main(["lint", "--no-cache", path]) == 2
+        assert "not a regular file" in capsys.readouterr().err
