@@ -49,7 +49,10 @@ def lint_shader(
     )
     options = options_for(flags)  # the configuration file, then the flags, checked as the CLI
     if isinstance(shader, Shader) or is_source(shader):
-        return lint_bytes(str(shader).encode("utf-8"), "<input>", options).findings
+        # A lone surrogate (text read with errors="surrogateescape") cannot be UTF-8: kept as
+        # its bytes, it is reported as text that is not UTF-8 (C005) rather than raising.
+        data = str(shader).encode("utf-8", errors="surrogatepass")
+        return lint_bytes(data, "<input>", options).findings
     findings: list[Finding] = []
     for file in collect([os.fspath(shader)]):  # type: ignore[arg-type]
         findings += lint_bytes(read_source(file), file, options).findings
