@@ -17,10 +17,7 @@ from glint.compiler.glsl import Preprocessed
 from glint.compiler.target.glslang import Diagnostic, validate
 
 from .finding import Edit, Finding, Fix, Severity
-
-# Deeper brackets than any real shader has (hand-written ones stay within a few dozen): the
-# file is reported (C006) instead of analysed.
-MAX_NESTING = 256
+from .nesting import Nesting
 
 Node = Tree | Token
 Span = tuple[int, int, int, int]  # line, column, end line, end column (1-based, end exclusive)
@@ -56,7 +53,7 @@ class LintContext:
     front_end_error: InputError | None = None  # why preprocessing or parsing failed
     read_problem: str = ""  # why the file's bytes are not text to lint
     too_deep: bool = False  # nesting beyond what the analysis can follow
-    nesting: int = 0  # deepest nesting of brackets in the preprocessed text
+    nesting: Nesting = field(default_factory=Nesting)  # how deep it nests (lint/nesting.py)
     lines: list[str] = field(default_factory=list)
     # Analyses computed once per file and shared by rules (e.g. the semantic model), by name.
     cache: dict[str, Any] = field(default_factory=dict)
