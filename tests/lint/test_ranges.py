@@ -349,6 +349,17 @@ def test_reassignment_in_source_order() -> None:
     assert rng(body, "x") == Interval(4.0, 4.0)
 
 
+def test_chained_assignments_take_the_value_assigned() -> None:
+    # `x = (y = y + 1.0)`: x takes y's new value, evaluated once (the right side was evaluated
+    # again after y had changed, and once per `=` of a chain: quadratic in its length).
+    body = "float y = 1.0;\nfloat x = 0.0;\nx = (y = y + 1.0);\nfloat a = x;\nfloat b = y;"
+    assert rng(body, "x") == Interval(2.0, 2.0)
+    assert rng(body, "y") == Interval(2.0, 2.0)
+    body = "float y = 1.0;\nfloat x = 0.0;\nx += y *= 3.0;\nfloat a = x;\nfloat b = y;"
+    assert rng(body, "x") == Interval(3.0, 3.0)
+    assert rng(body, "y") == Interval(3.0, 3.0)
+
+
 def test_globals_and_consts() -> None:
     helpers = "const float K = 2.0;\nfloat g = 1.0;\nvoid bump() { g = -5.0; }\n"
     ctx, model = model_of("float a = K;\nfloat b = g;", helpers)
