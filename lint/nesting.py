@@ -38,6 +38,7 @@ MAX_DEPTH = 5_500
 _LOOPS = frozenset({"for_statement", "while_statement", "do_statement"})
 _CONTROL = _LOOPS | {"if_statement", "switch_statement"}
 _BODY_OWNERS = _CONTROL | {"function_definition"}
+_STATEMENTS = _CONTROL | {"compound_statement"}
 
 
 @dataclass(frozen=True)
@@ -77,30 +78,38 @@ def bracket_nesting(text: str) -> int:
 def tree_nesting(tree: Tree, brackets: int = 0) -> Nesting:
     """The nesting of a parse tree (`brackets`: of its text, measured before it was parsed)."""
     statements = loops = deepest = 0
-    # (node, its depth, statements around it, loops around it)
+    # (node, its depth, statements around it, loops around it); run on every file linted, so
+    # the loop is kept lean: most nodes are expressions, which only pass their depth on.
     stack: list[tuple[Tree, int, int, int]] = [(tree, 1, 0, 0)]
+    pop, push = stack.pop, stack.append
     while stack:
-        node, depth, nested, looped = stack.pop()
-        deepest = max(deepest, depth)
-        statements = max(statements, nested)
-        loops = max(loops, looped)
-        kind = node.data
-        children = node.children
-        last = len(children) - 1
-        for index, child in enumerate(children):
-            if isinstance(child, Tree):
-                level = _level(kind, index == last == 2, child.data)
-                stack.append((child, depth + 1, nested + level, looped + (child.data in _LOOPS)))
+        node, depth, nested, looped = pop()
+        if depth > deepest:
+            deepest = depth
+        depth += 1
+        for child in node.children:
+            if not isinstance(child, Tree):
+                continue
+            kind = child.data
+            if kind not in _STATEMENTS:
+                push((child, depth, nested, looped))
+                continue
+            level = nested + _level(node, child)
+            looping = looped + (kind in _LOOPS)
+            statements = max(statements, level)
+            loops = max(loops, looping)
+            push((child, depth, level, looping))
     return Nesting(brackets, statements, loops, deepest)
 
 
-def _level(parent: str, third_child: bool, kind: str) -> int:
-    """1 where a child of this kind is a statement nested in its parent; 0 for the braces of a
-    loop's, an if's or a function's own body, and for the `if` of an `else if`."""
+def _level(parent: Tree, child: Tree) -> int:
+    """1 where `child`, a statement, is nested in its parent; 0 for the braces of a loop's, an
+    if's or a function's own body, and for the `if` of an `else if`."""
+    kind = child.data
     if kind == "compound_statement":
-        return 0 if parent in _BODY_OWNERS else 1
-    if kind not in _CONTROL:
-        return 0
-    if kind == "if_statement" and parent == "if_statement" and third_child:
-        return 0  # `else if`: the next link of a chain
+        return 0 if parent.data in _BODY_OWNERS else 1
+    if kind == "if_statement" and parent.data == "if_statement":
+        siblings = parent.children
+        if len(siblings) == 3 and siblings[2] is child:
+            return 0  # `else if`: the next link of a chain
     return 1
