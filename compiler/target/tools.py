@@ -26,9 +26,11 @@ if os.name == "posix":
 
 TIMEOUT_S = 30.0
 # Address space a tool may take. glslangValidator peaks at 23 MB on the largest real shader of
-# the corpus (116 KB) and at 130 MB on 1 MB of code (glint's limit on a file it lints);
-# spirv-opt at 140 MB on that code's SPIR-V. A gibibyte is several times what legitimate input
-# needs, and a runaway reaches it within seconds instead of taking the machine's memory.
+# the corpus (116 KB), at 130 MB on 1 MB of code (glint's limit on a file it lints) and at
+# 930 MB on 10 MB; spirv-opt at 140 MB on 1 MB of code's SPIR-V. A gibibyte is several times
+# what any real shader needs, and a runaway (a macro that doubles itself, 260 MB a second)
+# reaches it within seconds instead of taking the machine's memory; several lint workers may
+# each run one.
 MEMORY_LIMIT_BYTES = 1 << 30
 # What a C++ tool prints when an allocation fails under the limit (it then aborts).
 _OUT_OF_MEMORY = ("std::bad_alloc", "out of memory", "Cannot allocate memory")
