@@ -22,11 +22,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from lark import Token, Tree
+from lark import Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
-from ..context import LintContext, Node, subtree_count, walk
+from ..context import LintContext, Node, subtree_count, tokens, walk
 from . import types as T
 from .declarations import declared_variables, signature, struct_members
 from .expressions import Evaluator, RecordedEvaluator, as_polynomial
@@ -496,8 +496,7 @@ def _passed(value: Value, arg: Node) -> Value:
     """An argument as its parameter sees it: an unclamped dot product keeps the evidence of
     its 0, and says where it came from."""
     if value.why is None and value.zero and value.origin in ("dot", "length", "distance"):
-        first = next(arg.scan_values(lambda t: isinstance(t, Token)), None) \
-            if isinstance(arg, Tree) else arg  # fmt: skip
+        first = next(tokens(arg), None)  # without recursion (lark's scan_values recurses)
         line = getattr(first, "line", None)
         where = f" at line {line}" if line else ""
         what = {"dot": "dot product"}.get(value.origin, value.origin)
