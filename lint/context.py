@@ -7,6 +7,7 @@ from bisect import bisect_left
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from itertools import islice
 from operator import itemgetter
 from typing import Any
 
@@ -17,10 +18,7 @@ from glint.compiler.glsl import Preprocessed
 from glint.compiler.target.glslang import Diagnostic, validate
 
 from .finding import Edit, Finding, Fix, Severity
-
-# Deeper brackets than any real shader has (hand-written ones stay within a few dozen): the
-# file is reported (C006) instead of analysed.
-MAX_NESTING = 256
+from .nesting import Nesting
 
 Node = Tree | Token
 Span = tuple[int, int, int, int]  # line, column, end line, end column (1-based, end exclusive)
@@ -56,7 +54,7 @@ class LintContext:
     front_end_error: InputError | None = None  # why preprocessing or parsing failed
     read_problem: str = ""  # why the file's bytes are not text to lint
     too_deep: bool = False  # nesting beyond what the analysis can follow
-    nesting: int = 0  # deepest nesting of brackets in the preprocessed text
+    nesting: Nesting = field(default_factory=Nesting)  # how deep it nests (lint/nesting.py)
     lines: list[str] = field(default_factory=list)
     # Analyses computed once per file and shared by rules (e.g. the semantic model), by name.
     cache: dict[str, Any] = field(default_factory=dict)
@@ -185,6 +183,26 @@ def walk(node: Node) -> Iterator[Tree]:
     return _walk(node)
 
 
+def subtree_count(node: Node, up_to: int) -> int:
+    """How many subtrees `walk(node)` gives (the node included), or any number over `up_to`
+    where there are more: read from the index within `indexed(tree)`, else counted."""
+    for index in _INDEXES:
+        start = index._starts.get(id(node))
+        if start is not None:
+            return index._ends[start] - start
+    return sum(1 for _ in islice(_walk(node), up_to + 1))
+
+
+def variable_names(node: Node) -> list[str] | None:
+    """Within `indexed(tree)`, the names of the variables under a subtree of that tree, in walk
+    order, "" for a called function's name (`TreeIndex.variable_names`); None elsewhere."""
+    for index in _INDEXES:
+        found = index.variable_names(node)
+        if found is not None:
+            return found
+    return None
+
+
 def walk_kind(node: Node, *kinds: str) -> list[Tree]:
     """The subtrees of these kinds, in `walk` order: `[n for n in walk(node) if n.data in
     kinds]`. Within `indexed(tree)`, found without looking at the other subtrees."""
@@ -213,7 +231,7 @@ class TreeIndex:
     are different nodes). The index keeps every node alive, so no other object can take one
     of those ids while it exists. The tree must not change while indexed."""
 
-    __slots__ = ("order", "_starts", "_ends", "_kinds")
+    __slots__ = ("order", "_starts", "_ends", "_kinds", "_names")
 
     def __init__(self, root: Tree) -> None:
         order: list[Tree] = []
@@ -239,6 +257,9 @@ class TreeIndex:
         self._ends = ends
         # By kind: the positions in `order` of the subtrees of that kind, and the subtrees.
         self._kinds: dict[str, tuple[list[int], list[Tree]]] | None = None
+        # The positions of the `variable` subtrees, and the name each reads ("" for the name
+        # of a called function).
+        self._names: tuple[list[int], list[str]] | None = None
 
     def subtrees(self, node: Node) -> list[Tree] | None:
         """`list(walk(node))` for a subtree of the indexed tree; None for any other node."""
@@ -246,6 +267,24 @@ class TreeIndex:
         if start is None:
             return None
         return self.order[start : self._ends[start]]
+
+    def variable_names(self, node: Node) -> list[str] | None:
+        """The names of the variables under `node`, in walk order ("" for a called function's
+        name); None for a node outside the indexed tree. Two bisections and a slice: rules ask
+        this of every assignment in `x = y = x = ...`, and walking each one was quadratic."""
+        start = self._starts.get(id(node))
+        if start is None:
+            return None
+        if self._names is None:
+            self.of_kind(node, ())  # makes self._kinds
+            assert self._kinds is not None
+            positions, variables = self._kinds.get("variable", ([], []))
+            heads = {id(call.children[0]) for call in self._kinds.get("call", ((), ()))[1]}
+            names = ["" if id(v) in heads else str(v.children[0]) for v in variables]
+            self._names = (positions, names)
+        positions, names = self._names
+        low = bisect_left(positions, start)
+        return names[low : bisect_left(positions, self._ends[start], low)]
 
     def of_kind(self, node: Node, kinds: tuple[str, ...]) -> list[Tree] | None:
         """`walk_kind(node, *kinds)` for a subtree of the indexed tree; None for any other

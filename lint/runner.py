@@ -12,9 +12,10 @@ from dataclasses import dataclass, field
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import parse, preprocess
 
-from .context import MAX_NESTING, LintContext, indexed
+from .context import LintContext, indexed
 from .finding import Finding
 from .fixes import apply_fixes
+from .nesting import Nesting, bracket_nesting, tree_nesting
 from .options import Options
 from .rules import all_rules
 from .rules.style.s001_unused_suppression import UNUSED_SUPPRESSION, unused_suppressions
@@ -64,8 +65,8 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
     except RecursionError:  # macro calls nested thousands deep in arguments
         ctx.too_deep = True
         return ctx
-    ctx.nesting = nesting_depth(ctx.pre.text)
-    if ctx.nesting > MAX_NESTING:
+    ctx.nesting = Nesting(brackets=bracket_nesting(ctx.pre.text))
+    if ctx.nesting.too_deep():
         ctx.too_deep = True
         return ctx
     try:
@@ -76,20 +77,14 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
         # Input nested deeper than the parser can follow: C006 alone is reported.
         ctx.tree = None
         ctx.too_deep = True
+    if ctx.tree is not None:
+        # Statements or loops nested, or chains, deeper than the analyses follow: C006 alone,
+        # before any analysis runs into them (lint/nesting.py).
+        ctx.nesting = tree_nesting(ctx.tree, ctx.nesting.brackets)
+        if ctx.nesting.too_deep():
+            ctx.tree = None
+            ctx.too_deep = True
     return ctx
-
-
-def nesting_depth(text: str) -> int:
-    """The deepest nesting of (), [] and {} (comments are already blanked by the
-    preprocessor). The analyses are quadratic in nesting on pathological input."""
-    depth = deepest = 0
-    for char in text:
-        if char in "([{":
-            depth += 1
-            deepest = max(deepest, depth)
-        elif char in ")]}":
-            depth = max(depth - 1, 0)
-    return deepest
 
 
 def lint_source(

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
+import sys
 
 import pytest
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
-from glint.compiler.target import glslang
+from glint.compiler.target import glslang, tools
 from glint.compiler.target.glslang import (
     find_validator,
     spirv_instruction_count,
@@ -235,3 +237,58 @@ def test_output_is_split_at_the_file_names_in_order() -> None:
     assert glslang._split_by_file("oops\n" + output, paths) is None  # text before the first
     swapped = "/t/00001.frag\n/t/00000.frag\n"
     assert glslang._split_by_file(swapped, paths) is None  # out of order
+
+
+# --- what glslang prints is read whatever the bytes; runaways are bounded -----------------------
+
+NON_ASCII = "void mainImage(out vec4 c, in vec2 f) {\n    c = vec4(1.0) × 0.5;\n}\n"
+# Each macro is the one before twice: glslang expands 2^40 tokens, hundreds of MB a second.
+DOUBLING = (
+    "#define A0 f.x\n"
+    + "".join(f"#define A{i} A{i - 1}+A{i - 1}\n" for i in range(1, 41))
+    + "void mainImage(out vec4 c, in vec2 f) { c = vec4(A40); }\n"
+)
+
+
+@needs_glslang
+def test_non_ascii_outside_a_comment_is_an_error_at_that_character() -> None:
+    # glslang names `×` by its first byte alone, which is not UTF-8 by itself; reading its
+    # output as ASCII (or strict UTF-8) raised instead.
+    [diagnostic] = validate(NON_ASCII, "x.glsl")
+    assert (diagnostic.line, diagnostic.column, diagnostic.severity) == (2, 19, "error")
+    assert diagnostic.message.startswith("'×'")
+    assert validate_many([(NON_ASCII, "x.glsl"), (VALID, "ok.glsl")]) == [[diagnostic], []]
+
+
+def test_tool_output_is_decoded_whatever_its_bytes() -> None:
+    script = "import sys; sys.stdout.buffer.write(b'caf\\xc3 \\xff\\n'); sys.exit(3)"
+    result = tools.run_tool([sys.executable, "-c", script])
+    assert (result.returncode, result.stdout) == (3, "caf\ufffd \ufffd\n")
+
+
+def test_a_tool_past_its_time_limit_is_an_input_error() -> None:
+    with pytest.raises(tools.ToolLimit, match=r"ran out of time on this file \(limit 0.5 s\)") as e:
+        tools.run_tool([sys.executable, "-c", "import time; time.sleep(30)"], timeout=0.5)
+    assert e.value.exit_code == 1 and e.value.what == "time"
+
+
+@pytest.mark.skipif(os.name != "posix", reason="the memory limit is set with setrlimit")
+def test_a_tool_past_its_memory_limit_is_an_input_error(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(tools, "MEMORY_LIMIT_BYTES", 256 << 20)
+    grow = "import sys\ntry:\n    b = bytearray(1 << 30)\nexcept MemoryError:\n" \
+        "    sys.stderr.write('std::bad_alloc'); sys.exit(134)\n"  # fmt: skip
+    with pytest.raises(tools.ToolLimit, match="ran out of memory on this file") as raised:
+        tools.run_tool([sys.executable, "-c", grow])
+    assert raised.value.what == "memory"
+
+
+@needs_glslang
+@pytest.mark.skipif(os.name != "posix", reason="the memory limit is set with setrlimit")
+def test_glslang_running_away_is_one_diagnostic(monkeypatch: pytest.MonkeyPatch) -> None:
+    # A small limit, so the test is quick; the real one (1 GiB) is reached within seconds too.
+    monkeypatch.setattr(tools, "MEMORY_LIMIT_BYTES", 256 << 20)
+    [diagnostic] = validate(DOUBLING, "bomb.glsl")
+    assert (diagnostic.file, diagnostic.line, diagnostic.severity) == ("bomb.glsl", 1, "error")
+    assert diagnostic.message == "glslangValidator ran out of memory on this file (limit 0.25 GiB)"
+    # In a batch, the other files keep their own diagnostics.
+    assert validate_many([(VALID, "ok.glsl"), (DOUBLING, "bomb.glsl")]) == [[], [diagnostic]]

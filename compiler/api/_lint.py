@@ -59,7 +59,10 @@ def lint_shader(
     )
     options = options_for(flags)  # the configuration file, then the flags, checked as the CLI
     if isinstance(shader, Shader) or is_source(shader):
-        return lint_bytes(str(shader).encode("utf-8"), "<input>", options).findings
+        # A lone surrogate (text read with errors="surrogateescape") cannot be UTF-8: kept as
+        # its bytes, it is reported as text that is not UTF-8 (C005) rather than raising.
+        data = str(shader).encode("utf-8", errors="surrogatepass")
+        return lint_bytes(data, "<input>", options).findings
     if not isinstance(shader, str | os.PathLike):
         raise UsageError(
             "shader: expected GLSL text (a str with a line break), the path of a file or a "

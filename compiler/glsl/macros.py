@@ -4,6 +4,11 @@ Expansion follows the C preprocessor as GLSL ES 3.00 specifies it (no `#` string
 pasting allowed). Each token carries a "hide set" of macros it came from (Prosser's algorithm),
 which is what stops a macro from expanding inside its own replacement while still letting
 arguments be expanded and the result be rescanned.
+
+Hide sets are shared: every token of one expansion holds the same set object, and a union is
+made once per file for each pair of sets (`Expander._union`). Copied per token, a chain of a
+thousand macros (`#define A1 A0+A0` ...) held a set of up to a thousand names in every one of
+its tokens: gigabytes.
 """
 
 from __future__ import annotations
@@ -53,8 +58,18 @@ class MacroCallError(Exception):
 
 _SPACE = Tok("ws", " ")
 # Tokens that macro bodies may produce in one source. Macros that double (`#define B A A`)
-# nest into billions of tokens; real shaders stay far below this.
+# nest into billions of tokens; real shaders stay far below this (the corpus's largest
+# expansion of a file is under 20,000 tokens).
 MAX_EXPANDED_TOKENS = 500_000
+# Macros expanding inside macros: a token's hide set holds one name per level, and each level
+# makes a set of its own, so a chain of n macros (`#define A2 (A1+1)` ...) holds n^2/2 names.
+# Real shaders nest a few levels (the corpus: 6).
+MAX_MACRO_NESTING = 256
+# Names held in all the distinct hide sets of one file: what bounds their memory whatever the
+# shape of the macros (the corpus: under 200).
+MAX_HIDDEN_NAMES = 1_000_000
+
+HideSet = frozenset[str]
 
 
 class Expander:
@@ -65,6 +80,10 @@ class Expander:
         self._line = line  # current reported line, for __LINE__
         self.used: set[str] = set()  # macro names expanded since the caller last cleared it
         self.produced = 0  # tokens substituted so far, against MAX_EXPANDED_TOKENS
+        self.outer = ""  # the macro, as the source names it, being expanded
+        # (set, set) -> their union, the one object every token of that union holds
+        self._unions: dict[tuple[HideSet, HideSet], HideSet] = {}
+        self._hidden = 0  # names in the sets of `_unions`, against MAX_HIDDEN_NAMES
 
     def expand(self, tokens: list[Tok], more_input: bool = False) -> list[Tok]:
         """Fully expand `tokens`; raise NeedMoreInput when a call is cut off and more may follow."""
@@ -83,7 +102,10 @@ class Expander:
                 out.append(tok)
             elif macro.params is None:
                 self.used.add(name)
-                body = self._substitute(macro, [], tok.hide | {name})
+                self._entering(name, tok)
+                hide = self._union(tok.hide, frozenset((name,)))
+                self._check_nesting(hide, tok.col)
+                body = self._substitute(macro, [], hide)
                 self._count(len(body), tok.col)
                 stack.extend(reversed([_SPACE, *body, _SPACE]))
             else:
@@ -92,23 +114,65 @@ class Expander:
                     out.append(tok)
                     continue
                 args, close = call
+                self._entering(name, tok)
                 # Arguments count too: calls nested in arguments copy them once per level.
                 self._count(sum(len(a) for a in args), tok.col)
                 args = self._check_arity(macro, args, tok.col)
                 self.used.add(name)
-                body = self._substitute(macro, args, (tok.hide & close.hide) | {name})
+                hide = self._union(tok.hide & close.hide, frozenset((name,)))
+                self._check_nesting(hide, tok.col)
+                body = self._substitute(macro, args, hide)
                 self._count(len(body), tok.col)
                 stack.extend(reversed([_SPACE, *body, _SPACE]))
         return out
+
+    def _entering(self, name: str, tok: Tok) -> None:
+        if not tok.hide:  # a name the source wrote, not one an expansion produced
+            self.outer = name
 
     def _count(self, n: int, col: int) -> None:
         self.produced += n
         if self.produced > MAX_EXPANDED_TOKENS:
             raise MacroCallError(
-                f"macro expansion too large (over {MAX_EXPANDED_TOKENS:,} tokens): macro calls "
-                "nested too deeply, or macros that use another one twice, nested many times",
+                f"macro expansion too large: expanding '{self.outer}' takes this file's macro "
+                f"expansions past {MAX_EXPANDED_TOKENS:,} tokens (macro calls nested too "
+                "deeply, or macros that each use the one before twice, which doubles the "
+                "expansion at every level)",
                 col,
             )
+
+    def _check_nesting(self, hide: HideSet, col: int) -> None:
+        if len(hide) > MAX_MACRO_NESTING:
+            raise MacroCallError(
+                f"macros nested too deeply: expanding '{self.outer}' expands macros inside "
+                f"macros more than {MAX_MACRO_NESTING} levels deep",
+                col,
+            )
+
+    def _union(self, a: HideSet, b: HideSet) -> HideSet:
+        """a | b, one object for every token that holds it (see the module's docstring)."""
+        if not a or a is b:
+            return b
+        if not b:
+            return a
+        found = self._unions.get((a, b))
+        if found is None:
+            found = a | b
+            if found == a:
+                found = a
+            elif found == b:
+                found = b
+            else:
+                self._hidden += len(found)
+                if self._hidden > MAX_HIDDEN_NAMES:
+                    raise MacroCallError(
+                        f"macro expansion too large: expanding '{self.outer}' nests more "
+                        f"macros inside macros than glint follows ({MAX_HIDDEN_NAMES:,} names "
+                        "hidden from re-expansion)",
+                        0,
+                    )
+            self._unions[(a, b)] = found
+        return found
 
     def _take_call(self, stack: list[Tok], more_input: bool) -> tuple[list[list[Tok]], Tok] | None:
         """Pop `( args )` from the stack if it follows; None (stack untouched) when it does not."""
@@ -167,8 +231,9 @@ class Expander:
                     result.extend(self.expand(list(arg)))
             else:
                 result.append(tok)
-        pasted = _paste(result)
-        return [t._replace(hide=t.hide | hide) for t in pasted if t.kind != "placeholder"]
+        pasted = _paste(result, self._union)
+        return [t._replace(hide=self._union(t.hide, hide)) for t in pasted
+                if t.kind != "placeholder"]  # fmt: skip
 
 
 def _next_to_paste(body: list[Tok], i: int) -> bool:
@@ -182,7 +247,7 @@ def _next_to_paste(body: list[Tok], i: int) -> bool:
     return False
 
 
-def _paste(tokens: list[Tok]) -> list[Tok]:
+def _paste(tokens: list[Tok], union: Callable[[HideSet, HideSet], HideSet]) -> list[Tok]:
     """Apply the `##` operators in a substituted body."""
     out: list[Tok] = []
     i = 0
@@ -202,5 +267,6 @@ def _paste(tokens: list[Tok]) -> list[Tok]:
         i += 1
         text = left.text + right.text
         merged = tokenize(text) if text else [Tok("placeholder", "")]
-        out.extend(t._replace(col=0, hide=left.hide | right.hide) for t in merged)
+        hide = union(left.hide, right.hide)
+        out.extend(t._replace(col=0, hide=hide) for t in merged)
     return out

@@ -23,7 +23,7 @@ import subprocess
 import tempfile
 
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
-from glint.compiler.target import shadertoy
+from glint.compiler.target import shadertoy, tools
 from glint.compiler.target.glslang import find_validator, parse_output
 
 LANGS = ("hlsl", "msl")
@@ -196,10 +196,6 @@ def check_hlsl(hlsl: str, entry: str = ENTRY) -> list[str]:
 
 
 def _run(args: list[str]) -> subprocess.CompletedProcess[str]:
-    try:
-        return subprocess.run(args, capture_output=True, text=True, timeout=TIMEOUT_S)
-    except subprocess.TimeoutExpired as exc:
-        name = os.path.basename(args[0])
-        raise EnvironmentProblem(f"{name} did not finish within {TIMEOUT_S:.0f} s") from exc
-    except OSError as exc:
-        raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
+    """The tool's output, decoded; ToolLimit (an InputError) when the shader makes it run out
+    of time or memory (tools.py)."""
+    return tools.run_tool(args, TIMEOUT_S)

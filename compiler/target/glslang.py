@@ -16,11 +16,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
-from glint.compiler.target import shadertoy
+from glint.compiler.target import shadertoy, tools
 from glint.compiler.target.sourcemap import Origin, build_line_map, split_lines
+from glint.compiler.target.tools import ToolLimit
 
 TARGETS = shadertoy.TARGETS
-TIMEOUT_S = 30.0
+TIMEOUT_S = tools.TIMEOUT_S
 # validate_many: files per glslangValidator process, and the time each file adds to its limit.
 BATCH_FILES = 64
 BATCH_FILE_TIMEOUT_S = 2.0
@@ -86,14 +87,8 @@ def wrap_for_target(source: str, target: str) -> tuple[str, int]:
 
 
 def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess[str]:
-    try:
-        return subprocess.run(args, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired as exc:
-        raise EnvironmentProblem(
-            f"{os.path.basename(args[0])} did not finish within {timeout:.0f} s"
-        ) from exc
-    except OSError as exc:
-        raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
+    """The tool's output, decoded; ToolLimit when it runs out of time or memory (tools.py)."""
+    return tools.run_tool(args, timeout)
 
 
 def _compile(
@@ -170,13 +165,15 @@ def parse_output(output: str, source: str, filename: str, prelude_lines: int) ->
         token_match = _TOKEN.match(match.group(3))
         token, message = token_match.groups() if token_match else ("", match.group(3))
         message = message.strip() or match.group(3)
+        user_line = int(match.group(2)) - prelude_lines if match.group(2) else 0
+        in_user_code = 1 <= user_line <= len(user_lines)
+        token = _whole_character(token, user_lines[user_line - 1] if in_user_code else "")
         if token and token_match:
             message = f"'{token}': {message}"
         if match.group(2) is None:
             # Link-stage errors name no line; the whole file is at fault.
             diagnostics.append(Diagnostic(filename, 1, 1, severity, message))
             continue
-        user_line = int(match.group(2)) - prelude_lines
         if user_line < 1:
             diagnostics.append(Diagnostic(filename, 1, 1, severity, f"in the prelude: {message}"))
         elif user_line > len(origins):
@@ -186,6 +183,15 @@ def parse_output(output: str, source: str, filename: str, prelude_lines: int) ->
             column = _column(user_lines[user_line - 1], token, message)
             diagnostics.append(Diagnostic(origin.file, origin.line, column, severity, message))
     return _unique(diagnostics)
+
+
+def _whole_character(token: str, line_text: str) -> str:
+    """glslang names a character outside ASCII by its first byte alone (`×` is the byte 0xc3),
+    which reads back as U+FFFD: name the line's first such character instead."""
+    if "\ufffd" not in token:
+        return token
+    found = re.search(r"[^\x00-\x7f]", line_text)
+    return found.group() if found else token
 
 
 def _unique(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
@@ -199,10 +205,14 @@ def _unique(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
 
 
 def validate(source: str, filename: str = "<input>", target: str = "shadertoy") -> list[Diagnostic]:
-    """Compile `source` as `target` would and return its diagnostics (empty when it is clean)."""
+    """Compile `source` as `target` would and return its diagnostics (empty when it is clean).
+    glslang running out of time or memory on it is one error diagnostic, at its first line."""
     wrapped, prelude_lines = wrap_for_target(source, target)
     with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
-        result = _compile(wrapped, workdir, [])
+        try:
+            result = _compile(wrapped, workdir, [])
+        except ToolLimit as exc:
+            return [Diagnostic(filename, 1, 1, "error", exc.message)]
     output = result.stdout + result.stderr
     return _diagnostics(output, result.returncode, source, filename, prelude_lines)
 
@@ -211,7 +221,10 @@ def validate_stage(source: str, filename: str, stage: str) -> list[Diagnostic]:
     """Compile a complete shader (it opens with #version) as `stage` ("vert" or "frag") and
     return its diagnostics, at the snippet file and line its markers name."""
     with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
-        result = _compile(source, workdir, [], stage)
+        try:
+            result = _compile(source, workdir, [], stage)
+        except ToolLimit as exc:
+            return [Diagnostic(filename, 1, 1, "error", exc.message)]
     output = result.stdout + result.stderr
     return _diagnostics(output, result.returncode, source, filename, 0)
 
@@ -222,7 +235,11 @@ def _diagnostics(
     diagnostics = parse_output(output, source, filename, prelude_lines)
     if returncode != 0 and not any(d.severity == "error" for d in diagnostics):
         # A failure we could not parse must not pass silently.
-        detail = output.strip() or f"exit status {returncode}"
+        if returncode < 0:
+            crashed = f"crashed ({tools.signal_name(returncode)}) on this file"
+            detail = f"{crashed}: {output.strip()}" if output.strip() else crashed
+        else:
+            detail = output.strip() or f"exit status {returncode}"
         diagnostics.append(Diagnostic(filename, 1, 1, "error", f"glslangValidator: {detail}"))
     return diagnostics
 
@@ -259,7 +276,10 @@ def _validate_batch(batch: Sequence[tuple[str, str]], target: str) -> list[list[
                 handle.write(text)
             paths.append(path)
         timeout = TIMEOUT_S + BATCH_FILE_TIMEOUT_S * len(paths)
-        result = _run([validator, *paths], timeout)
+        try:
+            result = _run([validator, *paths], timeout)
+        except ToolLimit:
+            return None  # one file ran away: `validate` finds which, alone
     sections = _split_by_file(result.stdout, paths)
     if sections is None or result.stderr.strip() or result.returncode < 0:
         return None

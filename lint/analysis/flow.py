@@ -34,7 +34,7 @@ from lark import Token, Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
-from ..context import LintContext, Node
+from ..context import LintContext, Node, walk_kind
 from ..context import tokens as tokens_of
 from .model import Model, condition_truth, semantic_model
 from .syntax import parameter_parts, prototype_parts, same_expression, type_of_declaration
@@ -855,12 +855,19 @@ def _start_pos(node: Node) -> int | None:
 _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}
 
 
+_WRITERS = ("assignment", "prefix", "postfix", "call")
+
+
 def _assigns(node: Node, name: str) -> bool:
     """Whether `name` may be assigned anywhere in `node` (an assignment, ++/--, or an argument
     that a call may write)."""
     if not isinstance(node, Tree):
         return False
-    for sub in node.iter_subtrees():
+    # The writers alone, sliced from the file's index kind by kind (the order does not matter
+    # here): asked of every loop, walking the whole body each time cost the square of the
+    # loops' nesting.
+    writers = (sub for kind in _WRITERS for sub in walk_kind(node, kind))
+    for sub in writers:
         if sub.data == "assignment" and _root(sub.children[0]) is not None:
             targets = [sub.children[0]]
         elif sub.data in ("prefix", "postfix"):

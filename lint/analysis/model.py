@@ -22,11 +22,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from lark import Token, Tree
+from lark import Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
-from ..context import LintContext, Node, walk
+from ..context import LintContext, Node, subtree_count, tokens, walk
 from . import types as T
 from .declarations import declared_variables, signature, struct_members
 from .expressions import Evaluator, RecordedEvaluator, as_polynomial
@@ -63,6 +63,8 @@ SHADERTOY_RANGES: dict[str, Interval] = {
     "gl_FragCoord": NONNEG,
 }
 _COMPARE = {"<", ">", "<=", ">="}
+# Subtrees a recursive evaluation may go through at once (Model._value_of_subtrees).
+_EVALUATE_IN_ONE_GO = 256
 _NEGATE = {"<": ">=", "<=": ">", ">": "<=", ">=": "<"}
 _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
 
@@ -112,9 +114,27 @@ class Model:
     def value_of(self, expr: Node) -> Value:
         key = id(expr)
         if key not in self._memo:
+            if isinstance(expr, Tree):
+                self._value_of_subtrees(expr)
             env = self._env_of.get(key, self._global_env)
             self._memo[key] = RecordedEvaluator(self, env, self._memo).eval(expr)
         return self._memo[key]
+
+    def _value_of_subtrees(self, expr: Tree) -> None:
+        """Where `expr` is large, the values of its subtrees first, the deepest first: each
+        evaluation then finds its children's values and goes one level down, not one level
+        per level of a chain (`pow(y * y * ... * y, 2.0)` thousands of terms long, which
+        exhausted the frames the runner allows). Every subtree is evaluated as the recursion
+        would evaluate it, through `value_of`, in its own recorded environment."""
+        if subtree_count(expr, _EVALUATE_IN_ONE_GO) <= _EVALUATE_IN_ONE_GO:
+            return
+        below = list(walk(expr))
+        memo = self._memo
+        for node in reversed(below[1:]):
+            key = id(node)
+            if key not in memo:
+                env = self._env_of.get(key, self._global_env)
+                memo[key] = RecordedEvaluator(self, env, memo).eval(node)
 
     def type_of(self, expr: Node) -> str | None:
         """The GLSL type of an expression ("float", "vec3", a struct name), None if unknown."""
@@ -476,8 +496,7 @@ def _passed(value: Value, arg: Node) -> Value:
     """An argument as its parameter sees it: an unclamped dot product keeps the evidence of
     its 0, and says where it came from."""
     if value.why is None and value.zero and value.origin in ("dot", "length", "distance"):
-        first = next(arg.scan_values(lambda t: isinstance(t, Token)), None) \
-            if isinstance(arg, Tree) else arg  # fmt: skip
+        first = next(tokens(arg), None)  # without recursion (lark's scan_values recurses)
         line = getattr(first, "line", None)
         where = f" at line {line}" if line else ""
         what = {"dot": "dot product"}.get(value.origin, value.origin)

@@ -237,13 +237,21 @@ def cos_range(x: Interval) -> Interval:
     return _periodic(x, math.cos, 0.0)
 
 
+# Beyond this magnitude a float is no longer precise to a small part of π: where its steps
+# reach π, `k * π` stops growing with k and the extrema cannot be told apart (a loop over
+# them never ended on a value grown to 1e20 by a loop's widening).
+_PRECISE_ANGLE = 2.0**40
+
+
 def _periodic(x: Interval, f: Callable[[float], float], peak: float) -> Interval:
     """sin or cos over x: the values at the ends and at every extremum (peak + kπ) inside."""
-    if not x.is_bounded or x.hi - x.lo >= 2 * math.pi:
+    if not x.is_bounded or x.hi - x.lo >= 2 * math.pi or max(-x.lo, x.hi) > _PRECISE_ANGLE:
         return UNIT
     values = [f(x.lo), f(x.hi)]
     k = math.ceil((x.lo - peak) / math.pi)
-    while peak + k * math.pi <= x.hi:
+    for _ in range(3):  # narrower than 2π: at most two extrema inside
+        if peak + k * math.pi > x.hi:
+            break
         values.append(1.0 if k % 2 == 0 else -1.0)
         k += 1
     return Interval(max(-1.0, min(values)), min(1.0, max(values)))

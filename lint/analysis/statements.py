@@ -289,46 +289,66 @@ class ForwardPass:
         self.effects(expr, scopes, recorded=(expr, env, seen))
         return env, seen
 
-    def effects(self, expr: Node, scopes: Scopes, nested_only: bool = False,
-                recorded: tuple[Node, Env, dict[int, Value]] | None = None) -> None:  # fmt: skip
+    def effects(
+        self,
+        expr: Node,
+        scopes: Scopes,
+        nested_only: bool = False,
+        recorded: tuple[Node, Env, dict[int, Value]] | None = None,
+    ) -> Value | None:
         """Apply what an expression writes: top-level assignments exactly (`x = e`, `x += e`,
         a sequence of them), any other write makes its variable unknown. `recorded`: an
-        expression `record` went through, its environment and the values found there."""
+        expression `record` went through, its environment and the values found there.
+
+        Returns the value of an assignment (of a sequence: of its last part) where it was
+        evaluated, for the assignment it is the right side of: `x = y = e` evaluates `e` once,
+        not once per `=` (a chain of thousands of them was quadratic)."""
         if not isinstance(expr, Tree):
-            return
+            return None
         if not nested_only and expr.data == "sequence":
+            value = None
             for part in expr.children:
-                self.effects(part, scopes)
-            return
+                value = self.effects(part, scopes)
+            return value
         if not nested_only and expr.data == "assignment":
             target, op, rhs = expr.children
-            self.effects(rhs, scopes)
-            self._assign(target, str(op), expr, scopes, recorded)
-            return
+            value = self.effects(rhs, scopes)
+            return self._assign(target, str(op), expr, scopes, recorded, value)
         for node in self.model.writers(expr):
             for target in written_targets(node, self.model):
                 name = root_variable(target)
                 old = scopes.lookup(name) if name else None
                 if name and old is not None:
                     scopes.assign(name, old.unknown())
+        return None
 
     def _assign(self, target: Node, op: str, expr: Tree, scopes: Scopes,
-                recorded: tuple[Node, Env, dict[int, Value]] | None) -> None:  # fmt: skip
+                recorded: tuple[Node, Env, dict[int, Value]] | None,
+                rhs_value: Value | None) -> Value | None:  # fmt: skip
         name = root_variable(target)
         old = scopes.lookup(name) if name else None
-        if name is None or old is None:
-            return
-        env = scopes.env_for(expr, self.model.names_of(expr))
-        seen = None
-        if recorded is not None and recorded[0] is expr and _same_env(env, recorded[1]):
-            seen = recorded[2]  # nothing before this changed what the expression reads
+        if rhs_value is not None:
+            # The right side is an assignment applied just before: its value is known, and only
+            # the target is left to read.
+            env = scopes.env_for(target, self.model.names_of(target))
+            seen = {id(expr.children[2]): rhs_value}
+        elif name is None or old is None:
+            return None
+        else:
+            env = scopes.env_for(expr, self.model.names_of(expr))
+            seen = None
+            if recorded is not None and recorded[0] is expr and _same_env(env, recorded[1]):
+                seen = recorded[2]  # nothing before this changed what the expression reads
         got = Evaluator(self.model, env, seen=seen).eval(expr)
+        if name is None or old is None:
+            return got
         if op not in ("=", *ASSIGN_OPS):
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
             scopes.assign(name, got.but(type=old.type))
         else:  # one component or element: each is now the old value or the new one
             scopes.assign(name, Value(old.type, old.range.hull(got.range)))
+        return got
 
 
 def _same_env(a: Env, b: Env) -> bool:

@@ -8,7 +8,7 @@ from lark import Token, Tree
 
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
-from ..context import Node, walk
+from ..context import Node, variable_names, walk, walk_kind
 
 # --- calls, lvalues and types ------------------------------------------------------------
 
@@ -215,9 +215,16 @@ def names_in(node: Node) -> set[str]:
     """Every variable name read or written under the node (call heads excluded)."""
     if not isinstance(node, Tree):
         return set()
+    if node.data == "variable":  # itself, even the name of a call (whose call is not under it)
+        return {str(node.children[0])}
+    indexed = variable_names(node)  # a slice of the file's index, without walking the node
+    if indexed is not None:
+        found = set(indexed)
+        found.discard("")
+        return found
     heads = {id(s.children[0]) for s in walk(node) if s.data == "call"}
     return {str(s.children[0]) for s in walk(node) if s.data == "variable" and id(s) not in heads}
 
 
 def calls_in(node: Node) -> list[Tree]:
-    return [s for s in walk(node) if s.data == "call"] if isinstance(node, Tree) else []
+    return walk_kind(node, "call") if isinstance(node, Tree) else []

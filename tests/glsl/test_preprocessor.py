@@ -181,3 +181,53 @@ def test_errors_have_positions(source: str, line: int, column: int, fragment: st
     assert fragment in err.message
     assert err.message.startswith(f"{err.file}:{line}:{column}: ")
     assert err.exit_code == 1
+
+
+# --- runaway macros: stopped early, with the macro named -------------------------------------
+
+
+def _chain(levels: int, body: str) -> str:
+    """`#define A0 x` and each next macro built from the one before; A<levels-1> used."""
+    lines = ["#define A0 x"] + [
+        f"#define A{i} {body.format(p=f'A{i - 1}')}" for i in range(1, levels)
+    ]
+    return "\n".join(lines) + f"\nfloat y = A{levels - 1};\n"
+
+
+def test_hide_sets_are_shared_by_the_tokens_of_an_expansion() -> None:
+    # Each token held a copy of its hide set: a chain of a thousand macros took gigabytes.
+    from glint.compiler.glsl.macros import Expander, Macro
+    from glint.compiler.glsl.pptokens import tokenize
+
+    macros = {"A": Macro.make("A", None, "B B B", "<t>", 1), "B": Macro.make("B", None, "x", "", 2)}
+    out = Expander(macros, lambda: 1).expand(tokenize("A A"))
+    xs = [t for t in out if t.text == "x"]
+    assert len(xs) == 6 and len({id(t.hide) for t in xs}) == 1, [t.hide for t in xs]
+
+
+@pytest.mark.parametrize(
+    ("body", "fragment"),
+    [
+        ("{p}+{p}", "expanding 'A999'"),  # doubles at every level
+        ("{p} {p}", "expanding 'A999'"),
+        ("({p}+1)", "expanding 'A999' expands macros inside macros more than 256 levels deep"),
+    ],
+)
+def test_a_chain_of_a_thousand_macros_is_an_error_naming_the_macro(
+    body: str, fragment: str
+) -> None:
+    with pytest.raises(PreprocessorError, match="nested too deeply") as raised:
+        preprocess(_chain(1000, body), "chain.glsl")
+    assert fragment in raised.value.what
+    assert raised.value.line == 1001
+
+
+def test_a_doubling_macro_is_stopped_at_the_expansion_limit() -> None:
+    with pytest.raises(PreprocessorError, match="expanding 'A30' takes this file's macro expan"):
+        preprocess(_chain(31, "{p}+{p}"), "bomb.glsl")
+
+
+def test_macros_nested_within_the_limits_expand() -> None:
+    result = preprocess(_chain(200, "({p}+1)"), "deep.glsl")
+    expanded = result.text.splitlines()[-1].replace(" ", "")
+    assert expanded == "floaty=" + "(" * 199 + "x" + "+1)" * 199 + ";"

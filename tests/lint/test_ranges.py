@@ -75,6 +75,15 @@ def test_sin_and_cos_of_a_narrow_range_are_tight() -> None:
     assert R.sin_range(Interval(0.0, math.inf)) == R.UNIT
 
 
+@pytest.mark.parametrize("x", [1e20, -1e20, 2.0**53, 1e300])
+def test_sin_and_cos_of_a_huge_value_end(x: float) -> None:
+    # Past 2^53, `k * pi` stopped growing with k: the walk over the extrema never ended (a
+    # loop's widening grows values that far; lint ran out of memory on 2 KB of code).
+    for f in (R.sin_range, R.cos_range):
+        assert f(Interval.point(x)) == R.UNIT
+        assert f(Interval(x, x + 1.0)) == R.UNIT
+
+
 def test_tan_poles() -> None:
     assert R.reaches_tan_pole(Interval(1.0, 2.0))
     assert not R.reaches_tan_pole(Interval(-1.0, 1.0))
@@ -338,6 +347,17 @@ def test_loop_exit_through_break_is_joined() -> None:
 def test_reassignment_in_source_order() -> None:
     body = "float x = -1.0;\nx = abs(x) + 1.0;\nx *= 2.0;\nfloat y = x;"
     assert rng(body, "x") == Interval(4.0, 4.0)
+
+
+def test_chained_assignments_take_the_value_assigned() -> None:
+    # `x = (y = y + 1.0)`: x takes y's new value, evaluated once (the right side was evaluated
+    # again after y had changed, and once per `=` of a chain: quadratic in its length).
+    body = "float y = 1.0;\nfloat x = 0.0;\nx = (y = y + 1.0);\nfloat a = x;\nfloat b = y;"
+    assert rng(body, "x") == Interval(2.0, 2.0)
+    assert rng(body, "y") == Interval(2.0, 2.0)
+    body = "float y = 1.0;\nfloat x = 0.0;\nx += y *= 3.0;\nfloat a = x;\nfloat b = y;"
+    assert rng(body, "x") == Interval(3.0, 3.0)
+    assert rng(body, "y") == Interval(3.0, 3.0)
 
 
 def test_globals_and_consts() -> None:

@@ -10,6 +10,7 @@ import pytest
 from lark import Token, Tree
 
 from glint.compiler.glsl import parse, preprocess
+from glint.lint.analysis.syntax import calls_in, names_in
 from glint.lint.context import LintContext, TreeIndex, _walk, indexed, walk, walk_kind
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
@@ -46,6 +47,17 @@ def test_index_gives_the_plain_walk_of_every_subtree(path: Path) -> None:
             assert same_nodes(list(walk(node)), want), node.data
             for kinds in KIND_SETS:
                 assert same_nodes(walk_kind(node, *kinds), [n for n in want if n.data in kinds])
+
+
+@pytest.mark.parametrize("path", SHADERS, ids=lambda p: p.name)
+def test_names_and_calls_under_a_node_are_the_same_indexed_or_not(path: Path) -> None:
+    tree = tree_of(path)
+    nodes = list(_walk(tree))
+    want = [(names_in(n), calls_in(n)) for n in nodes]
+    with indexed(tree):
+        for node, (names, calls) in zip(nodes, want, strict=True):
+            assert names_in(node) == names, node.data
+            assert same_nodes(calls_in(node), calls), node.data
 
 
 @pytest.mark.parametrize("path", SHADERS[:3], ids=lambda p: p.name)
