@@ -185,7 +185,7 @@ def cmd_lint(args: argparse.Namespace) -> int:
         findings += result.findings
         sources[result.file] = result.text
         for note in result.notes:
-            print(f"glint: {note}", file=sys.stderr)
+            print(f"glint: {printable(note)}", file=sys.stderr)
         if result.fixed:
             fixed += result.fixed
             if file == "-":
@@ -201,6 +201,8 @@ def cmd_lint(args: argparse.Namespace) -> int:
         out.write(REPORTERS[args.format](findings, sources))
     if args.format in ("text", "concise") or args.statistics:
         out.write(summary(findings, fixed))
+    if any(result.failed for result in results):
+        return 2  # glint failed on a file (its note says which): the report is not whole
     return 1 if findings else 0
 
 
@@ -231,7 +233,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     fresh = lint_items(items, options, args.fix, args.unsafe_fixes, args.jobs)
     for index, result in zip(todo, fresh, strict=True):
         results[index] = result
-        if cache is not None and not (result.fixed and files[index] == "-"):
+        if cache is not None and not result.failed and not (result.fixed and files[index] == "-"):
             # the bytes the file holds after this run (a fixed file: UTF-8, its BOM kept)
             now = result.encoded() if result.fixed else data[index]
             cache.store(names[index], now, result.findings)

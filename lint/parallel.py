@@ -87,7 +87,20 @@ def lint_chunk(
 ) -> list[LintResult]:
     """Lint consecutive files in this process, glslang run once for all of them."""
     with precomputed_glslang(_glslang_for(items, options)):
-        return [lint_bytes(data, name, options, fix, unsafe_fixes) for name, data in items]
+        return [_lint_one(data, name, options, fix, unsafe_fixes) for name, data in items]
+
+
+def _lint_one(
+    data: bytes, name: str, options: Options, fix: bool, unsafe_fixes: bool
+) -> LintResult:
+    """One file's result. A bug of glint's own on one file is that file's note, not the end of
+    the run: the other files are still linted and reported, and the command exits 2."""
+    try:
+        return lint_bytes(data, name, options, fix, unsafe_fixes)
+    except Exception as exc:
+        what = f"{type(exc).__name__}: {exc}"
+        note = f"{name}: internal error: {what}; please report it with the file"
+        return LintResult(name, [], decode(data, name)[0], notes=[note], failed=True)
 
 
 def _glslang_for(

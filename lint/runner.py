@@ -35,6 +35,7 @@ class LintResult:
     fixed: int = 0  # how many fixes were applied
     notes: list[str] = field(default_factory=list)
     bom: bool = False  # the file opened with a UTF-8 byte-order mark
+    failed: bool = False  # glint itself failed on this file (a bug): see notes, nothing cached
 
     def encoded(self) -> bytes:
         """The bytes to write back after fixes: UTF-8, the file's byte-order mark kept."""

@@ -879,3 +879,33 @@ def test_a_fifo_or_a_device_named_to_lint_is_refused_unread(
     for path in (str(fifo), "/dev/zero"):
         assert main(["lint", "--no-cache", path]) == 2
         assert "not a regular file" in capsys.readouterr().err
+
+
+def test_a_bug_on_one_file_does_not_end_the_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """glint failing on one file (a bug of its own: no real input is known to cause one, so the
+    fault is planted) is that file's note; the other files are still linted and reported, the
+    command exits 2 and nothing of the failed file is cached."""
+    from glint.compiler.cli import main
+    from glint.lint import parallel
+
+    bad = "void mainImage(out vec4 c, in vec2 p) { c = texture2D(iChannel0, p); }\n"
+    (tmp_path / "a.glsl").write_text(bad)
+    (tmp_path / "b.glsl").write_text("void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }\n")
+    real = parallel.lint_bytes
+
+    def failing(data: bytes, name: str, *args: object) -> object:
+        if name.endswith("b.glsl"):
+            raise ZeroDivisionError("planted")
+        return real(data, name, *args)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(parallel, "lint_bytes", failing)
+    cache = tmp_path / "cache"
+    assert main(["lint", "--cache-dir", str(cache), "-j", "1", str(tmp_path)]) == 2
+    out, err = capsys.readouterr()
+    assert "a.glsl:1:" in out and "P003" in out  # the other file's finding is reported
+    assert "b.glsl: internal error: ZeroDivisionError: planted" in err
+    monkeypatch.setattr(parallel, "lint_bytes", real)  # the bug fixed: b.glsl is linted afresh
+    assert main(["lint", "--cache-dir", str(cache), "-j", "1", str(tmp_path)]) == 1
+    assert "internal error" not in capsys.readouterr().err
