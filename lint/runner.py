@@ -58,6 +58,7 @@ def decode(data: bytes, file: str) -> tuple[str, str | None]:
 
 def build_context(text: str, file: str, options: Options) -> LintContext:
     ctx = LintContext(file=file, text=text, target=options.target, use_glslang=options.glslang)
+    ctx.reports_glslang_errors = options.glslang and options.enabled("C001", file)
     try:
         ctx.pre = preprocess(text, file)
     except InputError as exc:

@@ -909,3 +909,19 @@ def test_a_bug_on_one_file_does_not_end_the_run(
     monkeypatch.setattr(parallel, "lint_bytes", real)  # the bug fixed: b.glsl is linted afresh
     assert main(["lint", "--cache-dir", str(cache), "-j", "1", str(tmp_path)]) == 1
     assert "internal error" not in capsys.readouterr().err
+
+
+def test_a_syntax_error_is_reported_when_only_c003_is_selected(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """C003 leaves a line to glslang's C001 only where C001 is reported: with --select C003 a
+    file that does not parse is never "All clean"."""
+    from glint.compiler.cli import main
+
+    broken = tmp_path / "broken.glsl"
+    broken.write_text("void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0)\n}\n")
+    assert main(["lint", "--no-cache", "--select", "C003", str(broken)]) == 1
+    assert "C003" in capsys.readouterr().out
+    assert main(["lint", "--no-cache", str(broken)]) == 1  # by default glslang's C001 says it
+    out = capsys.readouterr().out
+    assert "C001" in out and "C003" not in out

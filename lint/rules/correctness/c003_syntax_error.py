@@ -49,7 +49,10 @@ class SyntaxError_(Rule):
         if _reserved_word(error.what):
             return  # P007 reports every reserved word, parsed or not: one finding per token
         line = min(max(error.line, 1), len(ctx.lines))  # the parser's line is the physical one
-        if ctx.use_glslang and any(d.severity == "error" and d.line == line for d in ctx.glslang()):
+        # glslang's error on the same line says it (C001), unless C001 is not selected: then
+        # this is the only finding that the file does not compile
+        glslang_says = ctx.use_glslang and ctx.reports_glslang_errors
+        if glslang_says and any(d.severity == "error" and d.line == line for d in ctx.glslang()):
             return
         yield self.report(ctx, (line, error.column, line, error.column + 1), error.what)
 
