@@ -292,3 +292,17 @@ def test_glslang_running_away_is_one_diagnostic(monkeypatch: pytest.MonkeyPatch)
     assert diagnostic.message == "glslangValidator ran out of memory on this file (limit 0.25 GiB)"
     # In a batch, the other files keep their own diagnostics.
     assert validate_many([(VALID, "ok.glsl"), (DOUBLING, "bomb.glsl")]) == [[], [diagnostic]]
+
+
+def test_a_tool_reads_back_the_memory_limit_it_runs_under() -> None:
+    """run_tool puts the tool it starts under MEMORY_LIMIT_BYTES of address space: what the
+    tool itself reads back as its limit, once the limit has landed."""
+    shell = shutil.which("sh")
+    if shell is None or not hasattr(__import__("resource"), "prlimit"):
+        pytest.skip("needs a POSIX shell and Linux's prlimit")
+    result = tools.run_tool([shell, "-c", "sleep 0.2; ulimit -v"])
+    expected = tools.MEMORY_LIMIT_BYTES // 1024
+    own = __import__("resource").getrlimit(__import__("resource").RLIMIT_AS)[0]
+    if own != -1:  # glint itself under a lower limit: that one holds
+        expected = min(expected, own // 1024)
+    assert int(result.stdout) == expected

@@ -14,10 +14,10 @@ no output may be trusted to decode.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import subprocess
-from collections.abc import Callable
 
 from glint.compiler.errors import EnvironmentProblem, InputError
 
@@ -50,17 +50,21 @@ def run_tool(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.Complete
     runs past `timeout` seconds or out of memory, EnvironmentProblem when it cannot start."""
     tool = os.path.basename(args[0])
     try:
-        raw = subprocess.run(
-            args, capture_output=True, timeout=timeout, preexec_fn=_limits(), check=False
-        )
-    except subprocess.TimeoutExpired:
-        raise ToolLimit(tool, "time", f"{timeout:g} s") from None
+        process = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     except OSError as exc:
         raise EnvironmentProblem(f"cannot run {args[0]}: {exc.strerror or exc}") from exc
-    stdout, stderr = decode(raw.stdout), decode(raw.stderr)
-    if _ran_out_of_memory(raw.returncode, stderr):
+    with process:
+        _limit_memory(process.pid)
+        try:
+            out, err = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.communicate()
+            raise ToolLimit(tool, "time", f"{timeout:g} s") from None
+    stdout, stderr = decode(out), decode(err)
+    if _ran_out_of_memory(process.returncode, stderr):
         raise ToolLimit(tool, "memory", f"{MEMORY_LIMIT_BYTES / 2**30:g} GiB")
-    return subprocess.CompletedProcess(args, raw.returncode, stdout, stderr)
+    return subprocess.CompletedProcess(args, process.returncode, stdout, stderr)
 
 
 def decode(data: bytes | None) -> str:
@@ -82,19 +86,21 @@ def _ran_out_of_memory(returncode: int, stderr: str) -> bool:
     return returncode != 0 and any(text in stderr for text in _OUT_OF_MEMORY)
 
 
-def _limits() -> Callable[[], None] | None:
-    """What the child runs before the tool: the memory limit (POSIX only)."""
-    if os.name != "posix":
-        return None
-    return _limit_memory
+def _limit_memory(pid: int) -> None:
+    """Put the started tool under MEMORY_LIMIT_BYTES of address space (Linux), or under the
+    lower limit glint itself runs under (`ulimit -v`), which it inherits anyway.
 
-
-def _limit_memory() -> None:
-    # Runs in the child between fork and exec: no imports, no locks. A lower limit that glint
-    # itself runs under (`ulimit -v`) is kept.
+    The limit is set from outside (prlimit) right after the start rather than in the child
+    before exec (preexec_fn): that hook may deadlock in a process with threads (a language
+    server, a preview server) and makes every start a full fork. A tool allocates nothing much
+    in the microseconds before the limit lands; one that has already exited is left alone."""
+    prlimit = getattr(resource, "prlimit", None) if os.name == "posix" else None
+    if prlimit is None:
+        return
     soft, hard = resource.getrlimit(resource.RLIMIT_AS)
     limit = MEMORY_LIMIT_BYTES
     for bound in (soft, hard):
         if bound != resource.RLIM_INFINITY:
             limit = min(limit, bound)
-    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+    with contextlib.suppress(OSError):  # the tool has exited already
+        prlimit(pid, resource.RLIMIT_AS, (limit, hard))
