@@ -292,3 +292,31 @@ def test_geometry_material_ids_are_glsl_ints() -> None:
         data = base_scene(geometry={"file": "g.glsl", "materials": {key: "m"}})
         assert "geometry: materials: key " in error(data)
         assert "is not an integer id (a GLSL int" in error(data)
+
+
+@pytest.mark.parametrize(
+    ("data", "key"),
+    [
+        (base_scene(lights=[{"type": "directional", "direction": [1.0, 1.0, 1.0],
+                             "intensity": 3e38}]), "lights[0].intensity"),  # fmt: skip
+        (base_scene(lights=[{"type": "sky", "color": [1e7, 1.0, 1.0]}]), "lights[0].color[0]"),
+    ],
+)
+def test_a_light_whose_radiance_would_overflow_shading_is_refused(
+    data: dict[str, Any], key: str
+) -> None:
+    """Each of these is a finite float32, but shading multiplies colour by intensity and by the
+    specular peak: past 1e6 the product reaches inf and the picture goes black with exit 0."""
+    message = error(data)
+    assert message.startswith(f"scene.toml: {key}: input should be less than or equal to 1000000")
+
+
+@pytest.mark.render
+def test_the_brightest_light_allowed_still_renders_finite_pixels() -> None:
+    """At the bound (colour and intensity both 1e6), every pixel is finite under each tone map."""
+    for tonemap in ("reinhard", "aces", "none"):
+        light = {"type": "directional", "direction": [1.0, 1.0, 1.0], "color": [1e6] * 3,
+                 "intensity": 1e6}  # fmt: skip
+        scene = base_scene(lights=[light], post={"tonemap": tonemap})
+        stats = glint.render(glint.compose(scene), size=(48, 27)).stats
+        assert stats["nan"] == 0 and stats["inf"] == 0, (tonemap, stats)

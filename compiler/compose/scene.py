@@ -19,10 +19,10 @@ from glint.compiler.compose.scene_values import (
     DIRECTION_RANGE,
     AtLeastOne,
     Color,
-    NonNegative,
     Number,
     Positive,
     PositiveVec3,
+    Radiometric,
     SignedUnit,
     Unit,
     Vec3,
@@ -146,7 +146,7 @@ class DirectionalLight(Strict):
     """Toward the light."""
     color: Color = [1.0, 1.0, 1.0]
     """Linear RGB."""
-    intensity: NonNegative = 1.0
+    intensity: Radiometric = 1.0
     """Multiplies the colour."""
     shadow: bool = True
     """Whether it casts shadows (the `shadow` slot)."""
@@ -172,7 +172,7 @@ class PointLight(Strict):
     position: Vec3
     """Where the light is."""
     color: Color = [1.0, 1.0, 1.0]
-    intensity: NonNegative = 1.0
+    intensity: Radiometric = 1.0
     range: Positive = 10.0
     """Where the attenuation reaches zero (for the attenuation variants that have a range)."""
     shadow: bool = True
@@ -183,7 +183,7 @@ class SkyLight(Strict):
     type: Literal["sky"]
     color: Color = [0.2, 0.5, 1.0]
     """Colour of the light from the sky above."""
-    intensity: NonNegative = 1.0
+    intensity: Radiometric = 1.0
 
 
 class BackLight(Strict):
@@ -191,7 +191,7 @@ class BackLight(Strict):
     direction: Vec3 | None = None
     """Toward the light; by default the key light's direction mirrored and made horizontal."""
     color: Color = [0.15, 0.1, 0.08]
-    intensity: NonNegative = 1.0
+    intensity: Radiometric = 1.0
 
     @model_validator(mode="after")
     def _nonzero(self) -> BackLight:
@@ -204,7 +204,7 @@ class BounceLight(Strict):
     direction: Vec3 | None = None
     """Toward the light; by default the key light's direction mirrored and made horizontal."""
     color: Color = [0.40, 0.28, 0.20]
-    intensity: NonNegative = 1.0
+    intensity: Radiometric = 1.0
 
     @model_validator(mode="after")
     def _nonzero(self) -> BounceLight:
@@ -216,7 +216,7 @@ class EnvironmentLight(Strict):
     """Diffuse light from the scene's environment, by the `irradiance` slot's variant."""
 
     type: Literal["environment"]
-    intensity: NonNegative = 1.0
+    intensity: Radiometric = 1.0
 
 
 Light = Annotated[

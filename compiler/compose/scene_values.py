@@ -6,6 +6,8 @@ its directions, how deep its tables may nest, and how its strings reach a shader
   small that float32 flushes it to 0 (a nonzero number below 1.2e-38 in magnitude). -0.0 is
   taken as 0.0. A boolean is not a number. An integer (a count, a level) is at most 2^24, the
   largest float32 holds exactly.
+- A colour or a light's intensity is at most RADIOMETRIC_MAX (1e6): their products in shading
+  stay within float32.
 - A direction (a plane's normal, a light's direction, the camera's line of sight) is one that
   float32 can normalise: its largest component between 1e-18 and 1e18 in magnitude, so that
   its squared length is neither 0 nor inf in float32.
@@ -68,7 +70,13 @@ AtLeastOne = _number(ge=1.0)
 Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
 PositiveVec3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
 NonNegativeVec3 = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]
-Color = NonNegativeVec3
+# A colour or a light's intensity: shading multiplies a light's radiance (colour × intensity)
+# by terms that peak near 1e7 (GGX at roughness 0.05 facing the half vector) and tone mapping
+# squares it, so values past this would overflow float32 to inf and the picture to black.
+# A million covers photometric units (direct sun is about 1e5 lux) with room.
+RADIOMETRIC_MAX = 1e6
+Radiometric = _number(ge=0.0, le=RADIOMETRIC_MAX)
+Color = Annotated[list[Radiometric], Field(min_length=3, max_length=3)]
 
 
 def integer(low: int, high: int = INT_LIMIT) -> Any:
