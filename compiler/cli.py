@@ -11,17 +11,16 @@ import argparse
 import json
 import math
 import os
-import re
 import sys
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from importlib.metadata import entry_points
 from importlib.metadata import version as package_version
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from glint.compiler.catalog.tiers import TIERS
-from glint.compiler.errors import GlintError, UsageError
+from glint.compiler.errors import GlintError, UsageError, printable
 from glint.compiler.files import read_text_file
 from glint.compiler.render import limits
 from glint.compiler.target.cross import LANGS
@@ -32,6 +31,7 @@ if TYPE_CHECKING:
     from glint.compiler.api import Shader
 
 PROG = "glint"
+T = TypeVar("T")
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -41,7 +41,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return handler(args)
     except GlintError as exc:
-        print(f"{PROG}: {shown(exc.message)}", file=sys.stderr)
+        print(f"{PROG}: {printable(exc.message, keep_line_feeds=True)}", file=sys.stderr)
         return exc.exit_code
     except KeyboardInterrupt:
         print(f"{PROG}: interrupted", file=sys.stderr)
@@ -57,19 +57,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
-
-
-# Characters a terminal acts on (ESC, CR, backspace, the C1 controls, bidirectional overrides):
-# a file name or a value quoted in a message must not rewrite what the user sees. A line feed
-# stays: some messages list one problem per line.
-_TERMINAL_CONTROLS = re.compile(
-    "[\x00-\x09\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]"
-)
-
-
-def shown(message: str) -> str:
-    """A message for the terminal: each control character as its Python escape (`\\x1b`)."""
-    return _TERMINAL_CONTROLS.sub(lambda m: repr(m.group())[1:-1], message)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -249,31 +236,31 @@ def _number(text: str) -> float:
         raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
 
 
-def _timeout(text: str) -> float:
-    seconds = _number(text)
-    problem = limits.timeout_problem(seconds)
-    if problem is not None:
-        raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
-    return seconds
-
-
-def _uniform_float(text: str) -> float:
-    value = _number(text)
-    problem = limits.float32_problem(value)
-    if problem is not None:
-        raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
-    return value
-
-
-def _frame(text: str) -> int:
+def _whole(text: str) -> int:
     try:
-        frame = int(text)
+        return int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
-    problem = limits.frame_problem(frame)
-    if problem is not None:
-        raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
-    return frame
+
+
+def _checked(
+    convert: Callable[[str], T], problem_of: Callable[[T], str | None]
+) -> Callable[[str], T]:
+    """An argparse type: the text converted, and refused with what `problem_of` finds wrong."""
+
+    def parse(text: str) -> T:
+        value = convert(text)
+        problem = problem_of(value)
+        if problem is not None:
+            raise argparse.ArgumentTypeError(f"{problem}, got {text!r}")
+        return value
+
+    return parse
+
+
+_timeout = _checked(_number, limits.timeout_problem)
+_uniform_float = _checked(_number, limits.float32_problem)
+_frame = _checked(_whole, limits.frame_problem)
 
 
 def _names(text: str) -> list[str]:

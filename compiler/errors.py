@@ -7,6 +7,24 @@ prints `glint: <message>` and exits with `exit_code`: 1 for a problem with the u
 
 from __future__ import annotations
 
+import re
+
+# Characters a terminal acts on or that break a line: C0 and C1 controls, DEL, the line and
+# paragraph separators, and the bidirectional overrides that reorder what is shown. A file name
+# or a value quoted in a message must not drive the terminal or forge a line.
+TERMINAL_CONTROLS = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def printable(text: str, keep_line_feeds: bool = False) -> str:
+    """Text for a terminal: each control character as its Python escape (`\\n`, `\\x1b`); with
+    `keep_line_feeds`, a line feed stays (a message that lists one problem per line)."""
+
+    def escape(match: re.Match[str]) -> str:
+        char = match.group()
+        return char if keep_line_feeds and char == "\n" else repr(char)[1:-1]
+
+    return TERMINAL_CONTROLS.sub(escape, text)
+
 
 class GlintError(Exception):
     """Base of every error glint reports; `message` says what is wrong and what to do."""

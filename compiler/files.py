@@ -37,16 +37,23 @@ _KINDS = (
 MiB = 1 << 20
 
 
-def read_user_file(path: str | Path, limit: int, what: str = "file") -> bytes:
+def read_user_file(
+    path: str | Path, limit: int, what: str = "file", follow_links: bool = True
+) -> bytes:
     """The bytes of a file the user named, read only when it is a regular file of at most
     `limit` bytes; else an InputError saying why. A device (/dev/zero), a FIFO or a socket is
     refused before it is read (it could be endless or block forever); the file is opened
     without blocking, so that a FIFO swapped in after the check cannot hang the read either,
-    and checked again on the open descriptor. `what` names the kind of file in messages."""
+    and checked again on the open descriptor. `what` names the kind of file in messages.
+    Without `follow_links`, a symbolic link is refused too (a file glint wrote itself, such as
+    a cache entry, is never one)."""
     path = Path(path)
+    flags = os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
+    if not follow_links:
+        flags |= getattr(os, "O_NOFOLLOW", 0)
     try:
-        _check_regular(path, os.stat(path), limit, what)
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+        _check_regular(path, os.stat(path) if follow_links else os.lstat(path), limit, what)
+        fd = os.open(path, flags)
     except FileNotFoundError:
         raise InputError(f"{path}: no such file") from None
     except IsADirectoryError:

@@ -35,13 +35,15 @@ import json
 import os
 import re
 import shutil
-import stat
 import subprocess
 import tempfile
 from functools import cache
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import Any
+
+from glint.compiler.errors import InputError
+from glint.compiler.files import read_user_file
 
 from .finding import Edit, Finding, Fix
 from .options import Options
@@ -252,28 +254,9 @@ def _read_entry(path: Path) -> bytes | None:
     MAX_ENTRY_BYTES: a symbolic link is not followed (to /dev/zero it would be read until
     memory runs out), a FIFO is not waited on."""
     try:
-        if not stat.S_ISREG(os.lstat(path).st_mode):
-            return None
-        flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
-        fd = os.open(path, flags | getattr(os, "O_BINARY", 0))
-    except OSError:
+        return read_user_file(path, MAX_ENTRY_BYTES, "cache entry", follow_links=False)
+    except InputError:
         return None
-    try:
-        info = os.fstat(fd)  # the file opened, whatever replaced the path since lstat
-        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_ENTRY_BYTES:
-            return None
-        chunks, size = [], 0
-        while size <= MAX_ENTRY_BYTES:  # it may grow while being read
-            chunk = os.read(fd, 1 << 20)
-            if not chunk:
-                return b"".join(chunks)
-            chunks.append(chunk)
-            size += len(chunk)
-        return None
-    except OSError:
-        return None
-    finally:
-        os.close(fd)
 
 
 class _Bounds:

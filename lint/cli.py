@@ -12,7 +12,7 @@ import json
 import sys
 from pathlib import Path
 
-from glint.compiler.errors import EnvironmentProblem, UsageError
+from glint.compiler.errors import EnvironmentProblem, UsageError, printable
 from glint.compiler.files import is_temporary, write_atomic
 from glint.compiler.glsl.parser import prepare_parser
 from glint.compiler.target.shadertoy import TARGETS
@@ -24,7 +24,7 @@ from .finding import Finding
 from .options import Options, enables_some_rule, unknown_code
 from .parallel import lint_items
 from .precision import precision_note
-from .reporters import FORMATS, REPORTERS, printable, statistics, summary
+from .reporters import FORMATS, REPORTERS, statistics, summary
 from .rules import all_rules, rule_doc
 from .runner import LintResult, decode
 

@@ -51,7 +51,7 @@ class LintContext:
     pre: Preprocessed | None = None  # None when preprocessing failed
     tree: Tree | None = None  # None when the file did not parse
     use_glslang: bool = True
-    reports_glslang_errors: bool = True  # C001 is selected for this file
+    reports_glslang_errors: bool = True  # C001 is selected for this file (when glslang runs)
     front_end_error: InputError | None = None  # why preprocessing or parsing failed
     read_problem: str = ""  # why the file's bytes are not text to lint
     too_deep: bool = False  # nesting beyond what the analysis can follow

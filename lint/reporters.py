@@ -9,6 +9,8 @@ from collections import Counter
 from collections.abc import Callable, Sequence
 from importlib.metadata import version
 
+from glint.compiler.errors import TERMINAL_CONTROLS, printable
+
 from .finding import Finding
 from .rules import all_rules, rule_doc
 
@@ -160,21 +162,10 @@ def _property(value: str) -> str:
     return _data(value).replace(":", "%3A").replace(",", "%2C")
 
 
-# Characters that a terminal acts on or that break a line: C0 and C1 controls, DEL, the line
-# and paragraph separators, and the bidirectional overrides that reorder what is shown.
-_UNSAFE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
-
-
-def printable(text: str) -> str:
-    """Text for a terminal: each unsafe character as its Python escape (`\\n`, `\\x1b`), so a
-    file name or a message can neither forge a line of the report nor drive the terminal."""
-    return _UNSAFE.sub(lambda m: repr(m.group())[1:-1], text)
-
-
 def _visible(line: str) -> str:
     """A source line for the excerpt: each control character as its Unicode control picture
     (ESC as U+241B), one column wide like the character it shows, so the caret stays put."""
-    return _UNSAFE.sub(_picture, line)
+    return TERMINAL_CONTROLS.sub(_picture, line)
 
 
 def _picture(match: re.Match[str]) -> str:

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from glint.compiler.compose.field_code import rotation_matrix
+from glint.compiler.compose.scene_values import FLOAT32_MAX
 from glint.compiler.compose.shapes import Mesh, Placed
 from glint.compiler.errors import InputError
 from glint.compiler.files import MiB, read_user_file
@@ -26,7 +27,6 @@ from glint.compiler.files import MiB, read_user_file
 # OBJ of 64 MiB holds about a million triangles) and this many triangles in one mesh.
 MESH_FILE_LIMIT = 64 * MiB
 MAX_TRIANGLES = 4_000_000
-FLOAT32_MAX = float(np.finfo(np.float32).max)
 # The mesh formats read (by suffix): trimesh's formats of triangles, without the archives it
 # also opens (a small zip can expand past any limit) and the point and 2D formats.
 _MESH_FORMATS = ("glb", "gltf", "obj", "off", "ply", "stl")
