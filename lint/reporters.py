@@ -20,8 +20,7 @@ FORMATS = ("text", "concise", "json", "sarif", "github")
 def concise(findings: Sequence[Finding], sources: dict[str, str]) -> str:
     del sources
     return "".join(
-        f"{_where(f)}: {printable(f.code)} {printable(f.message)}{_fixable(f)}\n"
-        for f in findings
+        f"{_where(f)}: {printable(f.code)} {printable(f.message)}{_fixable(f)}\n" for f in findings
     )
 
 
