@@ -163,6 +163,11 @@ def _length(v: Value, n: int) -> Interval:
     return length_bound(v.range, n or 4)
 
 
+def builtin_length(v: Value, n: int) -> Interval:
+    """The range of length(v) for an n-component v."""
+    return _length(v, n)
+
+
 def _length_rule(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     return (_length(values[0], _n(values[0])) if values else NONNEG), False, None
 

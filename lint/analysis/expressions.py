@@ -20,6 +20,7 @@ from .builtin_rules import (
     REACH_ZERO,
     builtin_result,
     builtin_witness,
+    builtin_length,
     cross_facts,
     keeps_zero,
     sum_of,
@@ -166,6 +167,9 @@ class Evaluator:
             origin = {"+": "sum", "-": "difference"}.get(op) if both_units else None
             why = ((a.zero and a.why) or (b.zero and b.why) or None) if zero else None
             wit = _binary_witness(op, a, b, ty, rng, comps)
+            rotated = _rotated(op, a, b, ty)
+            if rotated is not None:
+                return rotated
             return Value(ty, rng, origin=origin, zero=zero, comps=comps, why=why, wit=wit)
         if op == "%" and a.range.lo >= 0 and b.range.lo > 0:
             return Value(ty, Interval(0.0, b.range.hi))
@@ -251,6 +255,9 @@ class Evaluator:
             return new.but(type=old.type or new.type)
         if op in ASSIGN_OPS:
             arith = ASSIGN_OPS[op]
+            rotated = _rotated(arith, old, new, old.type)
+            if rotated is not None:
+                return rotated
             rng, comps = self._arith(arith, old, new, old.type, False)
             wit = _binary_witness(arith, old, new, old.type, rng, comps)
             return Value(old.type, rng, zero=_zero_of(arith, old, new), comps=comps, wit=wit)
@@ -324,6 +331,8 @@ class Evaluator:
         origin = None
         if not unit and _trig_axis(ty, call_args(node)):
             unit, origin = True, "axis"  # sin² + cos² = 1: a chosen (rolled) axis
+        elif _is_rotation(ty, args, call_args(node)):
+            origin = "rotation"
         wit = _constructor_witness(ty, args, comps)
         return Value(ty, rng, unit, origin, zero=zero, comps=comps, wit=wit)
 
@@ -605,3 +614,48 @@ def _constructor_witness(ty: str, args: list[Value], comps: Comps) -> W.Witness 
     if len(parts) < n:
         return None
     return W.make(parts[:n], why, list(comps))
+
+
+def _is_rotation(ty: str, args: list[Value], nodes: list[Node]) -> bool:
+    """mat2(c, s, -s, c) (or its transpose) of c = cos(a), s = sin(a); mat3(u, v, w) of unit
+    vectors known pairwise orthogonal (a look-at camera's basis): matrices that keep lengths."""
+    if ty == "mat2" and len(args) == 4:
+        origins = [a.origin for a in args]
+        if origins[0] != origins[3] or origins[1] != origins[2]:
+            return False
+        if {origins[0], origins[1]} != {"sin", "cos"}:
+            return False
+        negated = [is_tree(n, "unary") and str(n.children[0]) == "-" for n in nodes]  # type: ignore
+        return negated in ([False, False, True, False], [False, True, False, False])
+    if ty == "mat3" and len(args) == 3 and all(a.unit and a.type == "vec3" for a in args):
+        names = [str(n.children[0]) if is_tree(n, "variable") else None for n in nodes]  # type: ignore
+        for i in range(3):
+            for j in range(i + 1, 3):
+                if not (_orthogonal(args[i], names[j], args[j])
+                        or _orthogonal(args[j], names[i], args[i])):  # fmt: skip
+                    return False
+        return True
+    return False
+
+
+def _orthogonal(a: Value, name: str | None, b: Value) -> bool:
+    return name is not None and any(n == name and v is b for n, v in a.ortho)
+
+
+def _rotated(op: str, a: Value, b: Value, ty: str | None) -> Value | None:
+    """A rotation times a vector (either side): the vector's length, so a unit vector stays
+    one, and every component within that length."""
+    if op != "*" or not T.is_vector(ty):
+        return None
+    if a.origin == "rotation" and T.matrix_shape(a.type):
+        vec = b
+    elif b.origin == "rotation" and T.matrix_shape(b.type):
+        vec = a
+    else:
+        return None
+    n = T.size(ty)
+    if T.size(vec.type) != n:
+        return None
+    reach = 1.0 if vec.unit else builtin_length(vec, n).hi
+    comps = tuple(Interval(-reach, reach) for _ in range(n))
+    return Value(ty, unit=vec.unit, origin="rotated", comps=comps)
