@@ -16,11 +16,12 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
 from . import types as T
+from . import witness as W
 from .builtin_rules import (
     REACH_ZERO,
+    builtin_length,
     builtin_result,
     builtin_witness,
-    builtin_length,
     cross_facts,
     keeps_zero,
     sum_of,
@@ -47,7 +48,6 @@ from .syntax import (
     var_key,
 )
 from .values import Comps, Env, Function, Value
-from . import witness as W
 
 
 class ModelView(Protocol):
@@ -288,9 +288,7 @@ class Evaluator:
                 # eps.x of vec2(4.0 / iResolution.y, 0.0) is not 0 because eps.y is
                 zero = base.zero and picked[0].may_be_zero and not picked[0].is_unknown
                 origin = base.origin if base.origin in ("sin", "cos") else None
-                return Value(
-                    swizzled, picked[0], origin=origin, zero=zero, why=base.why, wit=wit
-                )
+                return Value(swizzled, picked[0], origin=origin, zero=zero, why=base.why, wit=wit)
             return Value(swizzled, unit=unit, zero=base.zero, comps=picked, wit=wit)
         member = self.model.structs.get(base.type or "", {}).get(name)
         return Value(member)

@@ -14,10 +14,10 @@ from lark import Tree
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
-from .expressions import ASSIGN_OPS, Evaluator, ModelView
-from .scopes import Scopes, join_scopes, widen
 from . import types as T
+from .expressions import ASSIGN_OPS, Evaluator, ModelView
 from .ranges import Interval
+from .scopes import Scopes, join_scopes, widen
 from .syntax import call_args, callee_name, is_tree, root_variable, spec_text, swizzle_index
 from .values import Env, Function, Value
 

@@ -92,8 +92,7 @@ CASES: dict[str, tuple[str, list[Param]]] = {
         [UNIT3, Param("vec3", 0.1, 1.0)],
     ),
     "rotated unit vector": (
-        ROTATE + "float f(vec3 rd, vec3 n, float a) {"
-        " rd.xy *= rot(a); return 1.0 + dot(rd, n); }",
+        ROTATE + "float f(vec3 rd, vec3 n, float a) { rd.xy *= rot(a); return 1.0 + dot(rd, n); }",
         [UNIT3, UNIT3, Param("float", -3.0, 3.0)],
     ),
     "camera ray of a look-at basis": (
