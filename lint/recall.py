@@ -34,7 +34,7 @@ CORPUS = ROOT.parent / "shared" / "corpus"
 CLASS_RULES: dict[str, frozenset[str]] = {
     "unwritten-out-or-return": frozenset({"C001", "C101", "C103"}),
     "uninitialised-read": frozenset({"C101", "C102", "C103"}),
-    "domain-pow": frozenset({"N001"}),
+    "domain-pow": frozenset({"N001", "N020"}),
     "domain-acos-asin": frozenset({"N003"}),
     "domain-sqrt-log": frozenset({"N002"}),
     "division-by-zero": frozenset({"N005", "N007"}),

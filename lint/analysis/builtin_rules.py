@@ -12,6 +12,7 @@ from glint.compiler.glsl.keywords import words
 
 from ..context import Node
 from . import types as T
+from . import witness as W
 from .ranges import (
     HALF_PI,
     NONNEG,
@@ -162,6 +163,11 @@ def _length(v: Value, n: int) -> Interval:
     return length_bound(v.range, n or 4)
 
 
+def builtin_length(v: Value, n: int) -> Interval:
+    """The range of length(v) for an n-component v."""
+    return _length(v, n)
+
+
 def _length_rule(values: list[Value], nodes: list[Node]) -> tuple[Interval, bool, Comps]:
     return (_length(values[0], _n(values[0])) if values else NONNEG), False, None
 
@@ -278,3 +284,57 @@ def cross_facts(
         if x.origin == "cross-axis":
             origin = "cross-axis"
     return origin, unit, ortho
+
+
+# --- witnesses: values reached at a named input (witness.py) -------------------------------
+
+# A negative value a dot product with a direction reaches, for the witness: some negative value,
+# however small (how negative is not known).
+_SOME_NEGATIVE = -1e-30
+
+
+def builtin_witness(
+    name: str, values: list[Value], nodes: list[Node], rng: Interval, comps: Comps
+) -> W.Witness | None:
+    """What a builtin's result reaches on evidence: sin and cos of an unbounded argument
+    sweep [-1, 1]; min, max, clamp and abs keep their arguments' witnesses; normalize keeps a
+    component's sign; a dot product with a direction (a unit vector) of the other vector, whose
+    range takes both signs, is negative where they face away (N·H, R·V)."""
+    n = len(comps) if comps is not None else 1
+    out_comps = list(comps) if comps is not None else [rng]
+    if name in ("sin", "cos") and len(values) == 1:
+        parts = [(-1.0, 1.0) if W.unbounded_trig(c) else W.NOTHING for c in values[0].parts(n)]
+        return W.make(parts, W.TRIG, out_comps)
+    if name == "dot" and len(values) == 2:
+        a, b = values
+        if (same_expression(nodes[0], nodes[1]) or not (a.unit or b.unit)
+                or not rng.lo < 0 < rng.hi or not rng.is_bounded):  # fmt: skip
+            return None
+        return W.make([(_SOME_NEGATIVE, -_SOME_NEGATIVE)], W.DOT, out_comps)
+    wits = [v.wit for v in values if v.wit is not None]
+    if not wits:
+        return None
+    why = wits[0].why
+    columns = [W.pairs(v.wit, v.parts(n)) for v in values]
+    ranges = [v.parts(n) for v in values]
+    if name in ("min", "max") and len(values) == 2:
+        f = W.minimum if name == "min" else W.maximum
+        parts = [f(columns[0][i], ranges[0][i], columns[1][i], ranges[1][i]) for i in range(n)]
+        return W.make(parts, why, out_comps)
+    if name == "clamp" and len(values) == 3:
+        parts = []
+        for i in range(n):
+            low = W.maximum(columns[0][i], ranges[0][i], columns[1][i], ranges[1][i])
+            raised = ranges[0][i].max(ranges[1][i])
+            parts.append(W.minimum(low, raised, columns[2][i], ranges[2][i]))
+        return W.make(parts, why, out_comps)
+    if name == "abs" and len(values) == 1:
+        parts = [(W.INF, max(p[1], -p[0])) for p in columns[0]]
+        return W.make(parts, why, out_comps)
+    if name == "normalize" and len(values) == 1 and T.size(values[0].type) > 1:
+        v = values[0]
+        k = T.size(v.type)
+        longest = _length(Value(v.type, comps=tuple(v.parts(k))), k).hi
+        parts = [W.normalized(p, longest) for p in W.pairs(v.wit, v.parts(k))]
+        return W.make(parts, why, out_comps)
+    return None

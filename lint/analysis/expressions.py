@@ -16,7 +16,16 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
 from . import types as T
-from .builtin_rules import REACH_ZERO, builtin_result, cross_facts, keeps_zero, sum_of
+from . import witness as W
+from .builtin_rules import (
+    REACH_ZERO,
+    builtin_length,
+    builtin_result,
+    builtin_witness,
+    cross_facts,
+    keeps_zero,
+    sum_of,
+)
 from .ranges import (
     BOOL,
     INF,
@@ -124,7 +133,10 @@ class Evaluator:
         op, operand = str(node.children[0]), self._sub(node.children[1])
         if op == "-":
             comps = tuple(-c for c in operand.comps) if operand.comps is not None else None
-            return operand.but(range=-operand.range, comps=comps)
+            wit = operand.wit
+            if wit is not None:
+                wit = W.Witness(tuple(map(W.negate, wit.parts)), wit.why)
+            return operand.but(range=-operand.range, comps=comps, wit=wit)
         if op == "+":
             return operand
         if op == "!":
@@ -154,7 +166,11 @@ class Evaluator:
             zero = _zero_of(op, a, b) and rng.may_be_zero
             origin = {"+": "sum", "-": "difference"}.get(op) if both_units else None
             why = ((a.zero and a.why) or (b.zero and b.why) or None) if zero else None
-            return Value(ty, rng, origin=origin, zero=zero, comps=comps, why=why)
+            wit = _binary_witness(op, a, b, ty, rng, comps)
+            rotated = _rotated(op, a, b, ty)
+            if rotated is not None:
+                return rotated
+            return Value(ty, rng, origin=origin, zero=zero, comps=comps, why=why, wit=wit)
         if op == "%" and a.range.lo >= 0 and b.range.lo > 0:
             return Value(ty, Interval(0.0, b.range.hi))
         return Value(ty)
@@ -239,8 +255,12 @@ class Evaluator:
             return new.but(type=old.type or new.type)
         if op in ASSIGN_OPS:
             arith = ASSIGN_OPS[op]
+            rotated = _rotated(arith, old, new, old.type)
+            if rotated is not None:
+                return rotated
             rng, comps = self._arith(arith, old, new, old.type, False)
-            return Value(old.type, rng, zero=_zero_of(arith, old, new), comps=comps)
+            wit = _binary_witness(arith, old, new, old.type, rng, comps)
+            return Value(old.type, rng, zero=_zero_of(arith, old, new), comps=comps, wit=wit)
         return Value(old.type)
 
     def _sequence(self, node: Tree) -> Value:
@@ -260,12 +280,16 @@ class Evaluator:
             if max(indices) >= len(parts):  # `v2.z`: invalid, glslang reports it
                 return Value(swizzled)
             picked = tuple(parts[i] for i in indices)
+            wit = None
+            if base.wit is not None:
+                pairs = W.pairs(base.wit, parts)
+                wit = W.make([pairs[i] for i in indices], base.wit.why, list(picked))
             if len(picked) == 1:  # the vector's evidence of a 0 may be another component's:
                 # eps.x of vec2(4.0 / iResolution.y, 0.0) is not 0 because eps.y is
                 zero = base.zero and picked[0].may_be_zero and not picked[0].is_unknown
                 origin = base.origin if base.origin in ("sin", "cos") else None
-                return Value(swizzled, picked[0], origin=origin, zero=zero, why=base.why)
-            return Value(swizzled, unit=unit, zero=base.zero, comps=picked)
+                return Value(swizzled, picked[0], origin=origin, zero=zero, why=base.why, wit=wit)
+            return Value(swizzled, unit=unit, zero=base.zero, comps=picked, wit=wit)
         member = self.model.structs.get(base.type or "", {}).get(name)
         return Value(member)
 
@@ -277,9 +301,13 @@ class Evaluator:
         known = bool(T.components(element) or T.matrix_shape(element))
         rng = base.range if known else UNKNOWN
         n = T.size(base.type)
+        wit = None
         if n > 1 and index.is_point and 0 <= index.lo < n:
             rng = base.parts(n)[int(index.lo)]
-        return Value(element, rng, zero=known and base.zero)
+            if base.wit is not None:
+                pair = W.pairs(base.wit, base.parts(n))[int(index.lo)]
+                wit = W.make([pair], base.wit.why, [rng])
+        return Value(element, rng, zero=known and base.zero, wit=wit)
 
     # --- calls and constructors ------------------------------------------------------------
 
@@ -301,7 +329,10 @@ class Evaluator:
         origin = None
         if not unit and _trig_axis(ty, call_args(node)):
             unit, origin = True, "axis"  # sin² + cos² = 1: a chosen (rolled) axis
-        return Value(ty, rng, unit, origin, zero=zero, comps=comps)
+        elif _is_rotation(ty, args, call_args(node)):
+            origin = "rotation"
+        wit = _constructor_witness(ty, args, comps)
+        return Value(ty, rng, unit, origin, zero=zero, comps=comps, wit=wit)
 
     @staticmethod
     def _unit_constructor(ty: str, args: list[Value]) -> bool:
@@ -343,7 +374,8 @@ class Evaluator:
             origin, unit, ortho = cross_facts(args, values, unit)
         elif name == "normalize" and values:
             ortho = values[0].ortho  # the same direction
-        return Value(ty, rng, unit, origin, zero, comps, why=why, ortho=ortho)
+        wit = builtin_witness(name, values, args, rng, comps)
+        return Value(ty, rng, unit, origin, zero, comps, why=why, ortho=ortho, wit=wit)
 
 
 # The evaluator's method for each kind of expression node (`_binary` for "binary" ...).
@@ -540,3 +572,88 @@ def _constructor_parts(ty: str, args: list[Value]) -> tuple[Interval, ...] | Non
     if len(parts) == 1:
         parts *= n
     return tuple(parts[:n]) if len(parts) >= n else None
+
+
+def _binary_witness(
+    op: str, a: Value, b: Value, ty: str | None, rng: Interval, comps: Comps
+) -> W.Witness | None:
+    """The witness of a op b (witness.py), component by component; none for matrices."""
+    if a.wit is None and b.wit is None:
+        return None  # constants alone are no news: their range says it all
+    if T.matrix_shape(a.type) or T.matrix_shape(b.type):
+        return None
+    n = T.size(ty) or 1
+    ra, rb = a.parts(n), b.parts(n)
+    pa, pb = W.pairs(a.wit, ra), W.pairs(b.wit, rb)
+    combine = W.BINARY[op]
+    parts = [combine(x, rx, y, ry) for x, rx, y, ry in zip(pa, ra, pb, rb, strict=True)]
+    why = (a.wit or b.wit).why  # type: ignore[union-attr]
+    return W.make(parts, why, list(comps) if comps is not None else [rng] * n)
+
+
+def _constructor_witness(ty: str, args: list[Value], comps: Comps) -> W.Witness | None:
+    """vecN(...)'s witness: its arguments' components in order, a scalar broadcast."""
+    if not any(a.wit is not None for a in args):
+        return None
+    n = T.size(ty)
+    if n < 2 or comps is None:
+        return None
+    parts: list[W.Pair] = []
+    why = next(a.wit.why for a in args if a.wit is not None)
+    for a in args:
+        k = T.size(a.type)
+        if k == 0 or T.components(ty)[0] != T.components(a.type)[0]:  # type: ignore[index]
+            # a conversion (int to float): no witness
+            parts += [W.NOTHING] * max(k, 1)
+            continue
+        parts += W.pairs(a.wit, a.parts(k))
+    if len(parts) == 1:
+        parts *= n
+    if len(parts) < n:
+        return None
+    return W.make(parts[:n], why, list(comps))
+
+
+def _is_rotation(ty: str, args: list[Value], nodes: list[Node]) -> bool:
+    """mat2(c, s, -s, c) (or its transpose) of c = cos(a), s = sin(a); mat3(u, v, w) of unit
+    vectors known pairwise orthogonal (a look-at camera's basis): matrices that keep lengths."""
+    if ty == "mat2" and len(args) == 4:
+        origins = [a.origin for a in args]
+        if origins[0] != origins[3] or origins[1] != origins[2]:
+            return False
+        if {origins[0], origins[1]} != {"sin", "cos"}:
+            return False
+        negated = [is_tree(n, "unary") and str(n.children[0]) == "-" for n in nodes]  # type: ignore
+        return negated in ([False, False, True, False], [False, True, False, False])
+    if ty == "mat3" and len(args) == 3 and all(a.unit and a.type == "vec3" for a in args):
+        names = [str(n.children[0]) if is_tree(n, "variable") else None for n in nodes]  # type: ignore
+        for i in range(3):
+            for j in range(i + 1, 3):
+                if not (_orthogonal(args[i], names[j], args[j])
+                        or _orthogonal(args[j], names[i], args[i])):  # fmt: skip
+                    return False
+        return True
+    return False
+
+
+def _orthogonal(a: Value, name: str | None, b: Value) -> bool:
+    return name is not None and any(n == name and v is b for n, v in a.ortho)
+
+
+def _rotated(op: str, a: Value, b: Value, ty: str | None) -> Value | None:
+    """A rotation times a vector (either side): the vector's length, so a unit vector stays
+    one, and every component within that length."""
+    if op != "*" or not T.is_vector(ty):
+        return None
+    if a.origin == "rotation" and T.matrix_shape(a.type):
+        vec = b
+    elif b.origin == "rotation" and T.matrix_shape(b.type):
+        vec = a
+    else:
+        return None
+    n = T.size(ty)
+    if T.size(vec.type) != n:
+        return None
+    reach = 1.0 if vec.unit else builtin_length(vec, n).hi
+    comps = tuple(Interval(-reach, reach) for _ in range(n))
+    return Value(ty, unit=vec.unit, origin="rotated", comps=comps)

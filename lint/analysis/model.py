@@ -43,6 +43,7 @@ from .syntax import (
     var_key,
 )
 from .values import Env, Function, Value
+from .witness import FIRST_FRAME, FIRST_FRAME_COUNT, Witness
 
 # The largest framebuffer or texture side a GPU offers: a resolution is finite, so a positive
 # constant over it (2.0 / iResolution.y, a pixel's width) is strictly positive.
@@ -403,15 +404,19 @@ class Model:
         else:
             bound = Interval(-INF, limit.hi) if op == "<=" else Interval(limit.lo, INF)
         part = "" if component is None else "." + str(target_field)
+        # A witness may lie where the condition fails: the narrowed value keeps none.
         if component is None:
-            narrowed = old.but(range=old.range.meet(bound))
+            met = old.range.meet(bound)
+            narrowed = old if met == old.range else old.but(range=met, wit=None)
         else:
             n = T.size(old.type)
             if component >= n:
                 return env
             parts = old.parts(n)
-            parts[component] = parts[component].meet(bound)
-            narrowed = old.but(comps=tuple(parts))
+            met = parts[component].meet(bound)
+            changed = met != parts[component]
+            parts[component] = met
+            narrowed = old.but(comps=tuple(parts), wit=None) if changed else old
         key = var_key(other)
         if key is not None and key[1] in env and key[1] != name:
             # x < y: y - x > 0 however y varies (while y keeps this value)
@@ -504,9 +509,16 @@ def _passed(value: Value, arg: Node) -> Value:
     return value
 
 
+# The uniforms' values at the first frame: evidence of what an expression of them reaches.
+_FIRST_FRAME = {
+    "iTime": Witness(((0.0, -INF),), FIRST_FRAME),
+    "iFrame": Witness(((0.0, -INF),), FIRST_FRAME_COUNT),
+}
+
+
 def _shadertoy_values() -> dict[str, Value]:
     return {
-        name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN))
+        name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN), wit=_FIRST_FRAME.get(name))
         for name, ty in T.SHADERTOY_TYPES.items()
     }
 

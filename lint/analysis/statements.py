@@ -14,9 +14,11 @@ from lark import Tree
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
+from . import types as T
 from .expressions import ASSIGN_OPS, Evaluator, ModelView
+from .ranges import Interval
 from .scopes import Scopes, join_scopes, widen
-from .syntax import call_args, callee_name, is_tree, root_variable, spec_text
+from .syntax import call_args, callee_name, is_tree, root_variable, spec_text, swizzle_index
 from .values import Env, Function, Value
 
 
@@ -346,6 +348,8 @@ class ForwardPass:
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
             scopes.assign(name, got.but(type=old.type))
+        elif op == "*=" and got.origin == "rotated" and (kept := _rotated_part(target, old, got)):
+            scopes.assign(name, kept)
         else:  # one component or element: each is now the old value or the new one
             scopes.assign(name, Value(old.type, old.range.hull(got.range)))
         return got
@@ -354,3 +358,19 @@ class ForwardPass:
 def _same_env(a: Env, b: Env) -> bool:
     """Whether two environments hold the very same values (so evaluate alike)."""
     return a.keys() == b.keys() and all(a[name] is b[name] for name in a)
+
+
+def _rotated_part(target: Node, old: Value, got: Value) -> Value | None:
+    """`v.xy *= rot`: the rotated components take the new ranges, and the length of v is kept
+    (a unit vector stays one: a camera turned by a rotation matrix)."""
+    if not (is_tree(target, "field") and is_tree(target.children[0], "variable")):  # type: ignore
+        return None
+    letters = str(target.children[1])  # type: ignore[union-attr]
+    n = T.size(old.type)
+    indices = [swizzle_index(c) for c in letters]
+    if n < 2 or len(set(indices)) != len(indices) or max(indices) >= n:
+        return None
+    parts = old.parts(n)
+    for i, c in zip(indices, got.parts(len(indices)), strict=True):
+        parts[i] = c.meet(Interval(-1.0, 1.0)) if old.unit else c
+    return Value(old.type, unit=old.unit, comps=tuple(parts))

@@ -10,7 +10,9 @@ from dataclasses import dataclass
 
 from lark import Tree
 
+from . import witness as W
 from .ranges import UNKNOWN, Interval, hull_all
+from .witness import Witness
 
 Env = Mapping[str, "Value"]
 
@@ -40,6 +42,8 @@ class Value:
     # The variables (name, value) this vector is known orthogonal to: a cross product's
     # operands, and so normalize(cross(a, b)).
     ortho: tuple[tuple[str, Value], ...] = ()
+    # Values taken at named reachable inputs (witness.py): the evidence a domain error needs.
+    wit: Witness | None = None
 
     def __init__(
         self,
@@ -52,6 +56,7 @@ class Value:
         why: str | None = None,
         rel: tuple[tuple[str, str, str, Value], ...] = (),
         ortho: tuple[tuple[str, Value], ...] = (),
+        wit: Witness | None = None,
     ) -> None:
         # Written out rather than the frozen dataclass's __init__ (a setattr per field): the
         # model makes values by the hundred thousand.
@@ -61,6 +66,7 @@ class Value:
         fields["type"], fields["range"], fields["unit"] = type, range, unit
         fields["origin"], fields["zero"], fields["comps"] = origin, zero, comps
         fields["why"], fields["rel"], fields["ortho"] = why, rel, ortho
+        fields["wit"] = wit
 
     def but(self, **changes: object) -> Value:
         """This value with some fields changed: dataclasses.replace, without its cost (it
@@ -97,6 +103,7 @@ class Value:
             self.why or other.why,
             _common_facts(self.rel, other.rel),
             _common_facts(self.ortho, other.ortho),
+            W.join(self.wit, other.wit),
         )
 
     def unknown(self) -> Value:

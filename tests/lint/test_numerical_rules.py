@@ -65,7 +65,7 @@ def compiles(src: str) -> bool:
 
 def test_rules_are_registered_with_docs_names_and_fixability() -> None:
     rules = {c: r for c, r in all_rules().items() if c.startswith("N")}
-    assert sorted(rules) == [f"N00{i}" for i in range(1, 10)]
+    assert {f"N00{i}" for i in range(1, 10)} | {"N020"} <= set(rules)
     for rule in rules.values():
         doc = rule_doc(rule)
         assert doc["summary"] and doc["why"] and doc["example"] and doc["fix"]
@@ -79,7 +79,9 @@ def test_rules_are_registered_with_docs_names_and_fixability() -> None:
 def test_pow_of_an_unclamped_dot_product() -> None:
     f = only(shader("float s = pow(dot(N, H), 32.0);"), "N001")
     assert f.message == (
-        "pow base dot(N, H) may be negative (range [-1, 1]); clamp it: max(dot(N, H), 0.0)"
+        "pow base dot(N, H) is negative where the vectors of an unclamped dot product with a "
+        "direction face away: pow is undefined there (NaN on most GPUs); clamp it: "
+        "max(dot(N, H), 0.0), or write a square as a product"
     )
     assert f.severity == "warning" and f.fix is not None and f.fix.applicability == "unsafe"
 
@@ -93,8 +95,50 @@ def test_pow_of_a_clamped_dot_product_is_clean() -> None:
 def test_pow_through_a_variable_and_in_a_helper_with_unknown_vectors() -> None:
     assert codes(shader("float nh = dot(N, H);\nfloat s = pow(nh, 16.0);"), "N001") == ["N001"]
     helper = "float spec(vec3 n, vec3 h, float e) { return pow(dot(n, h), e); }\n"
-    f = only(shader("", helper, header=False), "N001")
+    # never called: nothing is known of n and h, so no input is named (N020, opt-in)
+    assert codes(shader("", helper, header=False), "N001") == []
+    f = only(shader("", helper, header=False), "N020")
     assert "unclamped dot product" in f.message
+
+
+def test_pow_base_whose_whole_range_is_at_most_zero() -> None:
+    f = only(shader("float t = fragCoord.x;\nfloat s = pow(clamp(t, 1., 3.) - 3., 2.);"), "N001")
+    assert "is never above 0 (range [-2, 0])" in f.message
+
+
+def test_pow_base_negative_at_the_first_frame_and_through_sin() -> None:
+    f = only(shader("float s = pow(iTime * 2.0 - 1.0, 2.0);"), "N001")
+    assert "at the first frame, iTime = 0 (down to -1)" in f.message
+    f = only(shader("float s = pow(sin(iTime * 4.0), 7.0);"), "N001")
+    assert "where sin or cos of an unbounded argument is negative" in f.message
+    assert codes(shader("float s = pow(0.5 + 0.5 * sin(iTime), 7.0);"), "N001") == []
+    assert codes(shader("float s = pow(iTime + 1.0, 2.0);")) == []
+
+
+def test_pow_of_a_colour_channel_from_a_function_and_a_product() -> None:
+    helper = (
+        "vec3 material(float k) {\n"
+        "    return k > 0.5 ? vec3(1.0, sin(iTime), 0.5) : vec3(0.0, 0.5, 0.5);\n}\n"
+    )
+    body = (
+        "vec3 col = material(fragCoord.x) * max(0.2, fragCoord.y);\n"
+        "col = pow(col, vec3(0.4545));\nfragColor = vec4(col, 1.0);"
+    )
+    f = only(shader(body, helper, header=False), "N001")
+    assert "negative in y" in f.message
+    # a light that is never negative, times the same channel clamped, is clean
+    clean = body.replace("material(fragCoord.x)", "max(material(fragCoord.x), 0.0)")
+    assert codes(shader(clean, helper, header=False), "N001") == []
+
+
+def test_pow_of_one_plus_a_dot_of_unit_vectors_is_clean() -> None:
+    assert codes(shader("float f = pow(1.0 + dot(N, -V), 5.0);"), "N001") == []
+    assert codes(shader("float f = pow(1.0 + dot(N, -V), 5.0);"), "N020") == []
+
+
+def test_pow_base_narrowed_by_a_condition_has_no_witness() -> None:
+    assert codes(shader("float s = sin(iTime);\nif (s > 0.0) { s = pow(s, 2.0); }")) == []
+    assert codes(shader("float t = iTime - 1.0;\nif (t >= 0.0) { t = pow(t, 2.0); }")) == []
 
 
 def test_pow_of_an_unknown_value_is_not_reported() -> None:

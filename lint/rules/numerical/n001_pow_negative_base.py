@@ -4,40 +4,40 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.model import semantic_model
-from ...analysis.syntax import call_args
 from ...context import LintContext
 from ...finding import Finding
 from .. import register
-from ._common import (
-    NumericalRule,
-    builtin_calls,
-    is_raw_dot,
-    range_note,
-    reaches_below,
-    text,
-    wrap_fix,
-)
+from ._common import NumericalRule, text, wrap_fix
+from ._pow import negative_evidence, pow_bases
 
 
 @register
 class PowNegativeBase(NumericalRule):
-    """Finds `pow(x, y)` whose base may be negative, such as an unclamped dot product.
+    """Finds `pow(x, y)` whose base is negative at a reachable input: a base whose whole range
+    is at or below 0 (`pow(clamp(t, 1.0, 3.0) - 3.0, 2.0)`), or one that is negative at a named
+    input: the first frame (`pow(iTime - 1.0, 2.0)`, iTime = 0), sin or cos of an unbounded
+    argument (`pow(sin(iTime), 7.0)`, a colour channel `sin(iTime)` carried through a function's
+    return and a product into `pow(col, vec3(0.4545))`), an unclamped dot product with a
+    direction (`pow(dot(R, V), 32.0)`: negative where R faces away from V).
+
+    A base that only reaches below 0 by interval arithmetic, without such an input, is N020
+    (opt-in).
 
     Why is this bad?
-        GLSL leaves pow undefined for x < 0; GPUs return NaN or garbage there, and one NaN in a
-        specular term turns the pixel black or spreads through a blur. N·H is negative on every
-        surface facing away from the half vector.
+        GLSL leaves pow undefined for x < 0; GPUs compute it as exp2(y * log2(x)) and return
+        NaN there, even for y = 2.0 (only a compiler that rewrites pow(x, 2.0) as x * x hides
+        it). One NaN in a specular term turns the pixel black or spreads through a blur.
 
     Example:
-        float spec = pow(dot(N, H), shininess);
+        float spec = pow(dot(R, V), 32.0);
 
     Use instead:
-        float spec = pow(max(dot(N, H), 0.0), shininess);
+        float spec = pow(max(dot(R, V), 0.0), 32.0);
 
     Fix safety:
         Unsafe: clamping the base at 0 changes the result wherever it was negative; that was
-        undefined before, but the author may have meant abs(x) or a sign-preserving power.
+        undefined before, but the author may have meant abs(x), x * x, or a sign-preserving
+        power.
 
     References:
         - GLSL ES 3.00 spec §8.2 (Exponential Functions): pow is undefined for x < 0, and for x = 0
@@ -47,23 +47,18 @@ class PowNegativeBase(NumericalRule):
 
     code = "N001"
     name = "pow-negative-base"
-    default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
+    default = False  # opt-in until its findings on the corpus are judged (lint/precision.py)
     fixable = "unsafe"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
-        model = semantic_model(ctx)
-        for call, _ in builtin_calls(ctx, "pow"):
-            args = call_args(call)
-            if len(args) != 2:
+        for _, base_node, base in pow_bases(ctx):
+            why = negative_evidence(base)
+            if why is None:
                 continue
-            base = model.value_of(args[0])
-            negative = reaches_below(base.range, 0.0) or (
-                is_raw_dot(base) and base.range.may_be_negative
+            shown = text(ctx, base_node)
+            message = (
+                f"pow base {shown} {why}: pow is undefined there (NaN on most GPUs); "
+                f"clamp it: max({shown}, 0.0), or write a square as a product"
             )
-            if not negative:
-                continue
-            shown = text(ctx, args[0])
-            note = range_note(base, "an unclamped dot product takes either sign")
-            message = f"pow base {shown} may be negative ({note}); clamp it: max({shown}, 0.0)"
-            fix = wrap_fix(ctx, args[0], "max({}, 0.0)", "clamp the base at 0")
-            yield self.emit(ctx, args[0], message, fix)
+            fix = wrap_fix(ctx, base_node, "max({}, 0.0)", "clamp the base at 0")
+            yield self.emit(ctx, base_node, message, fix)

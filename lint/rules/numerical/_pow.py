@@ -1,0 +1,52 @@
+"""What N001 and N020 share: the evidence that a pow base is negative, and the message."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lark import Tree
+
+from ...analysis import types as T
+from ...analysis import witness as W
+from ...analysis.model import semantic_model
+from ...analysis.ranges import _num
+from ...analysis.syntax import call_args
+from ...analysis.values import Value
+from ...context import LintContext, Node
+from ._common import SLACK, builtin_calls, is_raw_dot, reaches_below
+
+_COMPONENTS = "xyzw"
+
+
+def negative_evidence(base: Value) -> str | None:
+    """Why the base is negative at a reachable input, or None: a component whose whole range
+    is <= 0 and below 0 somewhere, or a witness (witness.py) below 0: the first frame, sin or
+    cos of an unbounded argument, a dot product with a direction."""
+    n = T.size(base.type) or 1
+    comps = base.parts(n)
+    for i, c in enumerate(comps):
+        if c.hi <= 0 and c.lo < -SLACK:
+            where = f" in {_COMPONENTS[i]}" if n > 1 and i < 4 else ""
+            return f"is never above 0{where} (range {c.describe()})"
+    for i, (low, _) in enumerate(W.pairs(base.wit, comps)):
+        if low < 0:
+            assert base.wit is not None  # a constant component is caught above
+            where = f" in {_COMPONENTS[i]}" if n > 1 and i < 4 else ""
+            value = "" if base.wit.why == W.DOT else f" (down to {_num(low)})"
+            return f"is negative{where} {base.wit.why}{value}"
+    return None
+
+
+def pow_bases(ctx: LintContext) -> Iterator[tuple[Tree, Node, Value]]:
+    """Every builtin pow call with its base and the base's value."""
+    model = semantic_model(ctx)
+    for call, _ in builtin_calls(ctx, "pow"):
+        args = call_args(call)
+        if len(args) == 2:
+            yield call, args[0], model.value_of(args[0])
+
+
+def range_reaches_negative(base: Value) -> bool:
+    """The range reaches below 0 by interval arithmetic (a finite lower bound under 0), or the
+    base is a raw dot product that may be negative: N020's test."""
+    return reaches_below(base.range, 0.0) or (is_raw_dot(base) and base.range.may_be_negative)
