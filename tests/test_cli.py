@@ -284,6 +284,8 @@ def test_a_message_cannot_drive_the_terminal(
     err = capsys.readouterr().err
     assert "\x1b" not in err and "\r" not in err
     assert "\\x1b[2J\\rfake.toml" in err
+
+
 @pytest.mark.parametrize(
     "option, value, message",
     [

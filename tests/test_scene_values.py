@@ -297,8 +297,12 @@ def test_geometry_material_ids_are_glsl_ints() -> None:
 @pytest.mark.parametrize(
     ("data", "key"),
     [
-        (base_scene(lights=[{"type": "directional", "direction": [1.0, 1.0, 1.0],
-                             "intensity": 3e38}]), "lights[0].intensity"),  # fmt: skip
+        (
+            base_scene(
+                lights=[{"type": "directional", "direction": [1.0, 1.0, 1.0], "intensity": 3e38}]
+            ),
+            "lights[0].intensity",
+        ),  # fmt: skip
         (base_scene(lights=[{"type": "sky", "color": [1e7, 1.0, 1.0]}]), "lights[0].color[0]"),
     ],
 )
