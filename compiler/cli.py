@@ -23,9 +23,10 @@ from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.errors import GlintError, UsageError, printable
 from glint.compiler.files import read_text_file
 from glint.compiler.render import limits
+from glint.compiler.target import shadertoy
 from glint.compiler.target.cross import LANGS
 from glint.compiler.target.mesh import MESH_TARGETS
-from glint.compiler.target.shadertoy import TARGETS
+from glint.compiler.target.shadertoy import TARGETS, channel_binding
 
 if TYPE_CHECKING:
     from glint.compiler.api import Shader
@@ -97,6 +98,20 @@ def build_parser() -> argparse.ArgumentParser:
     validate = sub.add_parser("validate", help="check a shader with glslangValidator")
     validate.add_argument("file", help="ShaderToy Image-tab shader (.glsl)")
     _add_target(validate, TARGETS)
+    validate.add_argument(
+        "--common",
+        metavar="FILE",
+        help="ShaderToy's Common tab, compiled in front of the file (default: NAME.common.glsl "
+        "beside NAME.glsl when there is one); a NAME.common.glsl file is checked as a Common tab",
+    )
+    validate.add_argument(
+        "--channel",
+        action="append",
+        type=_channel,
+        default=[],
+        metavar="N=KIND",
+        help="what iChannelN is bound to: 2d (the default), cube or 3d; e.g. --channel 0=cube",
+    )
     validate.set_defaults(handler=cmd_validate)
 
     render = sub.add_parser("render", help="render a shader or a scene to a PNG")
@@ -448,20 +463,43 @@ def _progress_bar(label: str, total: int) -> Iterator[Callable[[str], None]]:
         yield tick
 
 
+def _channel(text: str) -> tuple[int, str]:
+    try:
+        return channel_binding(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
 def cmd_validate(args: argparse.Namespace) -> int:
     from glint.compiler.target.glslang import validate
 
     _refuse_converted(args.file, "validate")
     source = read_text_file(args.file)
-    diagnostics = validate(source, args.file, args.target)
+    tab = _validate_tab(args)
+    diagnostics = validate(source, args.file, args.target, tab)
     for diagnostic in diagnostics:
         print(diagnostic)
     errors = sum(1 for d in diagnostics if d.severity == "error")
     if errors:
         print(f"{args.file}: {errors} error{'s' if errors > 1 else ''}", file=sys.stderr)
         return 1
-    print(f"{args.file}: valid {args.target} shader (glslangValidator)")
+    what = "Common tab" if tab.is_common else "shader"
+    print(f"{args.file}: valid {args.target} {what} (glslangValidator)")
     return 0
+
+
+def _validate_tab(args: argparse.Namespace) -> shadertoy.Tab:
+    """The ShaderToy tab `validate` compiles the file in: after its Common tab (--common, else
+    NAME.common.glsl beside it), with the channels' types; a Common tab alone as ShaderToy does."""
+    channels = shadertoy.bind_channels(shadertoy.Tab().channels, args.channel)
+    common = Path(args.common) if args.common else shadertoy.common_sibling(args.file)
+    if args.common and not common.is_file():
+        raise UsageError(f"--common {printable(args.common)}: no such file")
+    alone = shadertoy.is_common_file(args.file) or (common.is_file() and common.samefile(args.file))
+    if alone or not common.is_file():
+        return shadertoy.Tab(channels=channels, is_common=alone)
+    text = read_text_file(common)
+    return shadertoy.Tab(common=text, common_file=str(common), channels=channels)
 
 
 def cmd_render(args: argparse.Namespace) -> int:

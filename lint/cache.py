@@ -3,12 +3,15 @@ the last run gets its findings from `.glint_cache/` instead of being linted agai
 
 An entry's key is a hash of everything its findings depend on:
 
-- the file's bytes and its name (findings carry the name; per-file ignores match it);
+- the file's bytes and its name (findings carry the name; per-file ignores match it), and
+  the ShaderToy tab it is linted in: the Common tab's code in front of it (its name and
+  content) or whether it is a Common tab itself, and the channels' types;
 - glint's version and a hash of the linter's own source (every file of the `glint.lint`
   package, precision.json included, and of the compiler's GLSL front end `compiler/glsl/`, its
   targets, glslang runner and ShaderToy prelude `compiler/target/`, and `compiler/errors.py`),
   so that any change to the code invalidates every entry;
-- the effective options: select, ignore, per-file ignores, target, glslang on or off, and,
+- the effective options: select, ignore, per-file ignores, target, channels, glslang on or
+  off, and,
   with glslang on, which glslangValidator (its path, size, modification time and the version
   it prints).
 
@@ -44,6 +47,7 @@ from typing import Any
 
 from glint.compiler.errors import InputError
 from glint.compiler.files import read_user_file
+from glint.compiler.target.shadertoy import Tab
 
 from .finding import Edit, Finding, Fix
 from .options import Options
@@ -142,6 +146,7 @@ class LintCache:
             "ignore": options.ignore,
             "per_file_ignores": sorted(options.per_file_ignores.items()),
             "target": options.target,
+            "channels": list(options.channels),
             "glslang": _glslang_identity() if options.glslang else False,
         }
         self._settings = json.dumps(settings, sort_keys=True).encode()
@@ -150,16 +155,20 @@ class LintCache:
         self.hits = 0
         self.misses = 0
 
-    def key(self, name: str, data: bytes) -> str:
+    def key(self, name: str, data: bytes, tab: Tab | None = None) -> str:
         digest = hashlib.sha256(self._settings)
         digest.update(b"\0" + name.encode("utf-8", "surrogateescape") + b"\0")
         digest.update(data)
+        if tab is not None and tab != Tab():  # the key of a file without a tab is unchanged
+            world = [tab.common_file, tab.common, list(tab.channels), tab.is_common]
+            digest.update(b"\0tab\0" + json.dumps(world).encode("utf-8", "surrogateescape"))
         return digest.hexdigest()
 
-    def load(self, name: str, data: bytes) -> list[Finding] | None:
-        """The findings stored for the file `name` holding `data`, or None (a miss): when there
-        is no entry, or it is anything but what `store` writes for this file and settings."""
-        raw = _read_entry(self.folder / f"{self.key(name, data)}.json")
+    def load(self, name: str, data: bytes, tab: Tab | None = None) -> list[Finding] | None:
+        """The findings stored for the file `name` holding `data` in `tab`, or None (a miss):
+        when there is no entry, or it is anything but what `store` writes for this file and
+        settings."""
+        raw = _read_entry(self.folder / f"{self.key(name, data, tab)}.json")
         findings = None
         if raw is not None:
             try:
@@ -173,7 +182,9 @@ class LintCache:
         self.hits += 1
         return findings
 
-    def store(self, name: str, data: bytes, findings: list[Finding]) -> None:
+    def store(
+        self, name: str, data: bytes, findings: list[Finding], tab: Tab | None = None
+    ) -> None:
         """Write the entry atomically: a temporary file in the same folder, renamed over it
         (over anything there: a broken entry, a symbolic link, a folder)."""
         entry = {
@@ -188,7 +199,7 @@ class LintCache:
         content = json.dumps(entry).encode()  # ASCII: anything else is escaped
         if len(content) > MAX_ENTRY_BYTES:
             return
-        path = self.folder / f"{self.key(name, data)}.json"
+        path = self.folder / f"{self.key(name, data, tab)}.json"
         try:
             self._prepare()
             fd, tmp = tempfile.mkstemp(prefix=f".{path.stem[:16]}.", suffix=".tmp", dir=self.folder)

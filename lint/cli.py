@@ -15,7 +15,7 @@ from pathlib import Path
 from glint.compiler.errors import EnvironmentProblem, UsageError, printable
 from glint.compiler.files import is_temporary, write_atomic
 from glint.compiler.glsl.parser import prepare_parser
-from glint.compiler.target.shadertoy import TARGETS
+from glint.compiler.target.shadertoy import TARGETS, Tab, bind_channels, channel_binding
 
 from .cache import LintCache, cache_directory
 from .config import find_pyproject, load_options
@@ -27,6 +27,7 @@ from .precision import precision_note
 from .reporters import FORMATS, REPORTERS, statistics, summary
 from .rules import all_rules, rule_doc
 from .runner import LintResult, decode
+from .tabs import plan, read_common
 
 EXTENSIONS = (".glsl", ".frag", ".fs")
 
@@ -51,6 +52,7 @@ def add_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-
     )
     lint.add_argument("--no-glslang", action="store_true", help="skip glslangValidator")
     lint.add_argument("--target", choices=TARGETS, help="how the file is wrapped (shadertoy)")
+    add_tab_arguments(lint)
     lint.add_argument(
         "--no-cache",
         action="store_true",
@@ -78,6 +80,30 @@ def add_commands(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-
     rule.add_argument("--json", action="store_true", help="as JSON")
     rule.add_argument("--markdown", action="store_true", help="with --all: the reference page")
     rule.set_defaults(handler=cmd_rule)
+
+
+def add_tab_arguments(parser: argparse.ArgumentParser) -> None:
+    """--common and --channel: the ShaderToy tab the files are checked in (lint, validate)."""
+    parser.add_argument(
+        "--common",
+        metavar="FILE",
+        help="ShaderToy's Common tab, put in front of each file (default: NAME.common.glsl "
+        "beside NAME.glsl when there is one)",
+    )
+    parser.add_argument(
+        "--channel",
+        action="append",
+        type=channel_argument,
+        metavar="N=KIND",
+        help="what iChannelN is bound to: 2d (the default), cube or 3d; e.g. --channel 0=cube",
+    )
+
+
+def channel_argument(text: str) -> tuple[int, str]:
+    try:
+        return channel_binding(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def _jobs(text: str) -> int:
@@ -116,6 +142,8 @@ def options_for(args: argparse.Namespace) -> Options:
     if args.target is not None:
         options.target = args.target
     options.glslang = not args.no_glslang
+    if getattr(args, "channel", None):
+        options.channels = bind_channels(options.channels, args.channel)
     if not enables_some_rule(options):
         default = Options()
 
@@ -176,8 +204,10 @@ def cmd_lint(args: argparse.Namespace) -> int:
     if args.unsafe_fixes and not args.fix:
         raise UsageError("--unsafe-fixes needs --fix")
     options = options_for(args)
-    files = collect(args.paths)
-    results = _lint_files(files, options, args)
+    common = read_common(args.common) if args.common is not None else None
+    planned = plan(collect(args.paths), common, options)
+    files = [file for file, _ in planned]
+    results = _lint_files(files, [tab for _, tab in planned], options, args)
     findings: list[Finding] = []
     sources: dict[str, str] = {}
     fixed = 0
@@ -206,9 +236,11 @@ def cmd_lint(args: argparse.Namespace) -> int:
     return 1 if findings else 0
 
 
-def _lint_files(files: list[str], options: Options, args: argparse.Namespace) -> list[LintResult]:
-    """Each file's result, in order: from the cache when its bytes, name and the settings are
-    unchanged, the others linted (in parallel when there are enough of them). Fixing never
+def _lint_files(
+    files: list[str], tabs: list[Tab], options: Options, args: argparse.Namespace
+) -> list[LintResult]:
+    """Each file's result, in order: from the cache when its bytes, name, tab and the settings
+    are unchanged, the others linted (in parallel when there are enough of them). Fixing never
     reads the cache: it lints afresh, and stores the findings of what it leaves on disk."""
     names = ["<stdin>" if file == "-" else file for file in files]
     data = [read_source(file) for file in files]
@@ -219,7 +251,7 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     results: list[LintResult | None] = [None] * len(files)
     if cache is not None and not args.fix:
         for index, (name, content) in enumerate(zip(names, data, strict=True)):
-            found = cache.load(name, content)
+            found = cache.load(name, content, tabs[index])
             if found is not None:
                 results[index] = LintResult(name, found, decode(content, name)[0])
     todo = [index for index, result in enumerate(results) if result is None]
@@ -230,13 +262,15 @@ def _lint_files(files: list[str], options: Options, args: argparse.Namespace) ->
     if items:
         prepare_parser()
     gc.freeze()
-    fresh = lint_items(items, options, args.fix, args.unsafe_fixes, args.jobs)
+    fresh = lint_items(
+        items, options, args.fix, args.unsafe_fixes, args.jobs, [tabs[i] for i in todo]
+    )
     for index, result in zip(todo, fresh, strict=True):
         results[index] = result
         if cache is not None and not result.failed and not (result.fixed and files[index] == "-"):
             # the bytes the file holds after this run (a fixed file: UTF-8, its BOM kept)
             now = result.encoded() if result.fixed else data[index]
-            cache.store(names[index], now, result.findings)
+            cache.store(names[index], now, result.findings, tabs[index])
     return [result for result in results if result is not None]
 
 

@@ -1,4 +1,4 @@
-"""`[tool.glint.lint]` of pyproject.toml: select, ignore, per-file-ignores, target.
+"""`[tool.glint.lint]` of pyproject.toml: select, ignore, per-file-ignores, target, channels.
 
 The nearest pyproject.toml at or above the current directory is read (like ruff); command-line
 flags override it. The whole `[tool.glint]` table is checked before anything runs: a key glint
@@ -17,11 +17,11 @@ from pathlib import Path
 from typing import Any
 
 from glint.compiler.errors import UsageError
-from glint.compiler.target.shadertoy import TARGETS
+from glint.compiler.target.shadertoy import CHANNEL_KINDS, TARGETS, bind_channels, channel_binding
 
 from .options import Options, unknown_code
 
-KEYS = ("select", "ignore", "per-file-ignores", "target")
+KEYS = ("select", "ignore", "per-file-ignores", "target", "channels")
 SECTIONS = ("lint",)  # the tables glint reads under [tool.glint]
 CODES = 'a list of rule codes or prefixes, e.g. ["N001", "L"]'
 
@@ -89,7 +89,27 @@ def options_from_table(table: dict[str, Any], where: str) -> Options:
         if not isinstance(target, str) or target not in TARGETS:
             raise _wrong(where, ("tool", "glint", "lint", "target"), target, _or(TARGETS))
         options.target = target
+    if "channels" in table:
+        options.channels = _channels(table["channels"], where)
     return options
+
+
+def _channels(value: Any, where: str) -> tuple[str, ...]:
+    """`channels = { 0 = "cube", 2 = "3d" }`: what each iChannelN is bound to."""
+    at = ("tool", "glint", "lint", "channels")
+    kinds = " or ".join(json.dumps(kind) for kind in CHANNEL_KINDS)
+    expected = f'a table of channel number = {kinds}, e.g. {{ 0 = "cube" }}'
+    if not isinstance(value, dict):
+        raise _wrong(where, at, value, expected)
+    bindings: list[tuple[int, str]] = []
+    for number, kind in value.items():
+        try:
+            if not isinstance(kind, str):
+                raise ValueError(kind)
+            bindings.append(channel_binding(f"{number}={kind}"))
+        except ValueError:
+            raise _wrong(where, (*at, number), kind, f"{kinds}, for a channel 0 to 3") from None
+    return bind_channels(Options().channels, bindings)
 
 
 def _codes(value: Any, key: tuple[str, ...], where: str) -> list[str]:

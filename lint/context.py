@@ -16,6 +16,7 @@ from lark import Token, Tree
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import Preprocessed
 from glint.compiler.target.glslang import Diagnostic, validate
+from glint.compiler.target.shadertoy import Tab
 
 from .finding import Edit, Finding, Fix, Severity
 from .nesting import Nesting
@@ -24,17 +25,16 @@ Node = Tree | Token
 Span = tuple[int, int, int, int]  # line, column, end line, end column (1-based, end exclusive)
 
 # glslang's diagnostics computed ahead for many files with one process (lint/parallel.py, with
-# `validate_many`), by (file, target, text): `LintContext.glslang` takes them from here rather
-# than running glslangValidator for the file. Keyed by the text itself, so a text that differs
-# (a fix applied to it) is validated afresh.
-_PRECOMPUTED: dict[tuple[str, str, str], list[Diagnostic]] = {}
+# `validate_many`), by (file, target, text, tab): `LintContext.glslang` takes them from here
+# rather than running glslangValidator for the file. Keyed by the text itself, so a text that
+# differs (a fix applied to it) is validated afresh.
+GlslangKey = tuple[str, str, str, Tab]
+_PRECOMPUTED: dict[GlslangKey, list[Diagnostic]] = {}
 
 
 @contextmanager
-def precomputed_glslang(
-    results: Mapping[tuple[str, str, str], list[Diagnostic]],
-) -> Iterator[None]:
-    """Within the block, contexts of these (file, target, text) use these diagnostics."""
+def precomputed_glslang(results: Mapping[GlslangKey, list[Diagnostic]]) -> Iterator[None]:
+    """Within the block, contexts of these (file, target, text, tab) use these diagnostics."""
     _PRECOMPUTED.update(results)
     try:
         yield
@@ -48,6 +48,10 @@ class LintContext:
     file: str
     text: str  # as the user wrote it
     target: str = "shadertoy"  # shadertoy, webgl2 or desktop
+    tab: Tab = field(default_factory=Tab)  # the Common tab in front, the channels' types
+    # Lines of the Common tab's code in front of the file's own in `pre` and `tree`: a node on
+    # those lines lies outside the file (its span's line is 0 or less).
+    line_offset: int = 0
     pre: Preprocessed | None = None  # None when preprocessing failed
     tree: Tree | None = None  # None when the file did not parse
     use_glslang: bool = True
@@ -71,11 +75,14 @@ class LintContext:
     def glslang(self) -> list[Diagnostic]:
         """glslangValidator's diagnostics on the file as the target wraps it (run once)."""
         if self._glslang is None:
-            known = _PRECOMPUTED.get((self.file, self.target, self.text))
+            known = _PRECOMPUTED.get((self.file, self.target, self.text, self.tab))
             if known is not None:
                 self._glslang = known
+            elif self.text:
+                # at the file's own lines, not where `// source:` markers point
+                self._glslang = validate(self.text, self.file, self.target, self.tab, False)
             else:
-                self._glslang = validate(self.text, self.file, self.target) if self.text else []
+                self._glslang = []
         return self._glslang
 
     def nodes(self, kind: str) -> list[Tree]:
@@ -121,8 +128,13 @@ class LintContext:
 
     def _origin(self, pre_line: int) -> int:
         # The preprocessor keeps one output line per input line, so the physical line is the
-        # tree's line; `#line` is ignored, as findings and edits index the file as written.
-        return min(max(pre_line, 1), len(self.lines))
+        # tree's line less the Common tab's; `#line` is ignored, as findings and edits index
+        # the file as written.
+        return min(self.file_line(pre_line), len(self.lines))
+
+    def file_line(self, pre_line: int) -> int:
+        """The file's line of a line of `pre` (1 at least), or 0 or less on the Common tab's."""
+        return pre_line - self.line_offset if self.line_offset else max(pre_line, 1)
 
     def has_macros(self, node: Node) -> bool:
         """Whether a macro was expanded on the node's lines (its columns are then approximate

@@ -8,6 +8,8 @@ from dataclasses import dataclass, field
 from functools import cache
 from pathlib import PurePath
 
+from glint.compiler.target.shadertoy import CHANNELS, Tab
+
 
 @dataclass
 class Options:
@@ -19,6 +21,12 @@ class Options:
     per_file_ignores: dict[str, list[str]] = field(default_factory=dict)  # glob -> codes
     target: str = "shadertoy"  # shadertoy, webgl2 or desktop
     glslang: bool = True  # run glslangValidator (C001, C002)
+    # what iChannel0..3 are bound to: "2d", "cube" or "3d" (shadertoy.CHANNEL_KINDS)
+    channels: tuple[str, ...] = ("2d",) * CHANNELS
+
+    def tab(self) -> Tab:
+        """The ShaderToy tab a file is linted in when it has no Common tab."""
+        return Tab(channels=self.channels)
 
     def enabled(self, code: str, file: str = "") -> bool:
         """Selected, not ignored, and not ignored for this file. The longest matching code

@@ -20,11 +20,13 @@ import os
 import sys
 from collections.abc import Sequence
 from concurrent.futures import ProcessPoolExecutor
+from typing import TypeVar
 
 from glint.compiler.errors import GlintError
 from glint.compiler.target.glslang import Diagnostic, validate_many
+from glint.compiler.target.shadertoy import Tab
 
-from .context import precomputed_glslang
+from .context import GlslangKey, precomputed_glslang
 from .options import Options
 from .runner import LintResult, decode, lint_bytes
 
@@ -34,6 +36,8 @@ CHUNKS_PER_WORKER = 6
 MAX_CHUNK = 64  # files per chunk, and so per glslangValidator process
 
 Item = tuple[str, bytes]  # the file's name (as reported) and its bytes
+Work = tuple[str, bytes, Tab]  # and the ShaderToy tab it is linted in
+T = TypeVar("T")
 
 
 def available_cores() -> int:
@@ -50,7 +54,7 @@ def worker_count(files: int, jobs: int | None = None) -> int:
     return max(1, min(jobs, files // MIN_FILES_PER_WORKER))
 
 
-def chunks(items: Sequence[Item], workers: int) -> list[list[Item]]:
+def chunks(items: Sequence[T], workers: int) -> list[list[T]]:
     """Consecutive chunks, CHUNKS_PER_WORKER per worker, at most MAX_CHUNK files each."""
     if not items:
         return []
@@ -65,12 +69,16 @@ def lint_items(
     fix: bool = False,
     unsafe_fixes: bool = False,
     jobs: int | None = None,
+    tabs: Sequence[Tab] | None = None,
 ) -> list[LintResult]:
-    """Lint each (name, bytes) as `runner.lint_bytes` does; the results in the same order."""
+    """Lint each (name, bytes) as `runner.lint_bytes` does, in its tab of `tabs` (default:
+    `options.tab()`); the results in the same order."""
+    every = list(tabs) if tabs is not None else [options.tab()] * len(items)
+    triples = [(name, data, tab) for (name, data), tab in zip(items, every, strict=True)]
     workers = worker_count(len(items), jobs)
     if workers <= 1:
-        return lint_chunk(list(items), options, fix, unsafe_fixes)
-    work = chunks(items, workers)
+        return lint_chunk(triples, options, fix, unsafe_fixes)
+    work = chunks(triples, workers)
     with ProcessPoolExecutor(max_workers=workers, mp_context=_context()) as pool:
         parts = pool.map(
             lint_chunk,
@@ -83,49 +91,50 @@ def lint_items(
 
 
 def lint_chunk(
-    items: list[Item], options: Options, fix: bool = False, unsafe_fixes: bool = False
+    items: list[Work], options: Options, fix: bool = False, unsafe_fixes: bool = False
 ) -> list[LintResult]:
     """Lint consecutive files in this process, glslang run once for all of them."""
     with precomputed_glslang(_glslang_for(items, options)):
-        return [_lint_one(data, name, options, fix, unsafe_fixes) for name, data in items]
+        return [_lint_one(data, name, options, fix, unsafe_fixes, tab) for name, data, tab in items]
 
 
 def _lint_one(
-    data: bytes, name: str, options: Options, fix: bool, unsafe_fixes: bool
+    data: bytes, name: str, options: Options, fix: bool, unsafe_fixes: bool, tab: Tab
 ) -> LintResult:
     """One file's result. A bug of glint's own on one file is that file's note, not the end of
     the run: the other files are still linted and reported, and the command exits 2."""
     try:
-        return lint_bytes(data, name, options, fix, unsafe_fixes)
+        return lint_bytes(data, name, options, fix, unsafe_fixes, tab)
     except Exception as exc:
         what = f"{type(exc).__name__}: {exc}"
         note = f"{name}: internal error: {what}; please report it with the file"
         return LintResult(name, [], decode(data, name)[0], notes=[note], failed=True)
 
 
-def _glslang_for(
-    items: list[Item], options: Options
-) -> dict[tuple[str, str, str], list[Diagnostic]]:
+def _glslang_for(items: list[Work], options: Options) -> dict[GlslangKey, list[Diagnostic]]:
     """glslang's diagnostics for the files that the glslang rules will ask about, by the key
     `precomputed_glslang` takes; empty when glslang is off or cannot run (each file then runs
     it, or fails, as it would alone)."""
     if not options.glslang:
         return {}
     wanted: list[tuple[str, str]] = []
-    for name, data in items:
+    tabs: list[Tab] = []
+    for name, data, tab in items:
         text, problem = decode(data, name)
         asked = options.enabled("C001", name) or options.enabled("C002", name)
         if text and not problem and asked:
             wanted.append((text, name))
+            tabs.append(tab)
     if len(wanted) < 2:
         return {}  # one file: `validate` as usual
     try:
-        results = validate_many(wanted, options.target)
+        # at the files' own lines, as `LintContext.glslang` asks for them
+        results = validate_many(wanted, options.target, tabs, markers=False)
     except GlintError:
         return {}
     return {
-        (name, options.target, text): diagnostics
-        for (text, name), diagnostics in zip(wanted, results, strict=True)
+        (name, options.target, text, tab): diagnostics
+        for (text, name), tab, diagnostics in zip(wanted, tabs, results, strict=True)
     }
 
 

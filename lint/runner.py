@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import parse, preprocess
+from glint.compiler.target.shadertoy import Tab, predefined_macros
 
 from .context import LintContext, indexed
 from .finding import Finding
@@ -56,11 +57,16 @@ def decode(data: bytes, file: str) -> tuple[str, str | None]:
         return "", f"not UTF-8 text (invalid byte 0x{data[exc.start]:02x} on line {line})"
 
 
-def build_context(text: str, file: str, options: Options) -> LintContext:
-    ctx = LintContext(file=file, text=text, target=options.target, use_glslang=options.glslang)
+def build_context(text: str, file: str, options: Options, tab: Tab | None = None) -> LintContext:
+    """The file preprocessed and parsed with the Common tab's code in front, as ShaderToy
+    compiles it: its functions, macros and globals are known to the file's analysis."""
+    tab = tab or options.tab()
+    common = "" if tab.is_common or not tab.common else tab.common.rstrip("\n") + "\n"
+    ctx = LintContext(file=file, text=text, target=options.target, tab=tab,
+                      line_offset=common.count("\n"), use_glslang=options.glslang)  # fmt: skip
     ctx.reports_glslang_errors = options.glslang and options.enabled("C001", file)
     try:
-        ctx.pre = preprocess(text, file)
+        ctx.pre = preprocess(common + text, file, predefined_macros(options.target, common + text))
     except InputError as exc:
         ctx.front_end_error = exc
         return ctx
@@ -90,12 +96,17 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
 
 
 def lint_source(
-    text: str, file: str = "<input>", options: Options | None = None, read_problem: str = ""
+    text: str,
+    file: str = "<input>",
+    options: Options | None = None,
+    read_problem: str = "",
+    tab: Tab | None = None,
 ) -> list[Finding]:
-    """Every enabled finding for `text`, sorted by position."""
+    """Every enabled finding for `text` (within `tab`: the Common tab in front, the channels'
+    types), sorted by position. Findings in the Common tab's code are left to that file."""
     options = options or Options()
     with _recursion_limit(RECURSION_LIMIT):
-        ctx = build_context(text, file, options)
+        ctx = build_context(text, file, options, tab)
         ctx.read_problem = read_problem
         findings: list[Finding] = []
         # Rules that report on what the others found out (C006: too deep) run last.
@@ -110,6 +121,7 @@ def lint_source(
                     findings.extend(rule().check(ctx))
                 except RecursionError:
                     ctx.too_deep = True
+    findings = [f for f in findings if f.line >= 1]  # not on the Common tab's lines
     findings = _without_explained_glslang_errors(findings)
     suppressions = parse_suppressions(text)
     kept = apply_suppressions(findings, suppressions)
@@ -147,19 +159,20 @@ def lint_text(
     fix: bool = False,
     unsafe_fixes: bool = False,
     read_problem: str = "",
+    tab: Tab | None = None,
 ) -> LintResult:
     """Lint, and with `fix` apply the fixes (safe ones; unsafe too with `unsafe_fixes`)."""
     options = options or Options()
-    findings = lint_source(text, file, options, read_problem)
+    findings = lint_source(text, file, options, read_problem, tab)
     if not fix or read_problem:
         return LintResult(file, findings, text)
     allowed = {"safe", "unsafe"} if unsafe_fixes else {"safe"}
     fixed_text, count = apply_fixes(
-        text, findings, allowed, lambda t: lint_source(t, file, options)
+        text, findings, allowed, lambda t: lint_source(t, file, options, tab=tab)
     )
     if count == 0:
         return LintResult(file, findings, text)
-    after = lint_source(fixed_text, file, options)
+    after = lint_source(fixed_text, file, options, tab=tab)
     if _errors(after) > _errors(findings):
         # A fix must never break a shader; if one did, keep the user's text and say so.
         note = f"{file}: fixes not applied: they would add compile errors (a glint bug; report it)"
@@ -172,8 +185,8 @@ def _errors(findings: list[Finding]) -> int:
 
 
 def lint_bytes(data: bytes, file: str, options: Options | None = None, fix: bool = False,
-               unsafe_fixes: bool = False) -> LintResult:  # fmt: skip
+               unsafe_fixes: bool = False, tab: Tab | None = None) -> LintResult:  # fmt: skip
     text, problem = decode(data, file)
-    result = lint_text(text, file, options, fix, unsafe_fixes, read_problem=problem or "")
+    result = lint_text(text, file, options, fix, unsafe_fixes, problem or "", tab)
     result.bom = data.startswith(codecs.BOM_UTF8)
     return result

@@ -115,6 +115,26 @@ def str_mapping(name: str, value: object) -> dict[str, str]:
     return dict(value)
 
 
+def channel_bindings(name: str, value: object) -> list[tuple[int, str]] | None:
+    """None, or a mapping of channel number (0 to 3) to what it is bound to ("2d", "cube",
+    "3d"), as (number, kind) pairs."""
+    from glint.compiler.target.shadertoy import CHANNEL_KINDS, CHANNELS
+
+    if value is None:
+        return None
+    if not isinstance(value, Mapping):
+        raise UsageError(
+            f"{name}: expected a dict of channel number to kind such as {{0: 'cube'}}, got "
+            f"{_kind(value)} {_got(value)}"
+        )
+    bindings = []
+    for number, kind in value.items():
+        if isinstance(number, bool) or not isinstance(number, int) or not 0 <= number < CHANNELS:
+            raise UsageError(f"{name}: channel numbers are 0 to {CHANNELS - 1}, got {_got(number)}")
+        bindings.append((number, choice(f"{name}[{number}]", kind, tuple(CHANNEL_KINDS))))
+    return bindings
+
+
 def str_list(name: str, value: object) -> list[str] | None:
     """None, one str (comma-separated items) or a sequence of str."""
     if value is None:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from glint.compiler.errors import UsageError
@@ -23,6 +23,8 @@ def lint_shader(
     ignore: str | Sequence[str] | None = None,
     target: str | None = None,
     glslang: bool = True,
+    common: str | os.PathLike[str] | None = None,
+    channels: Mapping[int, str] | None = None,
 ) -> list[Finding]:
     """Lint GLSL as `glint lint` does; returns the findings sorted by file and position.
 
@@ -33,13 +35,20 @@ def lint_shader(
     is shadertoy, webgl2 or desktop; `glslang=False` is `--no-glslang`. As for the command,
     `[tool.glint.lint]` of the nearest pyproject.toml above the current directory applies.
 
-    Raises UsageError for an unknown rule code, target or a path that does not exist.
+    `common` is ShaderToy's Common tab, GLSL text or the path of its file (`--common`): the
+    shader is analysed with it in front, and the Common tab is linted too (its findings name
+    its file, or `<common>` for text). Without it, a shader file's `NAME.common.glsl` beside
+    it is its Common tab. `channels` binds iChannelN to "2d", "cube" or "3d", e.g.
+    {0: "cube"} (`--channel 0=cube`).
+
+    Raises UsageError for an unknown rule code, target, channel or a path that does not exist.
     Problems in the code itself (even binary junk) are findings, never exceptions.
     """
     import argparse
 
     from glint.lint.cli import collect, options_for, read_source
     from glint.lint.runner import lint_bytes
+    from glint.lint.tabs import plan, read_common
 
     if isinstance(shader, Shader):
         target = target or shader.target
@@ -56,25 +65,48 @@ def lint_shader(
         ignore=_codes("ignore", ignore),
         target=target,
         no_glslang=not _args.flag("glslang", glslang),
+        channel=_args.channel_bindings("channels", channels),
     )
     options = options_for(flags)  # the configuration file, then the flags, checked as the CLI
+    explicit = None
+    texts: dict[str, bytes] = {}  # the sources given as text, by the name findings carry
+    if common is not None:
+        if isinstance(common, str) and is_source(common):
+            explicit = ("<common>", common)
+            texts["<common>"] = _encoded(common)
+        elif isinstance(common, str | os.PathLike):
+            explicit = read_common(_args.path("common", common), "common:")
+        else:
+            raise UsageError(
+                "common: expected GLSL text (a str with a line break) or the path of the Common "
+                f"tab's file, not {type(common).__name__}"
+            )
     if isinstance(shader, Shader) or is_source(shader):
-        # A lone surrogate (text read with errors="surrogateescape") cannot be UTF-8: kept as
-        # its bytes, it is reported as text that is not UTF-8 (C005) rather than raising.
-        data = str(shader).encode("utf-8", errors="surrogatepass")
-        return lint_bytes(data, "<input>", options).findings
-    if not isinstance(shader, str | os.PathLike):
+        texts["<input>"] = _encoded(str(shader))
+        files = ["<input>"]
+    elif not isinstance(shader, str | os.PathLike):
         raise UsageError(
             "shader: expected GLSL text (a str with a line break), the path of a file or a "
             f"folder, or a Shader, not {type(shader).__name__}"
         )
-    path = _args.path("shader", shader)
-    if path == "-":
-        raise UsageError("shader: '-' (standard input) is for `glint lint`; pass the text itself")
+    else:
+        path = _args.path("shader", shader)
+        if path == "-":
+            raise UsageError(
+                "shader: '-' (standard input) is for `glint lint`; pass the text itself"
+            )
+        files = collect([path])
     findings: list[Finding] = []
-    for file in collect([path]):
-        findings += lint_bytes(read_source(file), file, options).findings
+    for file, tab in plan(files, explicit, options):
+        data = texts[file] if file in texts else read_source(file)
+        findings += lint_bytes(data, file, options, tab=tab).findings
     return findings
+
+
+def _encoded(text: str) -> bytes:
+    # A lone surrogate (text read with errors="surrogateescape") cannot be UTF-8: kept as its
+    # bytes, it is reported as text that is not UTF-8 (C005) rather than raising.
+    return text.encode("utf-8", errors="surrogatepass")
 
 
 def _codes(name: str, codes: object) -> list[str] | None:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from glint.compiler.errors import EnvironmentProblem, UsageError
 from glint.compiler.target import shadertoy, tools
+from glint.compiler.target.shadertoy import Tab
 from glint.compiler.target.sourcemap import Origin, build_line_map, split_lines
 from glint.compiler.target.tools import ToolLimit
 
@@ -75,15 +76,15 @@ def find_validator() -> str:
     return path
 
 
-def wrap_for_target(source: str, target: str) -> tuple[str, int]:
-    """Return the complete fragment shader for `target` and how many prelude lines precede the
-    user's first line. A source that already opens with `#version` is complete as it is."""
+def wrap_for_target(source: str, target: str, tab: Tab | None = None) -> tuple[str, int]:
+    """Return the complete fragment shader for `target` (within `tab`: the Common tab in front,
+    the channels' types) and how many lines precede the user's first line. A source that
+    already opens with `#version` is complete as it is."""
     if target not in TARGETS:
         raise UsageError(f"unknown target {target!r}; expected one of: {', '.join(TARGETS)}")
     if shadertoy.is_complete(source):
         return source, 0
-    wrap_as = "webgl2" if target == "shadertoy" else target
-    return shadertoy.wrap_for(wrap_as, source), shadertoy.prelude_lines(wrap_as)
+    return shadertoy.wrap_tab(target, source, tab or Tab())
 
 
 def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess[str]:
@@ -117,9 +118,18 @@ def _column(line_text: str, token: str, message: str) -> int:
     return index + 1 if index >= 0 else 1
 
 
-def _definition(source: str, filename: str, name: str) -> tuple[Origin, int] | None:
+def _line_map(text: str, filename: str, markers: bool) -> list[Origin]:
+    """Each line's origin: through the `// source:` markers, or (without) the line itself."""
+    if markers:
+        return build_line_map(text, filename)
+    return [Origin(filename, index + 1) for index in range(len(split_lines(text)))]
+
+
+def _definition(
+    source: str, filename: str, name: str, markers: bool = True
+) -> tuple[Origin, int] | None:
     """Where `name(` first appears in the user's code: its origin and 1-based column."""
-    origins = build_line_map(source, filename)
+    origins = _line_map(source, filename, markers)
     for index, line in enumerate(split_lines(source)):
         found = re.search(rf"\b{name}\s*\(", line)
         if found:
@@ -128,18 +138,18 @@ def _definition(source: str, filename: str, name: str) -> tuple[Origin, int] | N
 
 
 def _epilogue_diagnostic(
-    source: str, filename: str, token: str, message: str, severity: str
+    source: str, filename: str, token: str, message: str, severity: str, markers: bool = True
 ) -> Diagnostic:
     """Explain an error in the `main` that the target appends: the user's entry point is wrong.
 
     It is reported at the user's definition when there is one, else at the last line.
     """
     if token == "mainImage":
-        found = _definition(source, filename, "mainImage")
+        found = _definition(source, filename, "mainImage", markers)
         what = "has the wrong signature" if found else "is not defined"
         text = f"mainImage {what}: ShaderToy calls `{MAIN_IMAGE_SIGNATURE}`"
     elif token == "main":
-        found = _definition(source, filename, "main")
+        found = _definition(source, filename, "main", markers)
         text = "do not define `main`: ShaderToy defines it and calls `mainImage`"
     else:
         found = None
@@ -147,15 +157,27 @@ def _epilogue_diagnostic(
     if found:
         origin, column = found
         return Diagnostic(origin.file, origin.line, column, severity, text)
-    origins = build_line_map(source, filename)
+    origins = _line_map(source, filename, markers)
     last = origins[-1] if origins else Origin(filename, 1)
     return Diagnostic(last.file, last.line, 1, severity, text)
 
 
-def parse_output(output: str, source: str, filename: str, prelude_lines: int) -> list[Diagnostic]:
-    """Turn glslangValidator's output on a wrapped `source` into diagnostics on the user's files."""
-    origins = build_line_map(source, filename)
+def parse_output(
+    output: str,
+    source: str,
+    filename: str,
+    prelude_lines: int,
+    tab: Tab | None = None,
+    markers: bool = True,
+) -> list[Diagnostic]:
+    """Turn glslangValidator's output on a wrapped `source` into diagnostics on the user's files:
+    a line of the Common tab's code (the last lines of the prelude) at `tab.common_file`.
+    `markers=False` reports the lines of the file as written, not where `// source:` says."""
+    origins = _line_map(source, filename, markers)
     user_lines = split_lines(source)
+    common = tab.common if tab is not None and not tab.is_common else ""
+    common_lines = split_lines(common)
+    common_origins = _line_map(common, tab.common_file if tab else "", markers) if common else []
     diagnostics: list[Diagnostic] = []
     for raw in output.splitlines():
         match = _LINE.match(raw.strip())
@@ -174,10 +196,17 @@ def parse_output(output: str, source: str, filename: str, prelude_lines: int) ->
             # Link-stage errors name no line; the whole file is at fault.
             diagnostics.append(Diagnostic(filename, 1, 1, severity, message))
             continue
-        if user_line < 1:
+        if 1 <= user_line + len(common_lines) <= len(common_lines):  # in the Common tab
+            index = user_line + len(common_lines) - 1
+            origin = common_origins[index]
+            column = _column(common_lines[index], token, message)
+            diagnostics.append(Diagnostic(origin.file, origin.line, column, severity, message))
+        elif user_line < 1:
             diagnostics.append(Diagnostic(filename, 1, 1, severity, f"in the prelude: {message}"))
         elif user_line > len(origins):
-            diagnostics.append(_epilogue_diagnostic(source, filename, token, message, severity))
+            diagnostics.append(
+                _epilogue_diagnostic(source, filename, token, message, severity, markers)
+            )
         else:
             origin = origins[user_line - 1]
             column = _column(user_lines[user_line - 1], token, message)
@@ -204,17 +233,25 @@ def _unique(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
     return kept
 
 
-def validate(source: str, filename: str = "<input>", target: str = "shadertoy") -> list[Diagnostic]:
-    """Compile `source` as `target` would and return its diagnostics (empty when it is clean).
-    glslang running out of time or memory on it is one error diagnostic, at its first line."""
-    wrapped, prelude_lines = wrap_for_target(source, target)
+def validate(
+    source: str,
+    filename: str = "<input>",
+    target: str = "shadertoy",
+    tab: Tab | None = None,
+    markers: bool = True,
+) -> list[Diagnostic]:
+    """Compile `source` as `target` would (within `tab`: after the Common tab's code, with its
+    channels' types) and return its diagnostics (empty when it is clean). glslang running out
+    of time or memory on it is one error diagnostic, at its first line. `markers=False`: at
+    the lines of the file as written (lint), not where its `// source:` markers point."""
+    wrapped, prelude_lines = wrap_for_target(source, target, tab)
     with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
         try:
             result = _compile(wrapped, workdir, [])
         except ToolLimit as exc:
             return [Diagnostic(filename, 1, 1, "error", exc.message)]
     output = result.stdout + result.stderr
-    return _diagnostics(output, result.returncode, source, filename, prelude_lines)
+    return _diagnostics(output, result.returncode, source, filename, prelude_lines, tab, markers)
 
 
 def validate_stage(source: str, filename: str, stage: str) -> list[Diagnostic]:
@@ -230,9 +267,15 @@ def validate_stage(source: str, filename: str, stage: str) -> list[Diagnostic]:
 
 
 def _diagnostics(
-    output: str, returncode: int, source: str, filename: str, prelude_lines: int
+    output: str,
+    returncode: int,
+    source: str,
+    filename: str,
+    prelude_lines: int,
+    tab: Tab | None = None,
+    markers: bool = True,
 ) -> list[Diagnostic]:
-    diagnostics = parse_output(output, source, filename, prelude_lines)
+    diagnostics = parse_output(output, source, filename, prelude_lines, tab, markers)
     if returncode != 0 and not any(d.severity == "error" for d in diagnostics):
         # A failure we could not parse must not pass silently.
         if returncode < 0:
@@ -245,7 +288,10 @@ def _diagnostics(
 
 
 def validate_many(
-    sources: Sequence[tuple[str, str]], target: str = "shadertoy"
+    sources: Sequence[tuple[str, str]],
+    target: str = "shadertoy",
+    tabs: Sequence[Tab] | None = None,
+    markers: bool = True,
 ) -> list[list[Diagnostic]]:
     """`validate` for many (source, filename) pairs with one glslangValidator process per
     BATCH_FILES files instead of one per file; the diagnostics of each, in the given order.
@@ -256,17 +302,29 @@ def validate_many(
     cut at those names and each part parsed against its own source, with the same line
     mapping as `validate`. Where the output cannot be cut that way (a crash, a message on
     stderr, a name missing), the batch is validated again one file at a time: the results are
-    always those of `validate`, only faster."""
+    always those of `validate`, only faster. `tabs` gives each source's `tab`."""
+    every = list(tabs) if tabs is not None else [Tab()] * len(sources)
     results: list[list[Diagnostic]] = []
     for start in range(0, len(sources), BATCH_FILES):
-        batch = sources[start : start + BATCH_FILES]
-        results += _validate_batch(batch, target) or [validate(s, f, target) for s, f in batch]
+        batch = [
+            (source, name, tab)
+            for (source, name), tab in zip(
+                sources[start : start + BATCH_FILES],
+                every[start : start + BATCH_FILES],
+                strict=True,
+            )
+        ]
+        results += _validate_batch(batch, target, markers) or [
+            validate(s, f, target, tab, markers) for s, f, tab in batch
+        ]
     return results
 
 
-def _validate_batch(batch: Sequence[tuple[str, str]], target: str) -> list[list[Diagnostic]] | None:
+def _validate_batch(
+    batch: Sequence[tuple[str, str, Tab]], target: str, markers: bool
+) -> list[list[Diagnostic]] | None:
     """One glslangValidator process for the batch, or None when its output cannot be split."""
-    wrapped = [wrap_for_target(source, target) for source, _ in batch]
+    wrapped = [wrap_for_target(source, target, tab) for source, _, tab in batch]
     validator = find_validator()
     with tempfile.TemporaryDirectory(prefix="glint-glslang-") as workdir:
         paths = []
@@ -288,8 +346,8 @@ def _validate_batch(batch: Sequence[tuple[str, str]], target: str) -> list[list[
     if result.returncode != 0 and not any(failed):
         return None  # it failed, and no file says why: let `validate` find out which
     return [
-        _diagnostics(part, result.returncode if bad else 0, source, filename, prelude)
-        for (source, filename), (_, prelude), part, bad in zip(
+        _diagnostics(part, result.returncode if bad else 0, source, filename, prelude, tab, markers)
+        for (source, filename, tab), (_, prelude), part, bad in zip(
             batch, wrapped, sections, failed, strict=True
         )
     ]

@@ -6,6 +6,10 @@ validates and renders user code with exactly this prelude so that what passes he
 
 from __future__ import annotations
 
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
 # Uniforms ShaderToy declares for the Image tab (https://www.shadertoy.com/howto).
 UNIFORMS: tuple[tuple[str, str], ...] = (
     ("vec3", "iResolution"),
@@ -62,6 +66,93 @@ DESKTOP_PRELUDE = "#version 330\n" + _UNIFORM_BLOCK
 def prelude_lines(target: str) -> int:
     """How many lines `wrap_for(target, ...)` puts before the user's first line."""
     return {"shadertoy": 0, "webgl2": PRELUDE_LINES, "desktop": DESKTOP_PRELUDE.count("\n")}[target]
+
+
+# What `--channel N=KIND` binds to iChannelN, and the sampler type ShaderToy then declares.
+CHANNEL_KINDS: dict[str, str] = {"2d": "sampler2D", "cube": "samplerCube", "3d": "sampler3D"}
+CHANNELS = 4
+
+# ShaderToy's prelude defines HW_PERFORMANCE before the code: 1 on desktops, 0 on phones.
+# glint checks the desktop's value. Code that defines it itself (written for a runner that
+# does not) keeps its own value: a redefinition with another value would be an error
+# (glslang and glint's preprocessor agree), so then the prelude leaves it out.
+HW_PERFORMANCE = "1"
+_DEFINES_HW_PERFORMANCE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+HW_PERFORMANCE\b", re.M)
+
+# The Common tab compiled on its own: ShaderToy declares only these uniforms for it (the
+# others belong to a pass) and a `main` of its own, so it needs no mainImage.
+COMMON_UNIFORMS: tuple[tuple[str, str], ...] = (("vec4", "iDate"), ("float", "iSampleRate"))
+COMMON_EPILOGUE = "\nout vec4 glintFragColor;\nvoid main() { glintFragColor = vec4(0.0); }\n"
+
+
+@dataclass(frozen=True)
+class Tab:
+    """ShaderToy's world around one tab's code: the Common tab's code that ShaderToy puts in
+    front of it, what each iChannelN is bound to, and whether the code is the Common tab."""
+
+    common: str = ""  # the Common tab's code ("" when there is none)
+    common_file: str = ""  # where that code came from, for messages
+    channels: tuple[str, ...] = ("2d",) * CHANNELS  # a CHANNEL_KINDS key per channel
+    is_common: bool = False  # the code is itself a Common tab, compiled alone
+
+
+def channel_binding(text: str) -> tuple[int, str]:
+    """`N=KIND` as `--channel` takes it: (N, KIND); ValueError saying what it takes."""
+    number, _, kind = text.partition("=")
+    kind = kind.strip().lower()
+    if number.strip() not in {str(i) for i in range(CHANNELS)} or kind not in CHANNEL_KINDS:
+        raise ValueError(
+            f"expected N=KIND with N 0 to {CHANNELS - 1} and KIND one of "
+            f"{', '.join(CHANNEL_KINDS)} (e.g. 0=cube), got {text!r}"
+        )
+    return int(number), kind
+
+
+def bind_channels(channels: tuple[str, ...], bindings: list[tuple[int, str]]) -> tuple[str, ...]:
+    """`channels` with each (N, KIND) of `bindings` bound."""
+    bound = list(channels)
+    for index, kind in bindings:
+        bound[index] = kind
+    return tuple(bound)
+
+
+def common_sibling(path: str | Path) -> Path:
+    """`NAME.common.glsl` beside `NAME.glsl`: where `glint compose --split common` writes the
+    Common tab of an Image tab."""
+    path = Path(path)
+    return path.with_name(path.stem + ".common" + (path.suffix or ".glsl"))
+
+
+def is_common_file(path: str | Path) -> bool:
+    """Whether the file is named as a Common tab (`NAME.common.glsl`)."""
+    return Path(path).stem.endswith(".common")
+
+
+def predefined_macros(target: str, code: str) -> dict[str, str]:
+    """The macros the target defines before `code` (the Common tab's code included)."""
+    if target != "shadertoy" or _DEFINES_HW_PERFORMANCE.search(code):
+        return {}
+    return {"HW_PERFORMANCE": HW_PERFORMANCE}
+
+
+def wrap_tab(target: str, user_source: str, tab: Tab) -> tuple[str, int]:
+    """The complete fragment shader that checks `user_source` as `target` runs it within
+    `tab` (`shadertoy` is checked as `webgl2`, with ShaderToy's own macros), and how many
+    lines come before the user's first line: the prelude, then the Common tab's code."""
+    body = user_source if user_source.endswith("\n") else user_source + "\n"
+    common = tab.common if not tab.common or tab.common.endswith("\n") else tab.common + "\n"
+    head = "#version 330\n" if target == "desktop" else _HEADER
+    for name, value in predefined_macros(target, common + body).items():
+        head += f"#define {name} {value}\n"
+    if tab.is_common and target == "shadertoy":
+        uniforms = COMMON_UNIFORMS
+    else:
+        channels = {f"iChannel{i}": CHANNEL_KINDS[kind] for i, kind in enumerate(tab.channels)}
+        uniforms = tuple((channels.get(decl, ty), decl) for ty, decl in UNIFORMS)
+    head += "".join(f"uniform {ty} {decl};\n" for ty, decl in uniforms)
+    prelude = head + ("" if tab.is_common else common)
+    epilogue = COMMON_EPILOGUE if tab.is_common else EPILOGUE
+    return prelude + body + epilogue, prelude.count("\n")
 
 
 def is_complete(source: str) -> bool:

@@ -13,7 +13,7 @@ every expression of the corpus."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 from lark import Tree
 
@@ -33,7 +33,7 @@ Scope = tuple[tuple[Frame, ...], float]  # the frames in scope (outermost first)
 class ExpressionTypes:
     """Types of the expressions of one parsed file."""
 
-    def __init__(self, tree: Tree) -> None:
+    def __init__(self, tree: Tree, channels: Sequence[str] = ()) -> None:
         self.tree = tree
         # each definition's parameters (qualifiers, type, name), by function name
         self.parameters: dict[str, list[list[tuple[str, str, str]]]] = {}
@@ -42,7 +42,7 @@ class ExpressionTypes:
         self._scope_of: dict[int, Scope] = {}
         self._types: dict[int, str | None] = {}
         self._position = 0
-        shadertoy: Frame = {name: [(-1, ty)] for name, ty in T.SHADERTOY_TYPES.items()}
+        shadertoy: Frame = {name: [(-1, ty)] for name, ty in T.shadertoy_types(channels).items()}
         self._globals: list[Frame] = [shadertoy]
         for node in tree.children:
             if not isinstance(node, Tree):
@@ -219,5 +219,5 @@ def expression_types(ctx: LintContext) -> ExpressionTypes:
     if found is None:
         if ctx.tree is None:
             raise ValueError("expression_types needs a parsed file")
-        found = ctx.cache["expression_types"] = ExpressionTypes(ctx.tree)
+        found = ctx.cache["expression_types"] = ExpressionTypes(ctx.tree, ctx.tab.channels)
     return found

@@ -20,6 +20,7 @@ statements), expressions.py (the evaluator) and builtin_rules.py (the builtins' 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from lark import Tree
@@ -78,13 +79,14 @@ class Model:
 
     reuse_passes = True  # keep a function's pass when a round gives it what it had before
 
-    def __init__(self, tree: Tree) -> None:
+    def __init__(self, tree: Tree, channels: Sequence[str] = ()) -> None:
         self.tree = tree
+        self._channels = tuple(channels)  # what each iChannelN is bound to
         self.structs: dict[str, dict[str, str]] = {}
         self.functions: dict[str, list[Function]] = {}
         self._env_of: dict[int, Env] = {}
         self._memo: dict[int, Value] = {}
-        self._globals = Scopes([dict(_shadertoy_values())])
+        self._globals = Scopes([_shadertoy_values(self._channels)])
         self._params: dict[tuple[str, int], list[Value]] = {}  # call-site facts
         # Facts of the tree's shape, by id of the node: the rounds and a loop's passes ask again.
         self._names: dict[int, frozenset[str]] = {}  # names_of
@@ -172,7 +174,7 @@ class Model:
                    and str(n.children[0].children[1]) in called) > 1  # type: ignore  # fmt: skip
         rounds = _ROUNDS if deep else 2
         for rnd in range(rounds):
-            self._globals = Scopes([dict(_shadertoy_values())])
+            self._globals = Scopes([_shadertoy_values(self._channels)])
             self.functions = {}
             self._collecting = rnd < rounds - 1
             self._reading = rnd > 0
@@ -516,10 +518,10 @@ _FIRST_FRAME = {
 }
 
 
-def _shadertoy_values() -> dict[str, Value]:
+def _shadertoy_values(channels: Sequence[str] = ()) -> dict[str, Value]:
     return {
         name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN), wit=_FIRST_FRAME.get(name))
-        for name, ty in T.SHADERTOY_TYPES.items()
+        for name, ty in T.shadertoy_types(channels).items()
     }
 
 
@@ -530,7 +532,7 @@ def semantic_model(ctx: LintContext) -> Model:
     if model is None:
         if ctx.tree is None:
             raise ValueError("semantic_model needs a parsed file")
-        model = ctx.cache["model"] = Model(ctx.tree)
+        model = ctx.cache["model"] = Model(ctx.tree, ctx.tab.channels)
     return model
 
 

@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 from functools import lru_cache
 
 from glint.compiler.glsl.keywords import words
-from glint.compiler.target.shadertoy import UNIFORMS
+from glint.compiler.target.shadertoy import CHANNEL_KINDS, UNIFORMS
 
 Type = str | None
 
@@ -24,6 +24,14 @@ SHADERTOY_TYPES.update(
     {"iChannelTime": "float[4]", "iChannelResolution": "vec3[4]", "gl_FragCoord": "vec4",
      "gl_FrontFacing": "bool", "gl_PointCoord": "vec2", "gl_FragDepth": "float"}
 )  # fmt: skip
+
+
+def shadertoy_types(channels: Sequence[str] = ()) -> dict[str, str]:
+    """SHADERTOY_TYPES with iChannelN typed for what it is bound to ("2d", "cube", "3d")."""
+    types = dict(SHADERTOY_TYPES)
+    for index, kind in enumerate(channels):
+        types[f"iChannel{index}"] = CHANNEL_KINDS[kind]
+    return types
 
 
 @lru_cache(maxsize=4096)  # few distinct types, asked about a million times in the corpus

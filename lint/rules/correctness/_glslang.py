@@ -43,8 +43,8 @@ class GlslangRule(Rule):
         if not ctx.use_glslang or ctx.read_problem:
             return
         for d in ctx.glslang():
-            if d.severity != self.wanted:
-                continue
+            if d.severity != self.wanted or d.file != ctx.file:
+                continue  # another severity, or in the Common tab (reported for that file)
             hint = hint_for(d.message)
             message = f"glslang: {d.message}" + (f" (hint: {hint})" if hint else "")
             line = min(max(d.line, 1), len(ctx.lines))

@@ -48,7 +48,9 @@ class SyntaxError_(Rule):
             return
         if _reserved_word(error.what):
             return  # P007 reports every reserved word, parsed or not: one finding per token
-        line = min(max(error.line, 1), len(ctx.lines))  # the parser's line is the physical one
+        line = min(ctx.file_line(error.line), len(ctx.lines))  # the parser's: the physical one
+        if line < 1:
+            return  # in the Common tab's code: reported when that file is linted
         # glslang's error on the same line says it (C001), unless C001 is not selected: then
         # this is the only finding that the file does not compile
         glslang_says = ctx.use_glslang and ctx.reports_glslang_errors

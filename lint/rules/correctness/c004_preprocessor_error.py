@@ -45,6 +45,8 @@ class PreprocessorProblem(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         error = ctx.front_end_error
         if isinstance(error, PreprocessorError) and not ctx.read_problem:
-            line = min(max(error.physical_line, 1), len(ctx.lines))  # not moved by #line
+            line = min(ctx.file_line(error.physical_line), len(ctx.lines))  # not moved by #line
+            if line < 1:
+                return  # in the Common tab's code: reported when that file is linted
             span = (line, error.column, line, error.column + 1)
             yield self.report(ctx, span, error.what)

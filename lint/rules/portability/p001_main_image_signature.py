@@ -47,6 +47,8 @@ class MainImageSignature(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
+        if ctx.tab.is_common:
+            return  # a Common tab has no mainImage: ShaderToy gives it a `main` of its own
         protos = function_prototypes(ctx.tree)
         names = {str(p.children[1]) for p in protos}
         if "main" in names or is_complete(ctx.text):

@@ -68,7 +68,9 @@ class ReservedWord(Rule):
             for tok in tokenize(lines[number - 1]):
                 if tok.kind != "ident" or tok.text not in RESERVED_WORDS:
                     continue
-                line = ctx.pre.locate(number).line
+                line = ctx.file_line(number)
+                if line < 1:
+                    break  # on the Common tab's lines in front of the file
                 column = tok.col
                 if number in ctx.pre.expansions:  # columns moved: find it in the user's line
                     found = re.search(rf"\b{tok.text}\b", ctx.lines[line - 1]) if (
