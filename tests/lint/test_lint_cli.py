@@ -479,7 +479,7 @@ def test_a_configuration_that_leaves_no_rule_is_a_usage_error(
                                               "ignore C (--ignore)"),
         (["--ignore", "ALL"], "no rule is left to run: select DEFAULT (the default), "
                               "ignore ALL (--ignore)"),
-        (["--select", "N0", "--ignore", "N00"], "no rule is left to run"),
+        (["--select", "N001", "--ignore", "N001"], "no rule is left to run"),
         (["--select", "C003,Q1"], "glint: --select: unknown rule code or prefix 'Q1'"),
         (["--ignore", "N001,XY"], "glint: --ignore: unknown rule code or prefix 'XY'"),
         (["--select", "P9"], "glint: --select: unknown rule code or prefix 'P9'"),
