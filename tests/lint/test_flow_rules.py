@@ -157,9 +157,9 @@ def test_c103_loop_that_may_not_run() -> None:
     assert found(image(body)) == [("C103", 4)]
 
 
-def test_c103_out_parameter_read_first() -> None:
+def test_c104_out_parameter_read_first() -> None:
     head = "void f(out float o, float k) { o += k; }\n"
-    assert found(image("float x; f(x, 1.0); fragColor = vec4(x);", head)) == [("C103", 1)]
+    assert found(image("float x; f(x, 1.0); fragColor = vec4(x);", head)) == [("C104", 1)]
 
 
 def test_c103_short_circuit_writes_do_not_count() -> None:
@@ -184,7 +184,9 @@ def test_c103_short_circuit_writes_do_not_count() -> None:
         "float ip; float f = modf(fragCoord.x, ip); fragColor = vec4(ip + f);",
         "float d; elsewhere(d); fragColor = vec4(d);",  # not in this file: unsure, so quiet
         "float w[3]; w[0] = 1.0; fragColor = vec4(w[2]);",  # arrays: any write counts
-        "Hit h; h.t = 1.0; fragColor = vec4(h.t, h.id, 0.0, 1.0);",  # structs too
+        "Hit h; h.t = 1.0; h.id = 2.0; fragColor = vec4(h.t, h.id, 0.0, 1.0);",
+        "Hit h; h = Hit(1.0, 2.0); fragColor = vec4(h.t, h.id, 0.0, 1.0);",
+        "Hit h; h.t = 1.0; fragColor = vec4(h.t);",  # the member read is written
         "float w[3]; int n = w.length(); fragColor = vec4(float(n));",
         "mat2 m; m[0] = vec2(1.0); m[1] = vec2(0.0); fragColor = vec4(m[0], m[1]);",
         "float a, b; a = b = 1.0; fragColor = vec4(a + b);",
