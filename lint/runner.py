@@ -60,7 +60,7 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
     ctx = LintContext(file=file, text=text, target=options.target, use_glslang=options.glslang)
     ctx.reports_glslang_errors = options.glslang and options.enabled("C001", file)
     try:
-        ctx.pre = preprocess(text, file)
+        ctx.pre = preprocess(text, file, lenient=True)  # C004 reports what it went past
     except InputError as exc:
         ctx.front_end_error = exc
         return ctx

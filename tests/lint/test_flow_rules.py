@@ -313,3 +313,9 @@ def test_colour_written_on_one_path_is_not_called_never_written() -> None:
     found = lint_source(text, "x.glsl", Options(select=["C101"], glslang=False))
     assert [f.code for f in found] == ["C101"]
     assert "not written on every path" in found[0].message
+
+
+def test_a_file_testing_a_macro_it_does_not_define_is_still_analysed() -> None:
+    body = "float d;\n#if CACHE > 0\nd = 1.0;\n#endif\nfragColor = vec4(d);"
+    findings = lint_source(image(body), "x.glsl", Options(select=["C004", "C103"], glslang=False))
+    assert [(f.code, f.line) for f in findings] == [("C004", 3), ("C103", 6)]

@@ -44,7 +44,14 @@ class PreprocessorProblem(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         error = ctx.front_end_error
-        if isinstance(error, PreprocessorError) and not ctx.read_problem:
+        if ctx.read_problem:
+            return
+        # what the lenient preprocessor went past (an undefined name in `#if`), then what
+        # stopped it
+        errors = list(ctx.pre.problems) if ctx.pre is not None else []
+        if isinstance(error, PreprocessorError):
+            errors.append(error)
+        for error in errors:
             line = min(max(error.physical_line, 1), len(ctx.lines))  # not moved by #line
             span = (line, error.column, line, error.column + 1)
             yield self.report(ctx, span, error.what)
