@@ -52,8 +52,8 @@ _SHORT_CIRCUIT = ("&&", "||", "^^")
 # Builtins with `out` parameters in GLSL ES 3.00, by position.
 _BUILTIN_QUALIFIERS: dict[str, tuple[str, ...]] = {"modf": ("in", "out")}
 _MAX_FIELDS = 30  # struct members tracked one by one; a larger struct is tracked as a whole
-# A chain of at least this many comparisons of one value (`if (n == 0) ... if (n == 1) ...`,
-# `t < t1 ... else if (t < t2) ...`) is a case analysis its author meant to be exhaustive.
+# A chain of at least this many comparisons of one value (`t < t1 ... else if (t < t2) ...`),
+# or two `==` tests of ids, is a case analysis its author meant to be exhaustive.
 _CASES = 3
 _COMPARISONS = ("<", "<=", ">", ">=", "==")
 
@@ -75,8 +75,9 @@ class Var:
         return (1 << self.width) - 1
 
 
-# An open condition around a statement: (id of the condition, the names it reads, the branch)
-Guard = tuple[int, frozenset[str], Node]
+# An open condition around a statement: (id of the condition, the names it reads, the branch,
+# the values it tests: `hit`, `idObj` of `idObj == 1`, `fragCoord.x` of `fragCoord.x > 1.`)
+Guard = tuple[int, frozenset[str], Node, frozenset[str]]
 
 
 @dataclass
@@ -376,7 +377,8 @@ class _Analyzer:
         conditions read, or the write's branch also sets a name those conditions test (a flag,
         the running minimum that a sentinel test checks)."""
         own = {guard[0] for guard in read.guards}
-        tested = frozenset().union(*(g[1] for g in read.guards if g[0] in own))
+        tested = frozenset().union(*(g[1] for g in read.guards))
+        values = frozenset().union(*(g[3] for g in read.guards))
         if not tested:
             return False
         for guards, branch in self.writes.get(id(read.var), []):
@@ -385,7 +387,7 @@ class _Analyzer:
                 continue  # the write is under the read's conditions: it does not cover it
             if branch is not None and self.assigned(branch) & tested:
                 return True
-            if all(g[1] & tested for g in extra):
+            if all(g[3] & values for g in extra):
                 return True
         return False
 
@@ -402,9 +404,39 @@ class _Analyzer:
             self.assigned_cache[key] = frozenset(names)
         return self.assigned_cache[key]
 
+    def guard(self, cond: Node, branch: Node) -> Guard:
+        return (id(cond), frozenset(names_in(cond)), branch, frozenset(self.tested(cond)))
+
+    def tested(self, cond: Node) -> Iterable[str]:
+        """The source text of the values a condition tests: each side of a comparison that is
+        not a literal, each operand of `&&`, `||` and `!` that is no comparison."""
+        stack = [cond]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "!":
+                stack.append(node.children[1])
+            elif isinstance(node, Tree) and node.data == "binary":
+                op = str(node.children[1])
+                if op in ("&&", "||", "^^"):
+                    stack += [node.children[0], node.children[2]]
+                elif op in _COMPARISONS or op == "!=":
+                    sides = (node.children[0], node.children[2])
+                    yield from (self.source(side) for side in sides if not _is_literal(side))
+                else:
+                    yield self.source(node)
+            elif not _is_literal(node):
+                yield self.source(node)
+
+    def source(self, node: Node) -> str:
+        if isinstance(node, Token):
+            return str(node)
+        if node.meta.empty:
+            return ""
+        return "".join(self.text[node.meta.start_pos : node.meta.end_pos].split())
+
     def guarded(self, cond: Node, branch: Node, state: State) -> State | None:
         """A branch under a condition: its writes and reads remember the condition."""
-        self.guards.append((id(cond), frozenset(names_in(cond)), branch))
+        self.guards.append(self.guard(cond, branch))
         try:
             return self.nested(branch, state)
         finally:
@@ -470,7 +502,7 @@ class _Analyzer:
                     # `else if`: an if declares nothing, so it needs no scope of its own; one
                     # per link made a long else-if chain as deep in scopes as it is long, and
                     # every name lookup walked them all (quadratic in the chain's length).
-                    self.guards.append((id(cond), frozenset(names_in(cond)), otherwise))
+                    self.guards.append(self.guard(cond, otherwise))
                     try:
                         other = self.statement(otherwise, no)
                     finally:
@@ -501,8 +533,7 @@ class _Analyzer:
             if not (isinstance(last, Tree) and last.data == "if_statement"):
                 break
             links.append(last)
-        exhaustive = len(links) >= _CASES and len(links[-1].children) == 2
-        exhaustive = exhaustive and _one_value([link.children[0] for link in links])
+        exhaustive = len(links[-1].children) == 2 and _one_value([c.children[0] for c in links])
         for link in links:
             self.chains[id(link)] = exhaustive and link is links[-1]
 
@@ -722,7 +753,7 @@ class _Analyzer:
             on_true, on_false = self.condition(cond, state)
             a = dict(on_true) if on_true is not None else None
             b = dict(on_false) if on_false is not None else None
-            self.guards.append((id(cond), frozenset(names_in(cond)), node))
+            self.guards.append(self.guard(cond, node))
             try:
                 if a is not None:
                     self.expr(yes, a)
@@ -967,14 +998,34 @@ class _Analyzer:
 
 
 def _compared(cond: Node) -> tuple[Node, ...]:
-    """The two sides of a comparison (`n == 2`, `t < t1`), none for anything else."""
-    if isinstance(cond, Tree) and cond.data == "binary" and str(cond.children[1]) in _COMPARISONS:
+    """The sides of a comparison (`n == 2`, `t < t1`), or those that every comparison of an
+    `||`/`&&` of comparisons shares (`id == 1 || id == 2` -> id); none for anything else."""
+    if not (isinstance(cond, Tree) and cond.data == "binary"):
+        return ()
+    op = str(cond.children[1])
+    if op in _COMPARISONS:
         return cond.children[0], cond.children[2]
+    if op in ("||", "&&"):
+        left, right = _compared(cond.children[0]), _compared(cond.children[2])
+        return tuple(a for a in left if any(same_expression(a, b) for b in right))
     return ()
 
 
+def _equalities(cond: Node) -> bool:
+    """Whether a condition is `==` tests joined by `||` (`id == 1 || id == 2`)."""
+    if not (isinstance(cond, Tree) and cond.data == "binary"):
+        return False
+    op = str(cond.children[1])
+    if op == "||":
+        return _equalities(cond.children[0]) and _equalities(cond.children[2])
+    return op == "=="
+
+
 def _one_value(conds: list[Node]) -> bool:
-    """Whether each condition compares one same value (a side shared by all of them)."""
+    """Whether the conditions make a case analysis of one value: each compares a side shared by
+    all of them, at least `_CASES` of them, or two when they test ids (`==` only)."""
+    if len(conds) < (2 if all(map(_equalities, conds)) else _CASES):
+        return False
     first = _compared(conds[0])
     return any(
         all(any(same_expression(side, value) for side in _compared(c)) for c in conds[1:])
@@ -989,19 +1040,18 @@ def _is_literal(node: Node) -> bool:
 
 def _case_run(items: list[Node], start: int) -> int:
     """How many statements from `start` are `if (v == c) ...` without else, for one value v
-    (and each c a literal or a name): a case analysis when there are at least `_CASES`."""
+    (and each c a literal or a name): a case analysis of ids when there are at least two."""
     conds: list[Node] = []
     for item in items[start:]:
         if not (isinstance(item, Tree) and item.data == "if_statement" and len(item.children) == 2):
             break
         cond = item.children[0]
-        sides = _compared(cond)
-        if not sides or str(cond.children[1]) != "==":  # type: ignore[union-attr]
+        if not (_compared(cond) and _equalities(cond)):
             break
         if conds and not _one_value([conds[0], cond]):
             break
         conds.append(cond)
-    if len(conds) < _CASES:
+    if len(conds) < 2:
         return 0
     # the value must stay the same through the cases
     values = [side for side in _compared(conds[0]) if not _is_literal(side)]
