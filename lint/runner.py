@@ -66,7 +66,10 @@ def build_context(text: str, file: str, options: Options, tab: Tab | None = None
                       line_offset=common.count("\n"), use_glslang=options.glslang)  # fmt: skip
     ctx.reports_glslang_errors = options.glslang and options.enabled("C001", file)
     try:
-        ctx.pre = preprocess(common + text, file, predefined_macros(options.target, common + text))
+        # lenient: C004 reports an undefined macro in #if, the rest of the file is still linted
+        ctx.pre = preprocess(
+            common + text, file, predefined_macros(options.target, common + text), lenient=True
+        )
     except InputError as exc:
         ctx.front_end_error = exc
         return ctx

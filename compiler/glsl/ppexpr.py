@@ -13,6 +13,8 @@ an unevaluated operand is an error but bad syntax: a division by zero there is n
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from glint.compiler.glsl.pptokens import Tok
 
 
@@ -32,11 +34,13 @@ _BINARY: dict[str, int] = {
 }  # fmt: skip
 
 
-def evaluate(tokens: list[Tok]) -> int:
-    """Value of an expression given as significant (non-whitespace) tokens."""
+def evaluate(tokens: list[Tok], undefined: Callable[[Tok], None] | None = None) -> int:
+    """Value of an expression given as significant (non-whitespace) tokens. An undefined name is
+    an error (GLSL ES 3.00 §3.4), unless `undefined` is given: then it is told of the name and
+    the name counts as 0, as in C."""
     if not tokens:
         raise ExprError("missing expression")
-    parser = _Parser(tokens)
+    parser = _Parser(tokens, undefined)
     value = parser.binary(1)
     if parser.pos < len(tokens):
         tok = tokens[parser.pos]
@@ -66,8 +70,9 @@ def _truncating_div(a: int, b: int, op: str, col: int) -> int:
 class _Parser:
     """Precedence-climbing evaluator over a token list."""
 
-    def __init__(self, tokens: list[Tok]) -> None:
+    def __init__(self, tokens: list[Tok], undefined: Callable[[Tok], None] | None = None) -> None:
         self.tokens = tokens
+        self.undefined = undefined
         self.pos = 0
         self.unevaluated = 0  # > 0 inside an operand that `&&` or `||` short-circuits
 
@@ -107,6 +112,9 @@ class _Parser:
             return _int_literal(tok)
         if tok.kind == "ident":
             if self.unevaluated:
+                return 0
+            if self.undefined is not None:
+                self.undefined(tok)
                 return 0
             raise ExprError(f"undefined macro '{tok.text}' in expression", tok.col)
         raise ExprError(f"unexpected '{tok.text}' in expression", tok.col)

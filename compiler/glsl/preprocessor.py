@@ -37,6 +37,8 @@ class Preprocessed:
     version: str | None = None  # e.g. "300 es"
     extensions: list[str] = field(default_factory=list)  # names from #extension
     expansions: dict[int, set[str]] = field(default_factory=dict)  # output line -> macros used
+    # with `lenient`: the errors it went past (an undefined name in `#if`, taken as 0)
+    problems: list[PreprocessorError] = field(default_factory=list)
 
     def locate(self, line: int) -> SourceLocation:
         """Origin of a 1-based output line (clamped, so a parser's EOF position maps too)."""
@@ -84,15 +86,23 @@ class _Branch:
 
 
 def preprocess(
-    source: str, filename: str = "<input>", predefined: dict[str, str] | None = None
+    source: str,
+    filename: str = "<input>",
+    predefined: dict[str, str] | None = None,
+    lenient: bool = False,
 ) -> Preprocessed:
-    """Preprocess GLSL source; raise PreprocessorError with the position of the first problem."""
-    return _Preprocessor(filename, predefined or {}).run(source)
+    """Preprocess GLSL source; raise PreprocessorError with the position of the first problem.
+    `lenient` (the linter): an undefined name in `#if` counts as 0, as in C, and is kept in
+    `problems` instead of stopping, since a ShaderToy pass often tests a macro that its Common
+    tab defines, and the rest of the file can still be checked."""
+    return _Preprocessor(filename, predefined or {}, lenient).run(source)
 
 
 class _Preprocessor:
-    def __init__(self, filename: str, predefined: dict[str, str]) -> None:
+    def __init__(self, filename: str, predefined: dict[str, str], lenient: bool = False) -> None:
         self.filename = filename
+        self.lenient = lenient
+        self.problems: list[PreprocessorError] = []
         self.file = filename
         self.offset = 0  # reported line = physical line + offset, moved by #line
         self.index = 0  # 0-based physical line being processed
@@ -159,6 +169,7 @@ class _Preprocessor:
             version=self.version,
             extensions=self.extensions,
             expansions=expansions,
+            problems=self.problems,
         )
 
     def _expand_line(self, lines: list[str], i: int) -> tuple[int, str]:
@@ -275,8 +286,14 @@ class _Preprocessor:
                 raise self.error(tok.col, f"#{name} expects one macro name")
             return (args[0].text in self.macros) == (name == "ifdef")
         resolved = self._resolve_defined(args, tok)
+
+        def undefined(ident: Tok) -> None:
+            what = f"#{name}: undefined macro '{ident.text}' in expression"
+            self.problems.append(self.error(ident.col or tok.col, what))
+
         try:
-            return evaluate(significant(self.expander.expand(resolved))) != 0
+            tokens = significant(self.expander.expand(resolved))
+            return evaluate(tokens, undefined if self.lenient else None) != 0
         except ExprError as exc:
             raise self.error(exc.col or tok.col, f"#{name}: {exc}") from None
         except MacroCallError as exc:

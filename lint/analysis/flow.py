@@ -36,14 +36,26 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk_kind
 from ..context import tokens as tokens_of
+from .declarations import struct_members
 from .model import Model, condition_truth, semantic_model
-from .syntax import parameter_parts, prototype_parts, same_expression, type_of_declaration
+from .syntax import (
+    names_in,
+    parameter_parts,
+    prototype_parts,
+    same_expression,
+    type_of_declaration,
+)
 
 State = dict[int, int]  # id of a Var -> mask of written components
 SWIZZLE_SETS = ("xyzw", "rgba", "stpq")
 _SHORT_CIRCUIT = ("&&", "||", "^^")
 # Builtins with `out` parameters in GLSL ES 3.00, by position.
 _BUILTIN_QUALIFIERS: dict[str, tuple[str, ...]] = {"modf": ("in", "out")}
+_MAX_FIELDS = 30  # struct members tracked one by one; a larger struct is tracked as a whole
+# A chain of at least this many comparisons of one value (`t < t1 ... else if (t < t2) ...`),
+# or two `==` tests of ids, is a case analysis its author meant to be exhaustive.
+_CASES = 3
+_COMPARISONS = ("<", "<=", ">", ">=", "==")
 
 
 @dataclass(eq=False)
@@ -52,12 +64,20 @@ class Var:
 
     name: str
     token: Token  # its name where declared
-    width: int  # components tracked: 2-4 for vectors, 1 for anything else
-    kind: Literal["local", "out", "inout"]  # inout: tracked only for the function's summary
+    width: int  # components tracked: 2-4 for vectors, a struct's members, else 1
+    # inout, and in for a struct: tracked only for the function's summary
+    kind: Literal["local", "out", "inout", "in"]
+    fields: tuple[str, ...] = ()  # a struct's members, one component each
+    depth: int = 0  # how many guards are open where it is declared
 
     @property
     def full(self) -> int:
         return (1 << self.width) - 1
+
+
+# An open condition around a statement: (id of the condition, the names it reads, the branch,
+# the values it tests: `hit`, `idObj` of `idObj == 1`, `fragCoord.x` of `fragCoord.x > 1.`)
+Guard = tuple[int, frozenset[str], Node, frozenset[str]]
 
 
 @dataclass
@@ -67,6 +87,13 @@ class Read:
     var: Var
     node: Node
     missing: int  # mask of the components that may be unwritten
+    guards: tuple[Guard, ...] = ()  # the conditions it sits under, inside the variable's scope
+    # a read through a call (`shade(s)` where shade reads `s.m`): component -> the callee's read
+    origins: dict[int, Node] = field(default_factory=dict)
+    # the conditions it sits under are tied to those of some write (`if (hit) n = ...;` then
+    # `if (hit) use(n)`, `if (t < tmin) { tmin = t; n = ...; }` then `if (tmin < 1e9) use(n)`):
+    # the path that skips the write is one the author ruled out
+    correlated: bool = False
 
 
 @dataclass
@@ -82,14 +109,18 @@ class FunctionFlow:
     name: str
     definition: Tree
     outs: list[Var]  # the tracked `out` parameters, in order
+    returns: str = "void"  # the return type
     reads: list[Read] = field(default_factory=list)
     exits: list[Exit] = field(default_factory=list)
-    # per parameter position: for an `inout` one, the mask of its components the function may
-    # read before writing them (0: it only writes it); None for the other parameters
+    # per parameter position: for an `inout` one (or an `in` struct), the mask of its
+    # components the function may read before writing them (0: it only writes it); None for
+    # the other parameters
     inout_reads: list[int | None] = field(default_factory=list)
+    # per parameter position, as inout_reads: component -> the read that reads it first
+    origins: list[dict[int, Node] | None] = field(default_factory=list)
 
 
-Summaries = dict[tuple[str, int], "list[int | None] | None"]  # None: overloads, no summary
+Summaries = dict[tuple[str, int], "FunctionFlow | None"]  # None: overloads, no summary
 
 
 def function_flows(ctx: LintContext) -> list[FunctionFlow]:
@@ -102,23 +133,33 @@ def function_flows(ctx: LintContext) -> list[FunctionFlow]:
             consts = _const_ints(ctx.tree)
             model = _Facts(ctx)
             summaries: Summaries = {}
+            structs = {
+                name: tuple(members)
+                for name, members in struct_members(walk_kind(ctx.tree, "struct_specifier")).items()
+                if len(members) <= _MAX_FIELDS
+            }
             for node in ctx.tree.children:
                 if isinstance(node, Tree) and node.data == "function_definition":
                     analyzer = _Analyzer(signatures, consts, ctx.pre.text, model, summaries)
+                    analyzer.structs = structs
                     flow = analyzer.function(node)
                     cached.append(flow)
                     # functions are defined before the calls that use the summary (no
                     # recursion in GLSL); overloads of one arity share no summary
                     key = (flow.name, len(flow.inout_reads))
-                    summaries[key] = None if key in summaries else flow.inout_reads
+                    summaries[key] = None if key in summaries else flow
         ctx.cache["flow"] = cached
     return cached
 
 
 def mask_names(var: Var, mask: int) -> str:
-    """`.xyz`-style names of the components in `mask` ("" for the whole variable)."""
+    """`.xyz`-style names of the components in `mask` ("" for the whole variable); a struct's
+    members by name (`.m`, `.{m, d}`)."""
     if var.width == 1 or mask == var.full:
         return ""
+    if var.fields:
+        picked = [name for i, name in enumerate(var.fields) if mask >> i & 1]
+        return "." + picked[0] if len(picked) == 1 else ".{" + ", ".join(picked) + "}"
     return "." + "".join("xyzw"[i] for i in range(var.width) if mask >> i & 1)
 
 
@@ -268,7 +309,14 @@ class _Analyzer:
         self.text = text
         self.model = model
         self.summaries = summaries if summaries is not None else {}
-        self.inout_position: dict[int, int] = {}  # id of a tracked inout parameter -> position
+        self.structs: dict[str, tuple[str, ...]] = {}  # struct name -> its members
+        # id of a tracked inout (or in struct) parameter -> its position
+        self.inout_position: dict[int, int] = {}
+        self.guards: list[Guard] = []  # the conditions around the statement analysed
+        # id of a tracked variable -> (the guards, the innermost branch) of each write of it
+        self.writes: dict[int, list[tuple[tuple[Guard, ...], Node | None]]] = {}
+        self.assigned_cache: dict[int, frozenset[str]] = {}  # id of a branch -> names it assigns
+        self.chains: dict[int, bool] = {}  # id of an else-if link -> whether its chain is a case
         # counters of loops analysed in two passes: (name, start range, first iteration?)
         self.counters: list[tuple[str, tuple[float, float] | None, bool]] = []
         self.scopes: list[dict[str, Var | None]] = []  # None: a name that is not tracked
@@ -280,8 +328,8 @@ class _Analyzer:
 
     def function(self, node: Tree) -> FunctionFlow:
         proto, body = node.children[0], node.children[1]
-        _, name, params = prototype_parts(proto)  # type: ignore[arg-type]
-        flow = FunctionFlow(str(name), node, [])
+        returns, name, params = prototype_parts(proto)  # type: ignore[arg-type]
+        flow = FunctionFlow(str(name), node, [], returns)
         self.flow = flow
         self.scopes = [{}]
         state: State = {}
@@ -289,14 +337,18 @@ class _Analyzer:
         if len(parts) == 1 and parts[0][:2] == ("in", "void") and parts[0][3] is None:
             parts = []  # `f(void)`
         flow.inout_reads = [None] * len(parts)
+        flow.origins = [None] * len(parts)
         for position, (qualifier, type_name, is_array, pname) in enumerate(parts):
-            if qualifier == "inout":
+            width, fields = self.shape(type_name, is_array)
+            # an `in` struct: which of its members the function reads, for its callers
+            summarised = qualifier == "inout" or (qualifier == "in" and bool(fields))
+            if summarised:
                 flow.inout_reads[position] = 0
+                flow.origins[position] = {}
             if pname is None:
                 continue
-            if qualifier in ("out", "inout"):
-                width = 1 if is_array else vector_width(type_name)
-                var = Var(str(pname), pname, width, qualifier)  # type: ignore[arg-type]
+            if qualifier == "out" or summarised:
+                var = Var(str(pname), pname, width, qualifier, fields)  # type: ignore[arg-type]
                 if qualifier == "out":
                     flow.outs.append(var)
                 else:
@@ -308,17 +360,116 @@ class _Analyzer:
         end = self.block(body.children, state)  # type: ignore[union-attr]
         if end is not None:
             flow.exits.append(Exit(None, end))
+        for read in flow.reads:
+            read.correlated = self.correlated(read)
         return flow
+
+    def shape(self, type_name: str, is_array: bool) -> tuple[int, tuple[str, ...]]:
+        """(components tracked, struct members) of a variable of this type."""
+        if is_array:
+            return 1, ()
+        fields = self.structs.get(type_name, ())
+        return (len(fields), fields) if fields else (vector_width(type_name), ())
+
+    def correlated(self, read: Read) -> bool:
+        """Whether some write of the variable is tied to the conditions the read sits under:
+        each condition that guards the write but not the read reads a name the read's own
+        conditions read, or the write's branch also sets a name those conditions test (a flag,
+        the running minimum that a sentinel test checks)."""
+        own = {guard[0] for guard in read.guards}
+        tested = frozenset().union(*(g[1] for g in read.guards))
+        values = frozenset().union(*(g[3] for g in read.guards))
+        if not tested:
+            return False
+        for guards, branch in self.writes.get(id(read.var), []):
+            extra = [g for g in guards if g[0] not in own]
+            if not extra:
+                continue  # the write is under the read's conditions: it does not cover it
+            if branch is not None and self.assigned(branch) & tested:
+                return True
+            if all(g[3] & values for g in extra):
+                return True
+        return False
+
+    def assigned(self, branch: Node) -> frozenset[str]:
+        """The names a branch may assign (computed once per branch)."""
+        key = id(branch)
+        if key not in self.assigned_cache:
+            names: set[str] = set()
+            for sub in walk_kind(branch, "assignment", "prefix", "postfix"):
+                target = sub.children[1] if sub.data == "prefix" else sub.children[0]
+                root = _root(target)
+                if root is not None:
+                    names.add(str(root.children[0]))
+            self.assigned_cache[key] = frozenset(names)
+        return self.assigned_cache[key]
+
+    def guard(self, cond: Node, branch: Node) -> Guard:
+        return (id(cond), frozenset(names_in(cond)), branch, frozenset(self.tested(cond)))
+
+    def tested(self, cond: Node) -> Iterable[str]:
+        """The source text of the values a condition tests: each side of a comparison that is
+        not a literal, each operand of `&&`, `||` and `!` that is no comparison."""
+        stack = [cond]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "!":
+                stack.append(node.children[1])
+            elif isinstance(node, Tree) and node.data == "binary":
+                op = str(node.children[1])
+                if op in ("&&", "||", "^^"):
+                    stack += [node.children[0], node.children[2]]
+                elif op in _COMPARISONS or op == "!=":
+                    sides = (node.children[0], node.children[2])
+                    yield from (self.source(side) for side in sides if not _is_literal(side))
+                else:
+                    yield self.source(node)
+            elif not _is_literal(node):
+                yield self.source(node)
+
+    def source(self, node: Node) -> str:
+        if isinstance(node, Token):
+            return str(node)
+        if node.meta.empty:
+            return ""
+        return "".join(self.text[node.meta.start_pos : node.meta.end_pos].split())
+
+    def guarded(self, cond: Node, branch: Node, state: State) -> State | None:
+        """A branch under a condition: its writes and reads remember the condition."""
+        self.guards.append(self.guard(cond, branch))
+        try:
+            return self.nested(branch, state)
+        finally:
+            self.guards.pop()
 
     def block(self, items: list[Node], state: State | None) -> State | None:
         """A statement list in a scope of its own; iterative, so long bodies are fine."""
         self.scopes.append({})
-        for item in items:
+        index = 0
+        while index < len(items):
             if state is None:
                 break  # the rest is unreachable and not analysed
-            state = self.statement(item, state)
+            run = _case_run(items, index)
+            if run > 1:
+                state = self.cases(items[index : index + run], state)
+                index += run
+                continue
+            state = self.statement(items[index], state)
+            index += 1
         self.scopes.pop()
         return state
+
+    def cases(self, ifs: list[Node], state: State) -> State | None:
+        """`if (n == 0) ...; if (n == 1) ...; if (n == 2) ...;`: a case analysis, as a switch
+        over the cases it names (one runs, from the state before them all)."""
+        ends: list[State | None] = []
+        for node in ifs:
+            assert isinstance(node, Tree)
+            self.expr(node.children[0], state)
+        for node in ifs:
+            assert isinstance(node, Tree)
+            ends.append(self.guarded(node.children[0], node.children[1], dict(state)))
+        return _join(ends)
 
     def nested(self, node: Node, state: State) -> State | None:
         """A statement that forms a scope of its own (an if branch, a loop body)."""
@@ -339,8 +490,11 @@ class _Analyzer:
             self.expr(node.children[0], state)
             return state
         if kind == "if_statement":
-            yes, no = self.condition(node.children[0], state)
-            then = self.nested(node.children[1], yes) if yes is not None else None
+            cond = node.children[0]
+            if id(node) not in self.chains:
+                self.mark_chain(node)
+            yes, no = self.condition(cond, state)
+            then = self.guarded(cond, node.children[1], yes) if yes is not None else None
             other = no
             if len(node.children) > 2 and no is not None:
                 otherwise = node.children[2]
@@ -348,9 +502,15 @@ class _Analyzer:
                     # `else if`: an if declares nothing, so it needs no scope of its own; one
                     # per link made a long else-if chain as deep in scopes as it is long, and
                     # every name lookup walked them all (quadratic in the chain's length).
-                    other = self.statement(otherwise, no)
+                    self.guards.append(self.guard(cond, otherwise))
+                    try:
+                        other = self.statement(otherwise, no)
+                    finally:
+                        self.guards.pop()
                 else:
-                    other = self.nested(otherwise, no)
+                    other = self.guarded(cond, otherwise, no)
+            elif self.chains[id(node)]:
+                other = None  # the last case of an exhaustive chain: no path skips them all
             return _join([then, other])
         if kind == "for_statement":
             return self.for_loop(node, state)
@@ -363,6 +523,19 @@ class _Analyzer:
         if kind == "jump_statement":
             return self.jump(node, state)
         return state  # empty statements, stray labels
+
+    def mark_chain(self, head: Tree) -> None:
+        """Note each link of an else-if chain, and whether the chain is a case analysis: at
+        least `_CASES` comparisons of one value and no final else."""
+        links = [head]
+        while len(links[-1].children) > 2:
+            last = links[-1].children[2]
+            if not (isinstance(last, Tree) and last.data == "if_statement"):
+                break
+            links.append(last)
+        exhaustive = len(links[-1].children) == 2 and _one_value([c.children[0] for c in links])
+        for link in links:
+            self.chains[id(link)] = exhaustive and link is links[-1]
 
     def declaration(self, decl: Tree, state: State) -> None:
         spec = decl.children[0]
@@ -380,8 +553,8 @@ class _Analyzer:
                 self.expr(init[0], state)  # the name's scope starts after its initialiser
                 self.scopes[-1][str(name)] = None
                 continue
-            width = 1 if is_array else vector_width(type_name)
-            var = Var(str(name), name, width, "local")  # type: ignore[arg-type]
+            width, fields = self.shape(type_name, is_array)
+            var = Var(str(name), name, width, "local", fields, len(self.guards))  # type: ignore[arg-type]
             self.scopes[-1][var.name] = var
             state[id(var)] = 0
 
@@ -580,10 +753,14 @@ class _Analyzer:
             on_true, on_false = self.condition(cond, state)
             a = dict(on_true) if on_true is not None else None
             b = dict(on_false) if on_false is not None else None
-            if a is not None:
-                self.expr(yes, a)
-            if b is not None:
-                self.expr(no, b)
+            self.guards.append(self.guard(cond, node))
+            try:
+                if a is not None:
+                    self.expr(yes, a)
+                if b is not None:
+                    self.expr(no, b)
+            finally:
+                self.guards.pop()
             state.update(_join([a, b]) or {})
         elif kind == "call":
             self.call(node, state)
@@ -688,15 +865,23 @@ class _Analyzer:
         is_name = isinstance(callee, Tree) and callee.data == "variable"
         name = str(callee.children[0]) if is_name else ""  # type: ignore[union-attr]
         qualifiers = self.qualifiers(name, len(args))
-        summary = self.summaries.get((name, len(args))) if name in self.signatures else None
+        callee = self.summaries.get((name, len(args))) if name in self.signatures else None
+        summary = None if callee is None else callee.inout_reads
+        origins = None if callee is None else callee.origins
         written = []
         for position, (arg, qualifier) in enumerate(zip(args, qualifiers, strict=True)):
             lvalue = _root(arg) is not None
-            if qualifier == "in" or not lvalue:
+            part = None if summary is None else summary[position]
+            whole = isinstance(arg, Tree) and arg.data == "variable"
+            if qualifier == "in" and whole and part is not None:
+                # a struct passed in: only the members the callee reads are read
+                self.read(arg, state, part=part, origins=origins[position] if origins else None)
+            elif qualifier == "in" or not lvalue:
                 self.expr(arg, state)
             elif qualifier == "inout":
                 # the callee's summary: which components it may read before writing them
-                self.read(arg, state, part=None if summary is None else summary[position])
+                where = origins[position] if origins else None
+                self.read(arg, state, part=part, origins=where)
                 written.append(arg)
             else:  # out, or a function this file does not define: a write, never a read
                 self.indices(arg, state)
@@ -735,6 +920,12 @@ class _Analyzer:
         for step in reversed(path):
             if comps is None:
                 break
+            if var.fields:
+                # a member, whatever is picked of it after (`s.pos.x` is part of `s.pos`)
+                member = str(step.children[1]) if step.data == "field" else ""
+                in_whole = len(comps) == var.width and member in var.fields
+                comps = (var.fields.index(member),) if in_whole else None
+                break
             if step.data == "field":
                 picked = swizzle(str(step.children[1]), len(comps))
                 comps = None if picked is None else tuple(comps[i] for i in picked)
@@ -744,33 +935,54 @@ class _Analyzer:
                 comps = (comps[index],) if in_range else None  # type: ignore[index]
         return var, comps
 
-    def read(self, node: Node, state: State, indices: bool = True, part: int | None = None) -> None:
+    def read(
+        self,
+        node: Node,
+        state: State,
+        indices: bool = True,
+        part: int | None = None,
+        origins: dict[int, Node] | None = None,
+    ) -> None:
         """Check a read of `node`; `part`: only these of its components (by position in the
-        expression's value: an inout argument whose callee reads `.zw` first)."""
+        expression's value: an inout argument whose callee reads `.zw` first); `origins`: by
+        the same positions, where the callee reads them."""
         if indices:
             self.indices(node, state)
         var, comps = self.access(node)
         if var is None:
             return  # not tracked; `indices` evaluated whatever the chain starts from (`f().x`)
+        where: dict[int, Node] = {}
         if part is not None and comps is not None:
-            comps = tuple(c for i, c in enumerate(comps) if part >> i & 1)
+            picked = [(i, c) for i, c in enumerate(comps) if part >> i & 1]
+            comps = tuple(c for _, c in picked)
+            if origins:
+                where = {c: origins[i] for i, c in picked if i in origins}
         mask = var.full if comps is None else sum(1 << c for c in set(comps))
         if part == 0:
             mask = 0
         missing = mask & ~state.get(id(var), var.full)
-        if missing and var.kind == "inout":  # the function's summary, not a finding
+        if missing and var.kind in ("inout", "in"):  # the function's summary, not a finding
             assert self.flow is not None
             position = self.inout_position[id(var)]
             self.flow.inout_reads[position] = (self.flow.inout_reads[position] or 0) | missing
+            first = self.flow.origins[position]
+            if first is not None:
+                for c in range(var.width):
+                    if missing >> c & 1 and c not in first:
+                        first[c] = where.get(c, node)
         elif missing and id(node) not in self.reported:
             self.reported.add(id(node))
             assert self.flow is not None
-            self.flow.reads.append(Read(var, node, missing))
+            guards = tuple(self.guards[var.depth :])
+            self.flow.reads.append(Read(var, node, missing, guards, where))
         if id(var) in state:
             state[id(var)] |= mask  # report a variable once per path, not at every later read
 
     def write(self, node: Node, state: State) -> None:
         var, comps = self.access(node)
+        if var is not None and id(var) in state and var.kind in ("local", "out"):
+            guards = tuple(self.guards[var.depth :])
+            self.writes.setdefault(id(var), []).append((guards, guards[-1][2] if guards else None))
         if var is not None and id(var) in state:
             # a write the path cannot follow (`a[i] = `, `s.m = `) counts as a whole write
             state[id(var)] |= var.full if comps is None else sum(1 << c for c in set(comps))
@@ -783,6 +995,71 @@ class _Analyzer:
             node = node.children[0]
         if isinstance(node, Tree) and node.data not in ("variable",):
             self.expr(node, state)
+
+
+def _compared(cond: Node) -> tuple[Node, ...]:
+    """The sides of a comparison (`n == 2`, `t < t1`), or those that every comparison of an
+    `||`/`&&` of comparisons shares (`id == 1 || id == 2` -> id); none for anything else."""
+    if not (isinstance(cond, Tree) and cond.data == "binary"):
+        return ()
+    op = str(cond.children[1])
+    if op in _COMPARISONS:
+        return cond.children[0], cond.children[2]
+    if op in ("||", "&&"):
+        left, right = _compared(cond.children[0]), _compared(cond.children[2])
+        return tuple(a for a in left if any(same_expression(a, b) for b in right))
+    return ()
+
+
+def _equalities(cond: Node) -> bool:
+    """Whether a condition is `==` tests joined by `||` (`id == 1 || id == 2`)."""
+    if not (isinstance(cond, Tree) and cond.data == "binary"):
+        return False
+    op = str(cond.children[1])
+    if op == "||":
+        return _equalities(cond.children[0]) and _equalities(cond.children[2])
+    return op == "=="
+
+
+def _one_value(conds: list[Node]) -> bool:
+    """Whether the conditions make a case analysis of one value: each compares a side shared by
+    all of them, at least `_CASES` of them, or two when they test ids (`==` only)."""
+    if len(conds) < (2 if all(map(_equalities, conds)) else _CASES):
+        return False
+    first = _compared(conds[0])
+    return any(
+        all(any(same_expression(side, value) for side in _compared(c)) for c in conds[1:])
+        for value in first
+        if not _is_literal(value)
+    )
+
+
+def _is_literal(node: Node) -> bool:
+    return isinstance(node, Tree) and node.data in ("float_literal", "int_literal", "bool_literal")
+
+
+def _case_run(items: list[Node], start: int) -> int:
+    """How many statements from `start` are `if (v == c) ...` without else, for one value v
+    (and each c a literal or a name): a case analysis of ids when there are at least two."""
+    conds: list[Node] = []
+    for item in items[start:]:
+        if not (isinstance(item, Tree) and item.data == "if_statement" and len(item.children) == 2):
+            break
+        cond = item.children[0]
+        if not (_compared(cond) and _equalities(cond)):
+            break
+        if conds and not _one_value([conds[0], cond]):
+            break
+        conds.append(cond)
+    if len(conds) < 2:
+        return 0
+    # the value must stay the same through the cases
+    values = [side for side in _compared(conds[0]) if not _is_literal(side)]
+    roots = {str(r.children[0]) for r in map(_root, values) if r is not None}
+    bodies = items[start : start + len(conds)]
+    if any(_assigns(body, name) for body in bodies for name in roots):
+        return 0
+    return len(conds)
 
 
 def _root(node: Node) -> Tree | None:

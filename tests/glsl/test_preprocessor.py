@@ -231,3 +231,17 @@ def test_macros_nested_within_the_limits_expand() -> None:
     result = preprocess(_chain(200, "({p}+1)"), "deep.glsl")
     expanded = result.text.splitlines()[-1].replace(" ", "")
     assert expanded == "floaty=" + "(" * 199 + "x" + "+1)" * 199 + ";"
+
+
+def test_lenient_takes_an_undefined_name_in_if_as_zero_and_keeps_the_problem() -> None:
+    # a ShaderToy pass testing a macro its Common tab defines: the linter reads on
+    src = "#if CACHE > 0\nint a;\n#else\nint b;\n#endif\n#if defined(X) && X\nint c;\n#endif\n"
+    result = preprocess(src, "pass.glsl", lenient=True)
+    assert "int b;" in result.text and "int a;" not in result.text
+    assert [(p.line, p.column, p.what) for p in result.problems] == [
+        (1, 5, "#if: undefined macro 'CACHE' in expression")
+    ]
+    with pytest.raises(PreprocessorError, match="undefined macro 'CACHE'"):
+        preprocess(src, "pass.glsl")  # strict for the compiler
+    with pytest.raises(PreprocessorError, match="missing #endif"):
+        preprocess("#if A\n", "pass.glsl", lenient=True)  # only the undefined name is let go

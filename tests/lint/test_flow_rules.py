@@ -157,9 +157,9 @@ def test_c103_loop_that_may_not_run() -> None:
     assert found(image(body)) == [("C103", 4)]
 
 
-def test_c103_out_parameter_read_first() -> None:
+def test_c104_out_parameter_read_first() -> None:
     head = "void f(out float o, float k) { o += k; }\n"
-    assert found(image("float x; f(x, 1.0); fragColor = vec4(x);", head)) == [("C103", 1)]
+    assert found(image("float x; f(x, 1.0); fragColor = vec4(x);", head)) == [("C104", 1)]
 
 
 def test_c103_short_circuit_writes_do_not_count() -> None:
@@ -184,7 +184,9 @@ def test_c103_short_circuit_writes_do_not_count() -> None:
         "float ip; float f = modf(fragCoord.x, ip); fragColor = vec4(ip + f);",
         "float d; elsewhere(d); fragColor = vec4(d);",  # not in this file: unsure, so quiet
         "float w[3]; w[0] = 1.0; fragColor = vec4(w[2]);",  # arrays: any write counts
-        "Hit h; h.t = 1.0; fragColor = vec4(h.t, h.id, 0.0, 1.0);",  # structs too
+        "Hit h; h.t = 1.0; h.id = 2.0; fragColor = vec4(h.t, h.id, 0.0, 1.0);",
+        "Hit h; h = Hit(1.0, 2.0); fragColor = vec4(h.t, h.id, 0.0, 1.0);",
+        "Hit h; h.t = 1.0; fragColor = vec4(h.t);",  # the member read is written
         "float w[3]; int n = w.length(); fragColor = vec4(float(n));",
         "mat2 m; m[0] = vec2(1.0); m[1] = vec2(0.0); fragColor = vec4(m[0], m[1]);",
         "float a, b; a = b = 1.0; fragColor = vec4(a + b);",
@@ -311,3 +313,98 @@ def test_colour_written_on_one_path_is_not_called_never_written() -> None:
     found = lint_source(text, "x.glsl", Options(select=["C101"], glslang=False))
     assert [f.code for f in found] == ["C101"]
     assert "not written on every path" in found[0].message
+
+
+def test_a_file_testing_a_macro_it_does_not_define_is_still_analysed() -> None:
+    body = "float d;\n#if CACHE > 0\nd = 1.0;\n#endif\nfragColor = vec4(d);"
+    findings = lint_source(image(body), "x.glsl", Options(select=["C004", "C103"], glslang=False))
+    assert [(f.code, f.line) for f in findings] == [("C004", 3), ("C103", 6)]
+
+
+# --- issue 26: one finding per variable, tied conditions, case analyses, members, C105 --------
+
+
+def located(text: str) -> list[tuple[str, int, int]]:
+    return [(f.code, f.line, f.column) for f in lint_source(text, "x.glsl", FAST)]
+
+
+def test_c103_one_finding_per_variable_at_the_declaration_when_read_twice() -> None:
+    body = ("vec4 pick;\nif (iMouse.z > 0.) pick = vec4(1.);\n"
+            "if (iMouse.x > 0.) fragColor = pick;\nelse fragColor = pick * 2.;")  # fmt: skip
+    findings = lint_source(image(body), "x.glsl", FAST)
+    assert [(f.code, f.line, f.column) for f in findings] == [("C103", 2, 6)]
+    assert "lines 4 and 5" in findings[0].message and "line 3" in findings[0].message
+    body = "vec4 pick;\nif (iMouse.z > 0.) pick = vec4(1.);\nfragColor = pick;"
+    assert located(image(body)) == [("C103", 4, 13)]  # one read: at the read
+
+
+def test_c103_quiet_where_the_read_is_under_a_condition_tied_to_the_write() -> None:
+    flag = ("fragColor = vec4(0.); vec3 n; bool hit = false;\n"
+            "if (fragCoord.x > 1.) { hit = true; n = vec3(1.); }\n")  # fmt: skip
+    assert found(image(flag + "if (hit) fragColor = vec4(n, 1.);")) == []
+    sentinel = ("fragColor = vec4(0.); vec3 n; float tmin = 1e20;\nfor (int i = 0; i < 4; i++) {\n"
+                "  float t = float(i) - fragCoord.x;\n"
+                "  if (t > 0. && t < tmin) { tmin = t; n = vec3(t); }\n}\n")  # fmt: skip
+    assert found(image(sentinel + "if (tmin < 1e19) fragColor = vec4(n, 1.);")) == []
+    # an unrelated condition at the read does not excuse it
+    assert found(image(flag + "if (fragCoord.y > 1.) fragColor = vec4(n, 1.);")) == [("C103", 4)]
+    assert found(image(sentinel + "fragColor = vec4(n, 1.);")) == [("C103", 7)]
+
+
+def test_c103_case_analyses_of_one_value_are_exhaustive() -> None:
+    ids = "float c; int k = int(fragCoord.x) % 2;\nif (k == 0) c = 1.;\nif (k == 1) c = 2.;\n"
+    assert found(image(ids + "fragColor = vec4(c);")) == []
+    chain = ("float c; float t = fract(iTime);\nif (t < .3) c = 1.;\nelse if (t < .6) c = 2.;\n"
+             "else if (t < 1.) c = 3.;\n")  # fmt: skip
+    assert found(image(chain + "fragColor = vec4(c);")) == []
+    either = "float c;\nif (iMouse.x < 1.) c = 1.;\nelse if (iMouse.y < 1.) c = 2.;\n"
+    assert found(image(either + "fragColor = vec4(c);")) == [("C103", 5)]  # two values
+    # the value changes in a case: not a case analysis
+    moved = (
+        "float c; int k = int(fragCoord.x);\nif (k == 0) { c = 1.; k = 1; }\nif (k == 1) k = 2;\n"
+    )
+    assert found(image(moved + "fragColor = vec4(c);")) == [("C103", 5)]
+
+
+def test_c103_struct_member_read_by_the_callee() -> None:
+    head = ("struct Surf { vec3 n; vec3 tra; };\n"
+            "vec3 shade(in Surf s, float k) {\n  return mix(s.n, s.tra, k);\n}\n")  # fmt: skip
+    body = "Surf s; s.n = vec3(1.);\nfragColor = vec4(shade(s, 0.), 1.);"
+    findings = lint_source(image(body, head), "x.glsl", FAST)
+    assert [(f.code, f.line) for f in findings] == [("C103", 3)]  # at the callee's read
+    assert "`s.tra`" in findings[0].message and "line 7" in findings[0].message
+    body = "Surf s; s.n = vec3(1.); s.tra = vec3(0.);\nfragColor = vec4(shade(s, 0.), 1.);"
+    assert found(image(body, head)) == []
+    head2 = "struct Hit { float t; float id; };\n" \
+            "Hit f(float x) { Hit h; if (x > 0.) h.t = x; return h; }\n"  # fmt: skip
+    src = image("fragColor = vec4(f(fragCoord.x).t);", head2)
+    findings = lint_source(src, "x.glsl", FAST)
+    assert [f.code for f in findings] == ["C103"] and "`h`" in findings[0].message
+
+
+def test_c104_reported_once_per_parameter() -> None:
+    head = "float f(out float n) { n += 1.; n *= 2.; if (n > 1.) n -= 1.; return n; }\n"
+    assert found(image("float x; float y = f(x); fragColor = vec4(x, y, 0., 1.);", head)) == [
+        ("C104", 1)
+    ]
+
+
+@pytest.mark.parametrize(
+    ("head", "reported"),
+    [
+        ("float f(float x) { if (x > 0.) return 1.; }\n", True),
+        ("float f(float x) { for (int i = 0; i < 4; i++) { if (x > 0.) return 1.; } }\n", True),
+        ("float f(float x) { x *= 2.; }\n", True),
+        ("float f(float x) { if (x > 0.) return 1.; else return 2.; }\n", False),
+        ("float f(float x) { for (;;) { if (x > 0.) return 1.; x += 1.; } }\n", False),
+        ("float f(float x) { while (true) { if (x > 0.) return 1.; x += 1.; } }\n", False),
+        ("float f(float x) { if (x > 0.) return 1.; discard; }\n", False),
+        ("float f(float x) { switch (int(x)) { case 0: return 0.; default: return 1.; } }\n",
+         False),
+    ],
+)  # fmt: skip
+def test_c105_missing_return(head: str, reported: bool) -> None:
+    src = image("fragColor = vec4(f(fragCoord.x));", head)
+    assert found(src) == ([("C105", 1)] if reported else [])
+    # a function nobody calls is not reported
+    assert found(image("fragColor = vec4(1.);", head)) == []

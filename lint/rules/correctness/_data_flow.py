@@ -1,10 +1,13 @@
-"""Shared by the data-flow rules (C101-C103): mainImage's `out` colour."""
+"""Shared by the data-flow rules (C101-C105): mainImage's `out` colour, and the reads of one
+variable gathered into one finding."""
 
 from __future__ import annotations
 
 from lark import Tree
 
-from ...analysis.flow import FunctionFlow, Var
+from ...analysis.flow import FunctionFlow, Read, Var
+from ...analysis.syntax import call_args, root_variable
+from ...context import LintContext, walk_kind
 
 
 def main_colour(flow: FunctionFlow) -> Var | None:
@@ -15,3 +18,36 @@ def main_colour(flow: FunctionFlow) -> Var | None:
     first = params[2].children[0] if len(params) > 2 else None  # type: ignore[union-attr]
     out = flow.outs[0]
     return out if isinstance(first, Tree) and out.token in first.children else None
+
+
+def by_variable(reads: list[Read]) -> dict[int, list[Read]]:
+    """The reads of each variable, in the order the analysis met them (one finding each)."""
+    found: dict[int, list[Read]] = {}
+    for read in reads:
+        found.setdefault(id(read.var), []).append(read)
+    return found
+
+
+def write_lines(ctx: LintContext, flow: FunctionFlow, var: Var) -> list[int]:
+    """The lines after its declaration where the function assigns `var` (or passes it to a
+    call that may write it), for the message."""
+    start = var.token.start_pos or 0
+    lines: set[int] = set()
+    for node in walk_kind(flow.definition, "assignment", "prefix", "postfix", "call"):
+        if node.meta.empty or node.meta.start_pos < start:
+            continue
+        if node.data == "call":
+            targets = call_args(node)
+        else:
+            targets = [node.children[1] if node.data == "prefix" else node.children[0]]
+        if any(root_variable(t) == var.name for t in targets):
+            lines.add(ctx.span(node)[0])
+    return sorted(lines)
+
+
+def line_list(lines: list[int], most: int = 4) -> str:
+    """`12`, `12 and 15`, `12, 15, 19 and 3 more`."""
+    words = [str(n) for n in lines[:most]]
+    if len(lines) > most:
+        return ", ".join(words) + f" and {len(lines) - most} more"
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]

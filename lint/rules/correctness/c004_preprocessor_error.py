@@ -44,9 +44,16 @@ class PreprocessorProblem(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         error = ctx.front_end_error
-        if isinstance(error, PreprocessorError) and not ctx.read_problem:
+        if ctx.read_problem:
+            return
+        # what the lenient preprocessor went past (an undefined name in `#if`), then what
+        # stopped it
+        errors = list(ctx.pre.problems) if ctx.pre is not None else []
+        if isinstance(error, PreprocessorError):
+            errors.append(error)
+        for error in errors:
             line = min(ctx.file_line(error.physical_line), len(ctx.lines))  # not moved by #line
             if line < 1:
-                return  # in the Common tab's code: reported when that file is linted
+                continue  # in the Common tab's code: reported when that file is linted
             span = (line, error.column, line, error.column + 1)
             yield self.report(ctx, span, error.what)

@@ -4,18 +4,30 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.flow import function_flows, mask_names
+from ...analysis.flow import FunctionFlow, Read, function_flows, mask_names
 from ...context import LintContext
 from ...finding import Finding
 from .. import Rule, register
-from ._data_flow import main_colour
+from ._data_flow import by_variable, line_list, write_lines
+
+_FIX = "GLSL does not zero local variables: give it a value where it is declared"
 
 
 @register
 class UsedBeforeInitialised(Rule):
-    """Finds a local variable read before it is given a value on some path (declared without an
-    initialiser, assigned only in one branch or in a loop that may not run), and an `out` parameter
-    read before the function writes it.
+    """Finds a local variable read before it is given a value on some path: declared without an
+    initialiser and read at once, assigned only in some branches or in a loop that may not run, or
+    a struct whose member is read (here, or by a function it is passed to) but written only on some
+    paths. One finding per variable: at its read when one read is affected, else at its
+    declaration with the lines that read it; a member that a called function reads is reported
+    there, with the call that passes the struct.
+
+    The analysis follows if/else, loops that may run zero times (or surely run, from their
+    bounds), `return`, `break`, `discard`, calls that write `out` arguments, and vector components
+    through swizzles. It stays quiet where the author ruled the path out: a read under a condition
+    tied to the write's (`if (hit) n = ...;` then `if (hit) use(n)`, or a flag set together with
+    the value), and a case analysis of one value (`if (n == 0) ... if (n == 1) ... if (n == 2)`,
+    or an else-if chain of comparisons of one value) taken as exhaustive.
 
     Why is this bad?
         GLSL does not zero local variables. An uninitialised value is whatever the register held, so
@@ -35,8 +47,8 @@ class UsedBeforeInitialised(Rule):
         No fix: the right initial value depends on what the variable means.
 
     References:
-        - GLSL ES 3.00 spec §6.1.1 (Function Calling Conventions: `out` parameters are not copied
-          in)
+        - GLSL ES 3.00 spec §4.3 (Storage Qualifiers: a local without an initialiser is
+          undefined)
         - CWE-457, Use of Uninitialized Variable
     """
 
@@ -48,21 +60,57 @@ class UsedBeforeInitialised(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         for flow in function_flows(ctx):
-            colour = main_colour(flow)
-            for read in flow.reads:
-                var = read.var
-                if var is colour:
+            reads = [r for r in flow.reads if r.var.kind == "local" and not r.correlated]
+            through = [r for r in reads if r.origins]
+            direct = [r for r in reads if not r.origins]
+            for group in by_variable(direct).values():
+                yield self.variable(ctx, flow, group)
+            yield from self.members(ctx, flow, through)
+
+    def variable(self, ctx: LintContext, flow: FunctionFlow, group: list[Read]) -> Finding:
+        var = group[0].var
+        missing = 0
+        for read in group:
+            missing |= read.missing
+        what = f"`{var.name}{mask_names(var, missing)}`"
+        declared = ctx.span(var.token)[0]
+        first = ctx.span(group[0].node)[0]
+        writes = [n for n in write_lines(ctx, flow, var) if n < first]
+        if not writes:
+            path = f"nothing gives it a value before line {first}"
+        else:
+            path = f"a path can skip the writes on line{'s' if len(writes) > 1 else ''} "
+            path += line_list(writes)
+        if len(group) == 1:
+            message = (
+                f"{what} may be read here before it is given a value (declared without one on "
+                f"line {declared}; {path}); {_FIX}"
+            )
+            return self.report(ctx, group[0].node, message)
+        lines = sorted({ctx.span(r.node)[0] for r in group})
+        message = (
+            f"{what} is declared without a value and may be read before it is given one, on "
+            f"lines {line_list(lines)} ({path}); {_FIX}"
+        )
+        return self.report(ctx, var.token, message)
+
+    def members(self, ctx: LintContext, flow: FunctionFlow, reads: list[Read]) -> Iterator[Finding]:
+        """A struct passed to a function that reads a member the caller may not have written:
+        reported at the callee's read (its first one of the member), once."""
+        for read in reads:
+            for component, origin in sorted(read.origins.items(), key=lambda item: item[0]):
+                if not read.missing >> component & 1:
                     continue
-                what = f"`{var.name}{mask_names(var, read.missing)}`"
-                if var.kind == "out":
-                    message = (
-                        f"out parameter {what} is read before {flow.name} writes it; "
-                        "out parameters start undefined (use `inout` to pass a value in)"
-                    )
-                else:
-                    line = ctx.span(var.token)[0]
-                    message = (
-                        f"{what} may be read before it is given a value (declared without "
-                        f"one on line {line}); GLSL does not zero local variables"
-                    )
-                yield self.report(ctx, read.node, message)
+                key = ("C103-member", id(origin))
+                if key in ctx.cache:
+                    continue
+                ctx.cache[key] = True
+                var = read.var
+                member = var.fields[component] if var.fields else var.name
+                call_line = ctx.span(read.node)[0]
+                message = (
+                    f"`{ctx.node_text(origin)}` may be unset here: {flow.name} passes "
+                    f"`{var.name}` on line {call_line} without writing its member `{member}` on "
+                    f"every path (declared on line {ctx.span(var.token)[0]}); {_FIX}"
+                )
+                yield self.report(ctx, origin, message)
