@@ -57,6 +57,7 @@ class UnusedTwin(Rule):
 
     code = "C108"
     name = "unused-twin"
+    default = False  # opt-in: fewer than 15 findings on the corpus to judge it by
     category = "correctness"
     severity = "warning"
 

@@ -46,6 +46,7 @@ class InconsistentTwinLine(Rule):
 
     code = "C109"
     name = "inconsistent-twin-line"
+    default = False  # opt-in: fewer than 15 findings on the corpus to judge it by
     category = "correctness"
     severity = "warning"
 

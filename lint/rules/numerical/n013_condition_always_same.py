@@ -9,7 +9,8 @@ from lark import Tree
 from ...analysis.constants import is_compile_time
 from ...analysis.functions import Function, functions
 from ...analysis.model import Model, condition_truth, semantic_model
-from ...analysis.syntax import binary_op, call_args, callee_name
+from ...analysis.ranges import Interval
+from ...analysis.syntax import binary_op, call_args, callee_name, is_tree
 from ...analysis.types import SHADERTOY_TYPES
 from ...context import LintContext, Node, walk_kind
 from ...finding import Finding
@@ -59,18 +60,22 @@ class ConditionAlwaysSame(NumericalRule):
 
     code = "N013"
     name = "condition-always-same"
+    default = False  # opt-in: fewer than 15 findings on the corpus to judge it by
     severity = "warning"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         fns = functions(ctx)
-        conditions = [n.children[0] for n in ctx.nodes("if_statement")]
-        conditions += [n.children[0] for n in ctx.nodes("ternary")]
-        if not conditions:
+        tests = [(n, n.children[0]) for n in ctx.nodes("if_statement")]
+        tests += [(n, n.children[0]) for n in ctx.nodes("ternary")]
+        if not tests:
             return
         model = semantic_model(ctx)
         defined = {fn.name for fn in fns}
         exits = _tested_before_exit(ctx)
-        for cond in conditions:
+        dead_chains: set[int] = set()  # the else branches of if statements already reported
+        for statement, cond in tests:
+            if id(statement) in dead_chains:
+                continue  # one finding for an else-if chain that one earlier test makes dead
             for comparison in _comparisons(cond):
                 if not _written_here(ctx, comparison):
                     continue  # from a macro's body: generic code, not the user's text here
@@ -80,6 +85,9 @@ class ConditionAlwaysSame(NumericalRule):
                 found = _always_false(ctx, model, fn, defined, comparison)
                 if found is not None:
                     yield self.emit(ctx, comparison, found)
+                    if statement.data == "if_statement" and len(statement.children) > 2:
+                        dead_chains.add(id(statement.children[2]))
+                    break
 
 
 def _comparisons(cond: Node) -> Iterator[Tree]:
@@ -118,7 +126,9 @@ def _always_false(ctx: LintContext, model: Model, fn: Function, defined: set[str
     sources = _sources(fn, cmp, defined)
     if sources & set(SHADERTOY_TYPES):
         return None  # a test of the host's inputs (`iTime != -1.0`, a bound channel)
-    if fn.name != "mainImage" and sources & set(fn.params):
+    other = model.range_of(cmp.children[2] if side is cmp.children[0] else cmp.children[0])
+    intrinsic = _never_negative(side, r) and other.hi <= 0.0  # `abs(h) < 0.0` for any h
+    if fn.name != "mainImage" and sources & set(fn.params) and not intrinsic:
         return None  # a helper's check of its parameter: constant only for today's callers
     if sources & _loop_counters(ctx):
         return None  # follows a constant-bounded loop's counter: constant by configuration
@@ -128,6 +138,14 @@ def _always_false(ctx: LintContext, model: Model, fn: Function, defined: set[str
         "runs, so the branch it guards never runs; the guard no longer guards (fix the "
         "threshold, or the code before it that already rules the case out)"
     )
+
+
+def _never_negative(side: Node, r: Interval) -> bool:
+    """Whether the side is never below 0 whatever its arguments (`abs(h)`, `length(p)`)."""
+    return r.lo == 0.0 and callee_name(side) in _NON_NEGATIVE if is_tree(side, "call") else False
+
+
+_NON_NEGATIVE = {"abs", "length", "distance", "sqrt", "exp", "exp2", "inversesqrt"}
 
 
 def _sources(fn: Function, node: Node, defined: set[str]) -> set[str]:
