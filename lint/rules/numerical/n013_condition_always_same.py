@@ -124,7 +124,7 @@ def _always_false(ctx: LintContext, model: Model, fn: Function, defined: set[str
         return None  # both constant: written so (a switch); both varying: a relation
     side, r = varying[0]
     sources = _sources(fn, cmp, defined)
-    if sources & set(SHADERTOY_TYPES):
+    if _read_names(cmp, defined) & set(SHADERTOY_TYPES):
         return None  # a test of the host's inputs (`iTime != -1.0`, a bound channel)
     other = model.range_of(cmp.children[2] if side is cmp.children[0] else cmp.children[0])
     intrinsic = _never_negative(side, r) and other.hi <= 0.0  # `abs(h) < 0.0` for any h
