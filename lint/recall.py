@@ -45,8 +45,8 @@ CLASS_RULES: dict[str, frozenset[str]] = {
     "mediump-precision": frozenset({"P001", "P002", "P003", "P004", "P005", "P006", "P007"}),
     "loop-exit-invariant": frozenset(),
     "minmax-clamp-noop": frozenset({"N008"}),
-    "clamp-argument-order": frozenset({"N008"}),
-    "copy-paste-twin": frozenset(),
+    "clamp-argument-order": frozenset({"N008", "N010"}),
+    "copy-paste-twin": frozenset({"C108", "C109"}),
     "loop-invariant-expensive": frozenset({"PF002"}),
     "es300-portability": frozenset(
         {"C001", "P001", "P002", "P003", "P004", "P005", "P006", "P007"}
