@@ -1,0 +1,63 @@
+"""How N011 and N012 name the moment at which a value is exact (lint/analysis/moments.py): the
+first frame, before the first click, the first iteration of a loop, a uniform ShaderToy does not
+set, the constants passed at a call site."""
+
+from __future__ import annotations
+
+from ...analysis.moments import Event, show
+from ...context import LintContext
+from ._common import text
+
+# Which moment a message leads with when a value depends on several.
+_ORDER = {"uniform": 0, "frame": 1, "mouse": 2, "loop": 3}
+
+
+def moment_phrase(tags: frozenset) -> str:
+    """When the value is what it is: "at the first frame (iTime = 0)", "on the first iteration
+    of the loop at line 260 (t = 0.0 before it)"; "" for a value that holds on every run."""
+    parts: list[str] = []
+    frame = sorted(t[1] for t in tags if t[0] == "frame")
+    for tag in sorted((t for t in tags if t[0] in _ORDER), key=lambda t: (_ORDER[t[0]], t[1:])):
+        if tag[0] == "uniform":
+            parts.append(
+                f"because ShaderToy never sets `uniform {tag[1]}` (line {tag[2]}), which is "
+                "then 0"
+            )
+        elif tag[0] == "frame" and frame:
+            parts.append(f"at the first frame ({', '.join(f'{n} = 0' for n in frame)})")
+            frame = []
+        elif tag[0] == "mouse":
+            parts.append("until the first mouse click (iMouse = vec4(0))")
+        elif tag[0] == "loop":
+            parts.append(
+                f"on the first iteration of the loop at line {tag[1]} ({tag[2]} = {tag[3]} "
+                "before it)"
+            )
+    return ", ".join(parts)
+
+
+def advice(tags: frozenset, shown: str) -> str:
+    """What to do, for the moment the message leads with."""
+    lead = min((t for t in tags if t[0] in _ORDER), key=lambda t: _ORDER[t[0]], default=None)
+    if lead is None:
+        return "fix the constant or guard the operation"
+    if lead[0] == "uniform":
+        return f"give {lead[1]} a non-zero default where the host does not set it, or guard it"
+    if lead[0] == "loop":
+        return f"start {lead[2]} at a value that is safe or advance it before using it"
+    if lead[0] == "mouse":
+        return "guard it (iMouse is 0 until the user clicks): test iMouse.z > 0.0 first"
+    return f"guard it (max({shown}, 1e-4) or an offset time): the first frame is always shown"
+
+
+def call_phrase(ctx: LintContext, event: Event, what: str) -> str:
+    """`tl(time, 0.0, 0.0)` makes tl divide by `ix - im` (line 49), which is 0.0 with
+    range = 0.0: for an event lifted to its call site."""
+    inner = event.origin()
+    line = ctx.span(inner.expr)[0]
+    args = ", ".join(f"{name} = {show(value)}" for name, value in event.args)
+    with_args = f" with {args}" if args else ""
+    return (
+        f"{text(ctx, event.where, 40)} makes {event.callee}() {what} (line {line}), which is "
+        f"{show(inner.value)}{with_args}"
+    )
