@@ -383,7 +383,7 @@ class Moments:
                 self.mutable_globals |= self.writes(fn.node.children[1]) & self.globals.keys()
         entry = self.functions.get("mainImage") or self.functions.get("main") or []
         for fn in entry[:1]:
-            args = [unknown(t) if "out" not in q.split() else unknown(t) for q, t, _ in fn.params]
+            args = [unknown(t) for _, t, _ in fn.params]
             self._evaluate(fn, args, entry=True)
 
     def _global_declaration(self, node: Tree, state: State) -> None:
@@ -480,7 +480,7 @@ class Moments:
                 *(subst.get(t, NO_TAGS) for t in ret_tags if t[0] == "param"),
             )
         # what the call writes: out arguments and the globals functions write
-        for (qualifier, type_, _), arg in zip(fn.params, call_args(call), strict=False):
+        for (qualifier, _, _), arg in zip(fn.params, call_args(call), strict=False):
             if "out" in qualifier.split():
                 self._forget(arg, state)
         for g in self.mutable_globals:
@@ -624,7 +624,9 @@ class Moments:
         for stmt in body:
             if is_tree(stmt, "case_label", "default_label"):
                 if running is None or running.dead:
-                    label = self.expr(stmt.children[0], state) if stmt.data == "case_label" else None  # type: ignore[union-attr]
+                    label = (
+                        self.expr(stmt.children[0], state) if stmt.data == "case_label" else None
+                    )  # type: ignore[union-attr]
                     hit = label is None or exact is None or (
                         label.comps is not None and label.comps[0] == exact)  # fmt: skip
                     if hit:
@@ -745,7 +747,9 @@ class Moments:
         if op == "!":
             return _map(v, lambda c: not c if isinstance(c, bool) else Sym())
         if op == "~":
-            return _map(v, lambda c: ~c if isinstance(c, int) and not isinstance(c, bool) else Sym())
+            return _map(
+                v, lambda c: ~c if isinstance(c, int) and not isinstance(c, bool) else Sym()
+            )
         return v
 
     def _prefix(self, node: Tree, state: State) -> MV:
@@ -878,7 +882,9 @@ class Moments:
     def _constructor(self, node: Tree, state: State) -> MV:
         spec = node.children[0]
         type_ = str(spec.children[0]) if isinstance(spec, Tree) else str(spec)  # type: ignore[union-attr]
-        is_array = isinstance(spec, Tree) and any(is_tree(c, "array_specifier") for c in spec.children)
+        is_array = isinstance(spec, Tree) and any(
+            is_tree(c, "array_specifier") for c in spec.children
+        )
         args = [self.expr(a, state) for a in call_args(node)]
         n = size_of(type_)
         if is_array or n is None:
@@ -1220,7 +1226,9 @@ def _builtin(name: str, args: list[MV]) -> MV:
     if name == "normalize":
         return unknown(first.type)
     if name in ("atan",) and len(args) == 2:
-        return _componentwise(lambda y, x: Sym() if x == 0 and y == 0 else math.atan2(y, x), args, tags)
+        return _componentwise(
+            lambda y, x: Sym() if x == 0 and y == 0 else math.atan2(y, x), args, tags
+        )
     if name == "atan":
         return _componentwise(_float1(math.atan), args, tags)
     if name in _UNARY and len(args) == 1:

@@ -20,8 +20,7 @@ def moment_phrase(tags: frozenset) -> str:
     for tag in sorted((t for t in tags if t[0] in _ORDER), key=lambda t: (_ORDER[t[0]], t[1:])):
         if tag[0] == "uniform":
             parts.append(
-                f"because ShaderToy never sets `uniform {tag[1]}` (line {tag[2]}), which is "
-                "then 0"
+                f"because ShaderToy never sets `uniform {tag[1]}` (line {tag[2]}), which is then 0"
             )
         elif tag[0] == "frame" and frame:
             parts.append(f"at the first frame ({', '.join(f'{n} = 0' for n in frame)})")

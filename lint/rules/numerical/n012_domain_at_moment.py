@@ -82,4 +82,5 @@ class DomainAtMoment(NumericalRule):
         value = show(event.value)
         if inner.kind == "pow" and event.other is not None:
             value += f" (exponent {show(event.other)})"
-        return f"{event.kind}({shown}) with {shown} = {value} {moment}: {why}; {advice(event.tags, shown)}"
+        fix = advice(event.tags, shown)
+        return f"{event.kind}({shown}) with {shown} = {value} {moment}: {why}; {fix}"
