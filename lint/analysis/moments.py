@@ -351,8 +351,13 @@ class _Jump(Exception):
 class Moments:
     """The events of one file's first path (see the module's docstring)."""
 
-    def __init__(self, tree: Tree) -> None:
+    def __init__(
+        self, tree: Tree, bounds: Callable[[Node], tuple[float, float]] | None = None
+    ) -> None:
         self.tree = tree
+        # (lo, hi) that an expression holds on every run (the semantic model's range): what
+        # decides `r2 < rd1` with rd1 = 0 where r2 = dot(z, z) is not known exactly
+        self.bounds = bounds
         self.events: dict[tuple[int, str], Event] = {}
         self.functions: dict[str, list[_Fn]] = {}
         self.uniforms: dict[str, int] = {}  # declared uniforms ShaderToy does not set
@@ -362,6 +367,7 @@ class Moments:
         self._writes: dict[int, frozenset[str]] = {}
         self.globals: dict[str, MV] = {}
         self.mutable_globals: set[str] = set()
+        self._fn_globals: dict[int, frozenset[str]] = {}
         self._run()
 
     # --- setup ----------------------------------------------------------------------------
@@ -481,14 +487,32 @@ class Moments:
             )
         # what the call writes: out arguments and the globals functions write
         for (qualifier, _, _), arg in zip(fn.params, call_args(call), strict=False):
-            if "out" in qualifier.split():
+            if _writes(qualifier):
                 self._forget(arg, state)
-        for g in self.mutable_globals:
+        for g in self._global_writes(fn):
             if state.lookup(g) is not None:
                 state.assign(g, unknown(state.lookup(g).type))  # type: ignore[union-attr]
         # each call returns its own unknowns: two calls of one memoised variant are not equal
         comps = tuple(c if known(c) else Sym() for c in ret.comps) if ret.comps else ret.comps
         return MV(ret.type, comps, ret_tags)
+
+    def _global_writes(self, fn: _Fn) -> frozenset[str]:
+        """The globals a function writes, itself or through the functions it calls."""
+        key = id(fn.node)
+        if key in self._fn_globals:
+            return self._fn_globals[key]
+        self._fn_globals[key] = frozenset()  # a cycle (invalid GLSL) ends here
+        body = fn.node.children[1]
+        names = set(self.writes(body) & self.mutable_globals)
+        for call in self._calls_in(body):
+            name = callee_name(call)
+            for callee in self.functions.get(name or "", []):
+                names |= self._global_writes(callee)
+        self._fn_globals[key] = frozenset(names)
+        return self._fn_globals[key]
+
+    def _calls_in(self, node: Node) -> list[Tree]:
+        return [n for n in walk(node) if n.data == "call"] if isinstance(node, Tree) else []
 
     def emit(self, event: Event) -> None:
         """Record an event, or hand it to the caller where it depends on the arguments."""
@@ -671,7 +695,7 @@ class Moments:
         for fn in self.functions[name]:
             if len(fn.params) == len(args):
                 for (qualifier, _, _), arg in zip(fn.params, args, strict=True):
-                    if "out" in qualifier.split():
+                    if _writes(qualifier):
                         out.add(root_variable(arg) or "")
         return out
 
@@ -786,7 +810,32 @@ class Moments:
         b = self.expr(right, state)
         if op in ("/", "%"):
             self._check_divisor(right, b, a, state)
-        return _binary_value(op, a, b)
+        value = _binary_value(op, a, b)
+        if op in _ORDERED and self.bounds is not None and _truth(value) is None:
+            value = self._compare_bounds(op, left, a, right, b) or value
+        return value
+
+    def _compare_bounds(self, op: str, left: Node, a: MV, right: Node, b: MV) -> MV | None:
+        """`x < c` with x unknown but its range on every run on one side of c."""
+        if not a.exact() and b.exact() and b.comps and len(b.comps) == 1:
+            lo, hi = self.bounds(left)  # type: ignore[misc]
+            c = float(b.comps[0])  # type: ignore[arg-type]
+        elif not b.exact() and a.exact() and a.comps and len(a.comps) == 1:
+            lo, hi = self.bounds(right)  # type: ignore[misc]
+            c = float(a.comps[0])  # type: ignore[arg-type]
+            op = _FLIP[op]
+        else:
+            return None
+        result = None
+        if op == "<":
+            result = False if lo >= c else (True if hi < c else None)
+        elif op == "<=":
+            result = False if lo > c else (True if hi <= c else None)
+        elif op == ">":
+            result = False if hi <= c else (True if lo > c else None)
+        elif op == ">=":
+            result = False if hi < c else (True if lo >= c else None)
+        return None if result is None else MV("bool", (result,), union(a.tags, b.tags))
 
     def _check_divisor(self, divisor: Node, value: MV, numerator: MV, state: State) -> None:
         if value.has_zero() and base_of(value.type) != "bool":
@@ -966,6 +1015,11 @@ _HANDLERS: dict[str, Callable[[Moments, Tree, State], MV]] = {
 # --- values -------------------------------------------------------------------------------
 
 
+def _writes(qualifier: str) -> bool:
+    """Whether a parameter of these qualifiers is written back to its argument."""
+    return any(word in ("out", "inout") for word in qualifier.split())
+
+
 def _zero(type_: str, tags: frozenset) -> MV:
     n = size_of(type_)
     if n is None:
@@ -1016,6 +1070,10 @@ def _result_type(a: MV, b: MV) -> str | None:
         return None
     base = "float" if "float" in (base_of(ta), base_of(tb)) else base_of(ta)
     return vector_type(base, max(na, nb))
+
+
+_ORDERED = frozenset({"<", "<=", ">", ">="})
+_FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
 
 
 def _binary_value(op: str, a: MV, b: MV) -> MV:
@@ -1307,8 +1365,18 @@ def moments(ctx: LintContext) -> Moments | None:
         result = None
         if ctx.tree is not None:
             try:
-                result = Moments(ctx.tree)
+                result = Moments(ctx.tree, _bounds(ctx))
             except RecursionError:
                 result = None
         ctx.cache["moments"] = result
     return ctx.cache["moments"]
+
+
+def _bounds(ctx: LintContext) -> Callable[[Node], tuple[float, float]]:
+    from .model import semantic_model  # the model is built only where a comparison asks
+
+    def bounds(node: Node) -> tuple[float, float]:
+        r = semantic_model(ctx).range_of(node)
+        return r.lo, r.hi
+
+    return bounds

@@ -4,7 +4,7 @@ set, the constants passed at a call site."""
 
 from __future__ import annotations
 
-from ...analysis.moments import Event, show
+from ...analysis.moments import Event, Moments, show
 from ...context import LintContext
 from ._common import text
 
@@ -17,6 +17,7 @@ def moment_phrase(tags: frozenset) -> str:
     of the loop at line 260 (t = 0.0 before it)"; "" for a value that holds on every run."""
     parts: list[str] = []
     frame = sorted(t[1] for t in tags if t[0] == "frame")
+    loops: set[int] = set()
     for tag in sorted((t for t in tags if t[0] in _ORDER), key=lambda t: (_ORDER[t[0]], t[1:])):
         if tag[0] == "uniform":
             parts.append(
@@ -27,10 +28,11 @@ def moment_phrase(tags: frozenset) -> str:
             frame = []
         elif tag[0] == "mouse":
             parts.append("until the first mouse click (iMouse = vec4(0))")
-        elif tag[0] == "loop":
+        elif tag[0] == "loop" and tag[1] not in loops:
+            held = sorted(f"{t[2]} = {t[3]}" for t in tags if t[0] == "loop" and t[1] == tag[1])
+            loops.add(tag[1])
             parts.append(
-                f"on the first iteration of the loop at line {tag[1]} ({tag[2]} = {tag[3]} "
-                "before it)"
+                f"on the first iteration of the loop at line {tag[1]} ({', '.join(held)} before it)"
             )
     return ", ".join(parts)
 
@@ -60,3 +62,24 @@ def call_phrase(ctx: LintContext, event: Event, what: str) -> str:
         f"{text(ctx, event.where, 40)} makes {event.callee}() {what} (line {line}), which is "
         f"{show(inner.value)}{with_args}"
     )
+
+
+def ordered_events(ctx: LintContext, found: Moments | None) -> list[Event]:
+    """The file's events in source order."""
+    if found is None:
+        return []
+    return sorted(found.events.values(), key=lambda e: ctx.span(e.where)[:2])
+
+
+def first_per_origin(events: list[Event]) -> list[tuple[Event, int]]:
+    """One finding per defect: of the calls that make one division (or builtin call) of a
+    function fail, the first, with how many more do."""
+    firsts: dict[tuple[int, str], list] = {}
+    for event in events:
+        origin = event.origin()
+        key = (id(origin.expr), origin.kind)
+        if key in firsts:
+            firsts[key][1] += 1
+        else:
+            firsts[key] = [event, 0]
+    return [(event, others) for event, others in firsts.values()]

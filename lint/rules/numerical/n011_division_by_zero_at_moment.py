@@ -13,7 +13,7 @@ from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import register
 from ._common import Node, NumericalRule, reaches_below, text
-from ._moments import advice, call_phrase, moment_phrase
+from ._moments import advice, call_phrase, first_per_origin, moment_phrase, ordered_events
 
 
 @register
@@ -66,16 +66,17 @@ class DivisionByZeroAtMoment(NumericalRule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         found = moments(ctx)
         reported: set[int] = set()
-        if found is not None:
-            for event in found.events.values():
-                if event.kind not in ("divide", "mod", "atan"):
-                    continue
-                message = self._message(ctx, event)
-                if message is None:
-                    continue
-                line = ctx.span(event.where)[0]
-                reported.add(line)
-                yield self.emit(ctx, event.where, message)
+        events = [e for e in ordered_events(ctx, found) if e.kind in ("divide", "mod", "atan")]
+        for event, others in first_per_origin(events):
+            if event.kind == "divide" and _absorbed(ctx, event.origin()):
+                continue
+            message = self._message(ctx, event)
+            if message is None:
+                continue
+            if others:
+                message += f" (and {others} more call{'s' if others > 1 else ''} like it)"
+            reported.add(ctx.span(event.where)[0])
+            yield self.emit(ctx, event.where, message)
         yield from self._half_space(ctx, reported)
 
     def _message(self, ctx: LintContext, event: Event) -> str | None:
@@ -128,6 +129,39 @@ class DivisionByZeroAtMoment(NumericalRule):
             )
             reported.add(line)
             yield self.emit(ctx, divisor, message)
+
+
+# Where an infinity goes no further: clamp and smoothstep bound it, step and comparisons read
+# only its sign.
+_ABSORBING_CALLS = frozenset({"clamp", "smoothstep", "step"})
+_ABSORBING_OPS = frozenset({"<", ">", "<=", ">="})
+
+
+def _absorbed(ctx: LintContext, event: Event) -> bool:
+    """x / 0 with x exact and non-zero is ±inf, not NaN: harmless where it only reaches a clamp
+    through sums and products (`clamp(0.1 + 1.0 / x * 0.05, 0.0, 10.0)`)."""
+    num = event.other
+    if num is None or not num.exact() or num.has_zero():
+        return False
+    parents = ctx.parents()
+    node: Node | None = parents.get(id(event.expr))
+    while node is not None:
+        parent = parents.get(id(node))
+        if parent is None:
+            return False
+        arithmetic = parent.data == "binary" and str(parent.children[1]) in ("+", "-", "*", "/")
+        if arithmetic or parent.data == "unary":
+            node = parent
+        elif parent.data == "binary":
+            return str(parent.children[1]) in _ABSORBING_OPS
+        elif parent.data == "arguments":
+            call = parents.get(id(parent))
+            name = callee_name(call) if isinstance(call, Tree) and call.data == "call" else None
+            first = parent.children[0] is node
+            return name in _ABSORBING_CALLS and (first or name == "step")
+        else:
+            return False
+    return False
 
 
 def _divisor(node: Tree) -> Node | None:

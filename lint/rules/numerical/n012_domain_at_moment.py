@@ -9,7 +9,7 @@ from ...context import LintContext
 from ...finding import Finding
 from .. import register
 from ._common import NumericalRule, text
-from ._moments import advice, call_phrase, moment_phrase
+from ._moments import advice, call_phrase, first_per_origin, moment_phrase, ordered_events
 
 _DOMAIN = {
     "sqrt": "sqrt of a negative value is undefined (NaN)",
@@ -58,15 +58,14 @@ class DomainAtMoment(NumericalRule):
     default = False  # until its corpus findings are judged
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
-        found = moments(ctx)
-        if found is None:
-            return
-        for event in found.events.values():
-            if event.kind not in _DOMAIN:
-                continue
+        events = [e for e in ordered_events(ctx, moments(ctx)) if e.kind in _DOMAIN]
+        for event, others in first_per_origin(events):
             message = self._message(ctx, event)
-            if message is not None:
-                yield self.emit(ctx, event.where, message)
+            if message is None:
+                continue
+            if others:
+                message += f" (and {others} more call{'s' if others > 1 else ''} like it)"
+            yield self.emit(ctx, event.where, message)
 
     def _message(self, ctx: LintContext, event: Event) -> str | None:
         if event.site is None and not event.tags:
