@@ -426,9 +426,9 @@ class Moments:
             ret, pending, _ = self._memo[key]
             return ret, pending
         if not entry and any(k is not None and any(c is not None for c in k) for k in key[1]):
-            fn.variants += 1
-            if fn.variants > MAX_VARIANTS:  # enough variants: what holds for any argument
+            if fn.variants >= MAX_VARIANTS:  # enough variants: what holds for any argument
                 return self._evaluate(fn, [unknown(a.type) for a in args])
+            fn.variants += 1
         if id(fn.node) in self._active or len(self._stack) > MAX_DEPTH:
             return unknown(fn.return_type), []
         shared = self.globals

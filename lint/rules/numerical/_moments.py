@@ -4,12 +4,32 @@ set, the constants passed at a call site."""
 
 from __future__ import annotations
 
+from lark import Tree
+
 from ...analysis.moments import Event, Moments, show
-from ...context import LintContext
+from ...context import LintContext, Node, walk
 from ._common import text
 
 # Which moment a message leads with when a value depends on several.
 _ORDER = {"uniform": 0, "frame": 1, "mouse": 2, "loop": 3}
+
+
+_LITERAL_PARTS = frozenset(
+    {"float_literal", "int_literal", "bool_literal", "constructor", "type_specifier",
+     "arguments", "unary", "binary", "array_specifier"}
+)  # fmt: skip
+
+
+def is_literal(node: Node) -> bool:
+    """An expression of literals only (`0.0`, `vec2(1.0, 0.0)`): a 0 written on purpose, such
+    as `1.0 / 0.0` for an infinity."""
+    return not isinstance(node, Tree) or all(n.data in _LITERAL_PARTS for n in walk(node))
+
+
+def reportable(event: Event) -> bool:
+    """An event at a moment, through a call, or on every run through a name (`x / n` with
+    n = 0.0 and nothing changing it), not a literal 0 written as such."""
+    return event.site is not None or bool(event.tags) or not is_literal(event.expr)
 
 
 def moment_phrase(tags: frozenset) -> str:
@@ -34,10 +54,10 @@ def moment_phrase(tags: frozenset) -> str:
             parts.append(
                 f"on the first iteration of the loop at line {tag[1]} ({', '.join(held)} before it)"
             )
-    return ", ".join(parts)
+    return ", ".join(parts) or "on every run"
 
 
-def advice(tags: frozenset, shown: str) -> str:
+def advice(tags: frozenset, shown: str, use: str = "using it") -> str:
     """What to do, for the moment the message leads with."""
     lead = min((t for t in tags if t[0] in _ORDER), key=lambda t: _ORDER[t[0]], default=None)
     if lead is None:
@@ -45,7 +65,7 @@ def advice(tags: frozenset, shown: str) -> str:
     if lead[0] == "uniform":
         return f"give {lead[1]} a non-zero default where the host does not set it, or guard it"
     if lead[0] == "loop":
-        return f"start {lead[2]} at a value that is safe or advance it before using it"
+        return f"start {lead[2]} at a safe value (small and positive) or advance it before {use}"
     if lead[0] == "mouse":
         return "guard it (iMouse is 0 until the user clicks): test iMouse.z > 0.0 first"
     return f"guard it (max({shown}, 1e-4) or an offset time): the first frame is always shown"

@@ -13,7 +13,14 @@ from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import register
 from ._common import Node, NumericalRule, reaches_below, text
-from ._moments import advice, call_phrase, first_per_origin, moment_phrase, ordered_events
+from ._moments import (
+    advice,
+    call_phrase,
+    first_per_origin,
+    moment_phrase,
+    ordered_events,
+    reportable,
+)
 
 
 @register
@@ -81,8 +88,8 @@ class DivisionByZeroAtMoment(NumericalRule):
 
     def _message(self, ctx: LintContext, event: Event) -> str | None:
         inner = event.origin()
-        if event.site is None and not event.tags:
-            return None  # a constant 0 on every run is the author's deliberate infinity or N005's
+        if not reportable(event):
+            return None
         what = {"divide": "divide by", "mod": "take mod by", "atan": "call atan(0, 0) at"}[
             event.kind
         ]
@@ -93,7 +100,7 @@ class DivisionByZeroAtMoment(NumericalRule):
         moment = moment_phrase(event.tags)
         if event.site is not None:
             head = call_phrase(ctx, event, f"{what} {shown}")
-            tail = f", {moment}" if moment else ""
+            tail = f", {moment}" if event.tags else ""
             fix = f"pass values that keep it non-zero or guard it in {event.callee}()"
             return f"{head}{tail}{nan}; {fix}"
         if event.kind == "atan":
@@ -102,7 +109,7 @@ class DivisionByZeroAtMoment(NumericalRule):
             head = f"mod by {shown}, which is {show(event.value)}"
         else:
             head = f"divides by {shown}, which is {show(event.value)}"
-        return f"{head} {moment}{nan}; {advice(event.tags, shown)}"
+        return f"{head} {moment}{nan}; {advice(event.tags, shown, 'dividing')}"
 
     def _half_space(self, ctx: LintContext, reported: set[int]) -> Iterator[Finding]:
         """`x / max(0.0, y)`: 0 for every y <= 0, where y is known to go below 0."""

@@ -9,7 +9,14 @@ from ...context import LintContext
 from ...finding import Finding
 from .. import register
 from ._common import NumericalRule, text
-from ._moments import advice, call_phrase, first_per_origin, moment_phrase, ordered_events
+from ._moments import (
+    advice,
+    call_phrase,
+    first_per_origin,
+    moment_phrase,
+    ordered_events,
+    reportable,
+)
 
 _DOMAIN = {
     "sqrt": "sqrt of a negative value is undefined (NaN)",
@@ -68,15 +75,15 @@ class DomainAtMoment(NumericalRule):
             yield self.emit(ctx, event.where, message)
 
     def _message(self, ctx: LintContext, event: Event) -> str | None:
-        if event.site is None and not event.tags:
-            return None  # no moment: a constant argument on every run
+        if not reportable(event):
+            return None
         inner = event.origin()
         shown = text(ctx, inner.expr)
         moment = moment_phrase(event.tags)
         why = _DOMAIN[inner.kind]
         if event.site is not None:
             head = call_phrase(ctx, event, f"call {inner.kind}({shown})")
-            tail = f", {moment}" if moment else ""
+            tail = f", {moment}" if event.tags else ""
             return f"{head}{tail}: {why}; pass values inside its domain or guard it"
         value = show(event.value)
         if inner.kind == "pow" and event.other is not None:
