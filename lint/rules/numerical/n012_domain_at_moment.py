@@ -89,4 +89,7 @@ class DomainAtMoment(NumericalRule):
         if inner.kind == "pow" and event.other is not None:
             value += f" (exponent {show(event.other)})"
         fix = advice(event.tags, shown)
-        return f"{event.kind}({shown}) with {shown} = {value} {moment}: {why}; {fix}"
+        # `log(iTime)` needs no "with iTime = 0.0": the moment says so
+        named = any(t[0] == "frame" and t[1] == shown for t in event.tags)
+        held = "" if named else f" with {shown} = {value}"
+        return f"{event.kind}({shown}){held} {moment}: {why}; {fix}"
