@@ -1,0 +1,335 @@
+"""Exact values at named moments (lint/analysis/moments.py) and the rules that read them: N011
+division-by-zero-at-moment and N012 domain-at-moment. Each case is a small shader that must be
+reported on one line, next to a nearby one that must not be."""
+
+from __future__ import annotations
+
+from lark import Tree
+
+from glint.lint.analysis.moments import MAX_VARIANTS, Moments
+from glint.lint.finding import Finding
+from glint.lint.options import Options
+from glint.lint.runner import build_context, lint_source
+
+MOMENTS = Options(select=["N011", "N012"], glslang=False)
+
+
+def lint(src: str) -> list[Finding]:
+    return lint_source(src, "t.glsl", MOMENTS)
+
+
+def lines(src: str, code: str = "N011") -> list[int]:
+    return [f.line for f in lint(src) if f.code == code]
+
+
+def line_of(src: str, needle: str) -> int:
+    return next(i for i, text in enumerate(src.split("\n"), 1) if needle in text)
+
+
+def main(body: str, helpers: str = "") -> str:
+    return (
+        helpers
+        + "\nvoid mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        + "    vec2 uv = fragCoord / iResolution.xy;\n"
+        + body
+        + "\n}\n"
+    )
+
+
+SHADOW = """
+float shadow(vec3 ro, vec3 rd, float start) {
+    float res = 1.0;
+    float t = START;
+    for (int i = 0; i < 32; i++) {
+        float h = length(ro + rd * t) - 1.0;
+        res = min(res, 8.0 * h / t);
+        t += clamp(h, 0.02, 0.5);
+    }
+    return res;
+}
+"""
+
+CALL = "fragColor = vec4(shadow(vec3(uv, 2.0), vec3(0.0, 0.0, -1.0), {}));"
+
+
+# --- the first iteration of a loop ----------------------------------------------------------
+
+
+def test_a_loop_dividing_by_its_starting_zero_is_reported_on_the_first_iteration() -> None:
+    src = main(CALL.format(0.0), SHADOW.replace("START", "0.0"))
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "8.0 * h / t")
+    assert (
+        "divides by t, which is 0.0 on the first iteration of the loop at line" in finding.message
+    )
+    assert "(t = 0.0 before it)" in finding.message
+    assert "advance it before dividing" in finding.message
+
+
+def test_a_loop_starting_away_from_zero_is_not_reported() -> None:
+    src = main(CALL.format(0.0), SHADOW.replace("START", "0.02"))
+    assert lines(src) == []
+    src = main(CALL.format(0.02), SHADOW.replace("START", "start"))
+    assert lines(src) == []
+
+
+def test_a_zero_start_passed_by_the_caller_is_reported_at_the_call() -> None:
+    src = main(CALL.format(0.0), SHADOW.replace("START", "start"))
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "shadow(vec3(uv")
+    assert "makes shadow() divide by t" in finding.message and "start = 0.0" in finding.message
+
+
+def test_a_division_guarded_by_a_test_of_the_divisor_is_not_reported() -> None:
+    src = main(
+        """
+    float t = 0.0, res = 1.0;
+    for (int i = 0; i < 8; i++) {
+        float h = uv.x - float(i);
+        if (t > 0.0) res = min(res, h / t);
+        t += 0.1;
+    }
+    fragColor = vec4(res);"""
+    )
+    assert lines(src) == []
+
+
+def test_after_a_loop_what_it_assigns_is_unknown() -> None:
+    src = main(
+        """
+    float t = 0.0;
+    for (int i = 0; i < 8; i++) { t += uv.x; }
+    fragColor = vec4(1.0 / t);"""
+    )
+    assert lines(src) == []
+
+
+def test_a_loop_that_never_runs_keeps_its_variables() -> None:
+    src = main(
+        """
+    float n = 0.0;
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 0; i++) { sum += vec4(uv, 0.0, 1.0); n += 1.0; }
+    fragColor = sum / n;"""
+    )
+    assert lines(src) == [line_of(src, "sum / n")]
+
+
+# --- the first frame and the first click ----------------------------------------------------
+
+
+def test_a_divisor_that_is_zero_at_the_first_frame_is_reported_with_0_over_0() -> None:
+    src = main(
+        """
+    float sec = mod(iTime, 1.0);
+    fragColor = vec4(sin(sec * 50.0) / sqrt(sec));"""
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "sqrt(sec)")
+    assert "at the first frame (iTime = 0)" in finding.message
+    assert "(0/0: NaN)" in finding.message
+
+
+def test_an_offset_time_and_an_unknown_divisor_are_not_reported() -> None:
+    src = main(
+        """
+    float sec = mod(iTime, 1.0) + 0.5;
+    float r = uv.x / length(uv - 0.5);
+    fragColor = vec4(sin(sec) / sqrt(sec), r, 0.0, 1.0);"""
+    )
+    assert lines(src) == []
+
+
+def test_an_infinity_that_only_reaches_a_clamp_is_not_reported() -> None:
+    # 1 / 0 is +inf, not NaN, and clamp bounds it: harmless
+    src = main("fragColor = vec4(clamp(0.1 + 1.0 / iTime * 0.05, 0.0, 10.0));")
+    assert lines(src) == []
+
+
+def test_normalize_of_the_unclicked_mouse_is_a_domain_finding() -> None:
+    src = main(
+        """
+    vec2 dir = normalize(iMouse.xy);
+    vec2 safe = iMouse.z > 0.0 ? normalize(iMouse.xy) : vec2(1.0, 0.0);
+    fragColor = vec4(dir, safe);"""
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N012"]
+    assert finding.line == line_of(src, "vec2 dir")
+    assert "until the first mouse click" in finding.message
+
+
+def test_log_and_sqrt_outside_their_domain_at_a_moment() -> None:
+    src = main(
+        """
+    float a = log(iTime);
+    float b = sqrt(iTime - 1.0);
+    float c = log(iTime + 1.0);
+    float d = sqrt(iTime);
+    fragColor = vec4(a, b, c, d);"""
+    )
+    assert lines(src, "N012") == [line_of(src, "log(iTime)"), line_of(src, "sqrt(iTime - 1.0)")]
+
+
+def test_mod_by_zero_and_atan_of_the_origin_at_a_moment() -> None:
+    src = main(
+        """
+    float a = mod(uv.x, iTime);
+    float b = atan(iMouse.y, iMouse.x);
+    float c = atan(iMouse.y, 1.0);
+    fragColor = vec4(a, b, c, 1.0);"""
+    )
+    assert lines(src) == [line_of(src, "mod(uv.x"), line_of(src, "atan(iMouse.y, iMouse.x)")]
+
+
+def test_a_branch_taken_at_the_first_frame_sets_what_follows() -> None:
+    src = main(
+        """
+    vec3 vel = texture(iChannel0, uv).xyz;
+    if (iFrame == 0) vel = vec3(0.0);
+    vel.xy *= (length(vel.xy) - iTimeDelta) / length(vel.xy);
+    fragColor = vec4(vel, 1.0);"""
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "vel.xy *=")
+    assert "at the first frame" in finding.message and "(0/0: NaN)" in finding.message
+
+
+# --- call sites ----------------------------------------------------------------------------
+
+TL = """
+float sum = 0.0;
+float tl(float val, float offset, float range) {
+    float im = sum + offset;
+    float ix = im + range;
+    sum += offset + range;
+    return clamp((val - im) / (ix - im), 0.0, 1.0);
+}
+"""
+
+
+def test_constants_passed_at_a_call_site_are_reported_there_naming_the_call() -> None:
+    src = main(
+        """
+    float t = tl(uv.x, 1.0, 0.5);
+    t += tl(uv.x, 0.0, 0.0);
+    fragColor = vec4(t);""",
+        TL,
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "tl(uv.x, 0.0, 0.0)")
+    assert "tl(uv.x, 0.0, 0.0) makes tl() divide by ix - im" in finding.message
+    assert "range = 0.0" in finding.message
+
+
+def test_one_finding_per_defect_of_a_callee() -> None:
+    src = main(
+        """
+    float t = tl(uv.x, 0.0, 0.0) + tl(uv.y, 0.0, 0.0) + tl(uv.y, 2.0, 0.0);
+    fragColor = vec4(t);""",
+        TL,
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert "(and 2 more calls like it)" in finding.message
+
+
+def test_a_callee_evaluated_once_per_constant_tuple_and_at_most_a_few_times() -> None:
+    calls = " + ".join(f"tl(uv.x, {i}.0, 1.0)" for i in range(1, 60))
+    src = main(f"fragColor = vec4({calls});", TL)
+    ctx = build_context(src, "t.glsl", MOMENTS)
+    assert isinstance(ctx.tree, Tree)
+    moments = Moments(ctx.tree)
+    (fn,) = moments.functions["tl"]
+    assert fn.variants <= MAX_VARIANTS + 1
+    assert len(moments._memo) <= MAX_VARIANTS + 3  # mainImage, tl's variants, tl with unknowns
+
+
+def test_a_global_a_callee_does_not_write_keeps_its_value_after_the_call() -> None:
+    src = main(
+        """
+    float k = 0.0;
+    if (MODE == 1) k = 1.0 / zero(uv.x);
+    if (MODE == 0) k = helper(uv.x);
+    if (MODE == 1) k = 1.0 / zero(uv.y);
+    fragColor = vec4(k);""",
+        """
+int MODE = 0;
+float zero(float x) { return x * 0.0; }
+float helper(float x) { return x + 1.0; }
+""",
+    )
+    assert lines(src) == []
+
+
+def test_an_inout_argument_is_unknown_after_the_call() -> None:
+    src = main(
+        """
+    float d = 0.0;
+    grow(d, uv.x);
+    fragColor = vec4(1.0 / d);""",
+        "void grow(inout float d, float by) { d += by; }\n",
+    )
+    assert lines(src) == []
+
+
+def test_a_branch_the_value_range_rules_out_is_not_taken() -> None:
+    # dot(z, z) < 0.0 never holds, so the division by the zero passed in never runs
+    src = main(
+        """
+    vec3 p = vec3(uv, 1.0);
+    fold(p, 0.0);
+    fragColor = vec4(p, 1.0);""",
+        """
+void fold(inout vec3 z, float r) {
+    float r2 = dot(z, z);
+    if (r2 < r) z *= 2.0 / r;
+}
+""",
+    )
+    assert lines(src) == []
+
+
+def test_two_calls_of_one_function_return_different_unknowns() -> None:
+    # map(p + e) - map(p - e) is not 0: each call returns its own unknown
+    src = main(
+        """
+    vec2 e = vec2(0.001, 0.0);
+    vec3 p = vec3(uv, 0.0);
+    vec3 n = normalize(vec3(map(p + e.xyy) - map(p - e.xyy), map(p + e.yxy) - map(p - e.yxy),
+                            map(p + e.yyx) - map(p - e.yyx)));
+    fragColor = vec4(n, 1.0);""",
+        "float map(vec3 p) { return length(p) - 1.0; }\n",
+    )
+    assert lines(src, "N012") == []
+
+
+# --- uniforms ShaderToy does not set -------------------------------------------------------
+
+
+def test_a_uniform_shadertoy_does_not_set_is_zero() -> None:
+    src = "uniform int u_count;\nuniform float iTime;\n" + main(
+        """
+    vec4 sum = vec4(0.0);
+    for (int i = 1; i <= u_count; i++) sum += vec4(uv, 0.0, 1.0);
+    fragColor = sum / float(u_count) + vec4(1.0 / (iTime + 1.0));"""
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "sum / float(u_count)")
+    assert "never sets `uniform u_count` (line 1)" in finding.message
+    assert "(0/0: NaN)" in finding.message
+
+
+# --- half-spaces ----------------------------------------------------------------------------
+
+
+def test_max_zero_as_a_divisor_is_zero_for_every_negative_value() -> None:
+    src = main(
+        """
+    vec3 rd = normalize(vec3(uv - 0.5, -1.0));
+    float a = rd.x / max(0.0, rd.y);
+    float b = rd.x / max(1e-3, rd.y);
+    float c = uv.x / max(0.0, length(uv) + 0.5);
+    fragColor = vec4(a, b, c, 1.0);"""
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "float a")
+    assert "exactly 0 for every rd.y <= 0" in finding.message
