@@ -49,7 +49,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.files import read_user_file
 from glint.compiler.target.shadertoy import Tab
 
-from .finding import Edit, Finding, Fix
+from .finding import CERTAINTIES, Edit, Finding, Fix
 from .options import Options
 
 DIRECTORY_NAME = ".glint_cache"
@@ -70,7 +70,18 @@ _SEVERITIES = frozenset({"error", "warning", "info"})
 _APPLICABILITY = frozenset({"safe", "unsafe"})
 _ENTRY_KEYS = frozenset({"format", "file", "sha256", "settings", "findings"})
 _FINDING_KEYS = frozenset(
-    {"file", "line", "column", "end_line", "end_column", "code", "severity", "message", "fix"}
+    {
+        "file",
+        "line",
+        "column",
+        "end_line",
+        "end_column",
+        "code",
+        "severity",
+        "message",
+        "certainty",
+        "fix",
+    }
 )
 _FIX_KEYS = frozenset({"message", "applicability", "edits"})
 _EDIT_KEYS = frozenset({"line", "column", "end_line", "end_column", "content"})
@@ -304,6 +315,8 @@ class _Bounds:
             and item["code"] in self.codes
             and type(item["severity"]) is str
             and item["severity"] in _SEVERITIES
+            and type(item["certainty"]) is str
+            and item["certainty"] in CERTAINTIES
             and type(item["message"]) is str
             and (fix is None or self.fix_ok(fix))
         )
@@ -338,6 +351,7 @@ def finding_from_json(item: dict[str, Any]) -> Finding:
         code=item["code"],
         severity=item["severity"],
         message=item["message"],
+        certainty=item["certainty"],
         fix=None
         if fix is None
         else Fix(

@@ -311,6 +311,7 @@ def rule_entry(code: str) -> dict[str, str]:
         "name": rule.name,
         "category": rule.category,
         "severity": rule.severity,
+        "certainty": rule.certainty,
         "fixable": rule.fixable,
         "runs": "default" if rule.default else "opt-in",
         **doc,

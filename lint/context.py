@@ -18,7 +18,7 @@ from glint.compiler.glsl import Preprocessed
 from glint.compiler.target.glslang import Diagnostic, validate
 from glint.compiler.target.shadertoy import Tab
 
-from .finding import Edit, Finding, Fix, Severity
+from .finding import Certainty, Edit, Finding, Fix, Severity
 from .nesting import Nesting
 
 Node = Tree | Token
@@ -164,9 +164,12 @@ class LintContext:
         where: Node | Span,
         message: str,
         fix: Fix | None = None,
+        certainty: Certainty = "likely",
     ) -> Finding:
         line, col, end_line, end_col = where if isinstance(where, tuple) else self.span(where)
-        return Finding(self.file, line, col, end_line, end_col, code, severity, message, fix)
+        return Finding(
+            self.file, line, col, end_line, end_col, code, severity, message, fix, certainty
+        )
 
     def replace(self, node: Node, content: str) -> Edit | None:
         """An edit that replaces the node by `content`, or None when the node's position

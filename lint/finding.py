@@ -6,6 +6,12 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 Severity = Literal["error", "warning", "info"]
+# How sure a finding is. certain: the code is wrong for every input, or for a named reachable
+# one (the first frame, the first iteration, a constant); likely: the evidence is real but rests
+# on reading the author's intent (names, a twin, a path the analysis cannot rule out); possible:
+# a range that merely reaches the bad value (opt-in rules only).
+Certainty = Literal["certain", "likely", "possible"]
+CERTAINTIES: tuple[Certainty, ...] = ("certain", "likely", "possible")
 Applicability = Literal["safe", "unsafe"]
 
 
@@ -60,6 +66,7 @@ class Finding:
     severity: Severity
     message: str
     fix: Fix | None = field(default=None, compare=False)
+    certainty: Certainty = field(default="likely", compare=False)
 
     def as_json(self) -> dict[str, Any]:
         return {
@@ -71,6 +78,7 @@ class Finding:
             "code": self.code,
             "severity": self.severity,
             "message": self.message,
+            "certainty": self.certainty,
             "fix": None if self.fix is None else self.fix.as_json(),
         }
 

@@ -83,6 +83,7 @@ def sarif(findings: Sequence[Finding], sources: dict[str, str]) -> str:
             "ruleId": f.code,
             "level": level[f.severity],
             "message": {"text": f.message},
+            "properties": {"certainty": f.certainty},
             "locations": [
                 {
                     "physicalLocation": {

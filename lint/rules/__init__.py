@@ -24,7 +24,7 @@ from functools import cache
 from typing import ClassVar, Literal
 
 from ..context import LintContext
-from ..finding import Finding, Severity
+from ..finding import Certainty, Finding, Severity
 
 Category = Literal["correctness", "portability", "numerical", "lighting", "performance", "style"]
 CATEGORY_PREFIX: dict[Category, str] = {
@@ -48,6 +48,8 @@ class Rule:
     name: ClassVar[str]  # kebab-case, e.g. "pow-negative-base"
     category: ClassVar[Category]
     severity: ClassVar[Severity] = "warning"
+    # How sure its findings are (finding.Certainty); a rule may say more of one finding.
+    certainty: ClassVar[Certainty] = "likely"
     needs_tree: ClassVar[bool] = True  # skipped when the file did not parse
     fixable: ClassVar[Literal["safe", "unsafe", "none"]] = "none"
     runs_last: ClassVar[bool] = False  # reports on what the other rules ran into
@@ -58,9 +60,17 @@ class Rule:
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         raise NotImplementedError
 
-    def report(self, ctx: LintContext, where: object, message: str, fix: object = None) -> Finding:
+    def report(
+        self,
+        ctx: LintContext,
+        where: object,
+        message: str,
+        fix: object = None,
+        certainty: Certainty | None = None,
+    ) -> Finding:
         """A finding of this rule (`where` is a tree node, a token or a span)."""
-        return ctx.finding(self.code, self.severity, where, message, fix)  # type: ignore[arg-type]
+        sure = certainty or self.certainty
+        return ctx.finding(self.code, self.severity, where, message, fix, sure)  # type: ignore[arg-type]
 
 
 REGISTRY: dict[str, type[Rule]] = {}

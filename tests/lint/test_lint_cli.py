@@ -112,7 +112,8 @@ def test_rule_all_json_lists_every_rule_with_its_docs() -> None:
 
     data = json.loads(glint("rule", "--all", "--json").stdout)
     assert [r["code"] for r in data] == list(all_rules())
-    assert set(data[0]) == {"code", "name", "category", "severity", "fixable", "summary", "details",
+    assert set(data[0]) == {"code", "name", "category", "severity", "certainty", "fixable",
+                            "summary", "details",
                             "why", "example", "fix_title", "fix", "fix_safety",
                             "references", "runs", "on_real_shaders"}  # fmt: skip
     runs = {r["code"]: r["runs"] for r in data}
@@ -136,7 +137,8 @@ def _plant(entry: Path, message: str, fix: dict[str, object] | None = None) -> N
     the output only if the entry was read."""
     content = json.loads(entry.read_text())
     finding = {"file": content["file"], "line": 1, "column": 1, "end_line": 1, "end_column": 5,
-               "code": "C003", "severity": "error", "message": message, "fix": fix}  # fmt: skip
+               "code": "C003", "severity": "error", "message": message, "certainty": "certain",
+               "fix": fix}  # fmt: skip
     entry.write_text(json.dumps({**content, "findings": [finding]}))
 
 

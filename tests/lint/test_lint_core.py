@@ -228,7 +228,7 @@ def test_concise_format_is_one_line_per_finding() -> None:
 def test_json_format_is_the_stable_interface() -> None:
     data = json.loads(REPORTERS["json"](FINDINGS, SOURCES))
     assert list(data[0]) == ["file", "line", "column", "end_line", "end_column", "code",
-                             "severity", "message", "fix"]  # fmt: skip
+                             "severity", "message", "certainty", "fix"]  # fmt: skip
     assert data[0]["fix"]["edits"][0] == {
         "line": 2, "column": 9, "end_line": 2, "end_column": 18, "content": "texture"
     }  # fmt: skip
@@ -292,3 +292,28 @@ def test_a_fix_that_would_break_the_shader_is_not_applied(monkeypatch: pytest.Mo
 def test_a_byte_order_mark_is_not_a_syntax_error() -> None:
     data = b"\xef\xbb\xbfvoid mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n}\n"
     assert lint_bytes(data, "x.glsl", Options(glslang=False)).findings == []
+
+
+def test_a_finding_says_how_sure_it_is() -> None:
+    """A value that is 0 at a named moment is certain, a range that reaches 0 only possible; the
+    certainty travels through json, SARIF and the cache's reader."""
+    from glint.lint.cache import finding_from_json
+    from glint.lint.options import Options
+    from glint.lint.runner import lint_source
+
+    src = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    float a = 1.0 / iTime;\n"  # 0 at the first frame: certain (N011)
+        "    float b = 1.0 / sin(fragCoord.x);\n"  # reaches 0 in its range: possible (N005)
+        "    fragColor = vec4(a + b);\n"
+        "}\n"
+    )
+    found = lint_source(src, "x.glsl", Options(select=["N005", "N011"], glslang=False))
+    sure = {(f.code, f.line): f.certainty for f in found}
+    assert sure[("N011", 2)] == "certain" and sure[("N005", 3)] == "possible"
+    data = json.loads(REPORTERS["json"](found, {"x.glsl": src}))
+    assert [d["certainty"] for d in data] == [f.certainty for f in found]
+    assert [finding_from_json(d).certainty for d in data] == [f.certainty for f in found]
+    sarif = json.loads(REPORTERS["sarif"](found, {"x.glsl": src}))
+    results = sarif["runs"][0]["results"]
+    assert [r["properties"]["certainty"] for r in results] == [f.certainty for f in found]

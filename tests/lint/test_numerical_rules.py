@@ -15,7 +15,9 @@ from glint.lint.rules import all_rules, rule_doc
 from glint.lint.runner import lint_source, lint_text
 
 ROOT = Path(__file__).resolve().parents[2]
-FAST = Options(select=["N"], glslang=False)
+# The range rules. The moment rules (N011, N012; tests/lint/test_moments.py) would report the
+# header's L, which is normalize(vec3(0.0)) at the first frame, where sin(iTime) is 0.
+FAST = Options(select=["N"], ignore=["N011", "N012"], glslang=False)
 
 HEADER = """
 vec3 N = normalize(vec3(fragCoord, 1.0) - 0.5);

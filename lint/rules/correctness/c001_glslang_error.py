@@ -35,6 +35,7 @@ class GlslangError(GlslangRule):
 
     code = "C001"
     name = "glslang-error"
+    certainty = "certain"
     category = "correctness"
     severity = "error"
     wanted = "error"

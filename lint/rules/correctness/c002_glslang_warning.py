@@ -32,6 +32,7 @@ class GlslangWarning(GlslangRule):
 
     code = "C002"
     name = "glslang-warning"
+    certainty = "certain"
     category = "correctness"
     severity = "warning"
     wanted = "warning"

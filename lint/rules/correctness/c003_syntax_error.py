@@ -38,6 +38,7 @@ class SyntaxError_(Rule):
 
     code = "C003"
     name = "syntax-error"
+    certainty = "certain"
     category = "correctness"
     severity = "error"
     needs_tree = False

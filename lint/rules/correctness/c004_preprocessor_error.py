@@ -38,6 +38,7 @@ class PreprocessorProblem(Rule):
 
     code = "C004"
     name = "preprocessor-error"
+    certainty = "certain"
     category = "correctness"
     severity = "error"
     needs_tree = False

@@ -33,6 +33,7 @@ class Unreadable(Rule):
 
     code = "C005"
     name = "unreadable-file"
+    certainty = "certain"
     category = "correctness"
     severity = "error"
     needs_tree = False

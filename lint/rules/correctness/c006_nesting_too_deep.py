@@ -37,6 +37,7 @@ class TooDeep(Rule):
 
     code = "C006"
     name = "nesting-too-deep"
+    certainty = "certain"
     category = "correctness"
     severity = "error"
     needs_tree = False

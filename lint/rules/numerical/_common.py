@@ -14,7 +14,7 @@ from ...analysis.ranges import Interval
 from ...analysis.syntax import callee_name
 from ...analysis.values import Value
 from ...context import LintContext
-from ...finding import Finding, Fix, Severity
+from ...finding import Certainty, Finding, Fix, Severity
 from .. import Rule
 
 Node = Tree | Token
@@ -86,6 +86,14 @@ def wrap_fix(ctx: LintContext, node: Node, template: str, message: str) -> Fix |
 class NumericalRule(Rule):
     category = "numerical"
 
-    def emit(self, ctx: LintContext, where: Node, message: str, fix: Fix | None = None,
-             severity: Severity | None = None) -> Finding:  # fmt: skip
-        return ctx.finding(self.code, severity or self.severity, where, message, fix)
+    def emit(
+        self,
+        ctx: LintContext,
+        where: Node,
+        message: str,
+        fix: Fix | None = None,
+        severity: Severity | None = None,
+        certainty: Certainty | None = None,
+    ) -> Finding:
+        sure = certainty or self.certainty
+        return ctx.finding(self.code, severity or self.severity, where, message, fix, sure)

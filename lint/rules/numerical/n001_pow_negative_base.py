@@ -61,4 +61,6 @@ class PowNegativeBase(NumericalRule):
                 f"clamp it: max({shown}, 0.0), or write a square as a product"
             )
             fix = wrap_fix(ctx, base_node, "max({}, 0.0)", "clamp the base at 0")
-            yield self.emit(ctx, base_node, message, fix)
+            # never above 0: wrong for every input; a witness: wrong at the input it names
+            sure = "certain" if why.startswith("is never above 0") else "likely"
+            yield self.emit(ctx, base_node, message, fix, certainty=sure)

@@ -52,6 +52,7 @@ class SqrtLogDomain(NumericalRule):
 
     code = "N002"
     name = "sqrt-log-domain"
+    certainty = "possible"
     default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
     fixable = "unsafe"
 

@@ -46,6 +46,7 @@ class AcosAsinDomain(NumericalRule):
 
     code = "N003"
     name = "acos-asin-domain"
+    certainty = "possible"
     default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
     fixable = "unsafe"
 

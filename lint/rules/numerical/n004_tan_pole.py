@@ -37,6 +37,7 @@ class TanPole(NumericalRule):
 
     code = "N004"
     name = "tan-pole"
+    certainty = "possible"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         for call, _ in builtin_calls(ctx, "tan"):

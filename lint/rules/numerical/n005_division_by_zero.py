@@ -44,6 +44,7 @@ class DivisionByZero(NumericalRule):
 
     code = "N005"
     name = "division-by-zero"
+    certainty = "possible"
     default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
     fixable = "unsafe"
 

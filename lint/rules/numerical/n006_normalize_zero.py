@@ -44,6 +44,7 @@ class NormalizeZero(NumericalRule):
 
     code = "N006"
     name = "normalize-zero"
+    certainty = "possible"
     default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
 
     _WHY = {

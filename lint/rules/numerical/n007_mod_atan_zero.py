@@ -44,6 +44,7 @@ class ModAtanZero(NumericalRule):
 
     code = "N007"
     name = "mod-atan-zero"
+    certainty = "certain"
     default = False  # below 90% worth acting on in the labelled corpus sample
     severity = "warning"
 

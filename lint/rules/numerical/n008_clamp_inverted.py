@@ -48,6 +48,7 @@ class ClampInverted(NumericalRule):
 
     code = "N008"
     name = "clamp-inverted"
+    certainty = "certain"
     severity = "warning"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

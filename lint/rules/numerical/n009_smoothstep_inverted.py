@@ -54,6 +54,7 @@ class SmoothstepInverted(NumericalRule):
 
     code = "N009"
     name = "smoothstep-inverted"
+    certainty = "certain"
     default = False  # opt-in: few of its sampled findings on real shaders are worth acting on
     severity = "warning"
     fixable = "safe"

@@ -51,6 +51,7 @@ class ValuePassedAsBound(NumericalRule):
 
     code = "N010"
     name = "value-passed-as-bound"
+    certainty = "certain"
     default = False  # opt-in: fewer than 15 findings on the corpus to judge it by
     severity = "warning"
 

@@ -68,6 +68,7 @@ class DivisionByZeroAtMoment(NumericalRule):
 
     code = "N011"
     name = "division-by-zero-at-moment"
+    certainty = "certain"
     default = False  # until its corpus findings are judged
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

@@ -62,6 +62,7 @@ class DomainAtMoment(NumericalRule):
 
     code = "N012"
     name = "domain-at-moment"
+    certainty = "certain"
     default = False  # until its corpus findings are judged
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

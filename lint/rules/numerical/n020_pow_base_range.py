@@ -42,6 +42,7 @@ class PowBaseRange(NumericalRule):
 
     code = "N020"
     name = "pow-base-range"
+    certainty = "possible"
     default = False  # opt-in: a range alone is no evidence that the value is reached
     fixable = "unsafe"
 

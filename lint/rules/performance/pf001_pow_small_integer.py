@@ -59,6 +59,7 @@ class PowSmallInteger(Rule):
 
     code = "PF001"
     name = "pow-small-integer"
+    certainty = "certain"
     category = "performance"
     severity = "info"
     fixable = "safe"

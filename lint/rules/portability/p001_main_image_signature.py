@@ -42,6 +42,7 @@ class MainImageSignature(Rule):
 
     code = "P001"
     name = "main-image-signature"
+    certainty = "certain"
     category = "portability"
     severity = "error"
 

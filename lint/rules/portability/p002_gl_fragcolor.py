@@ -59,6 +59,7 @@ class FragColor(Rule):
 
     code = "P002"
     name = "gl-fragcolor"
+    certainty = "certain"
     category = "portability"
     severity = "error"
     fixable = "safe"

@@ -57,6 +57,7 @@ class Es1Texture(Rule):
 
     code = "P003"
     name = "es1-texture-function"
+    certainty = "certain"
     category = "portability"
     severity = "error"
     fixable = "safe"

@@ -41,6 +41,7 @@ class OldShadertoyUniform(Rule):
 
     code = "P004"
     name = "old-shadertoy-uniform"
+    certainty = "certain"
     category = "portability"
     severity = "error"
     fixable = "safe"

@@ -68,6 +68,7 @@ class IntWhereFloat(Rule):
 
     code = "P005"
     name = "int-where-float"
+    certainty = "certain"
     category = "portability"
     severity = "error"
     fixable = "safe"

@@ -57,6 +57,7 @@ class NonConstantGlobal(Rule):
 
     code = "P006"
     name = "non-constant-global-initialiser"
+    certainty = "certain"
     category = "portability"
     severity = "error"
 

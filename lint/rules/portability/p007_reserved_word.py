@@ -56,6 +56,7 @@ class ReservedWord(Rule):
 
     code = "P007"
     name = "reserved-word"
+    certainty = "certain"
     category = "portability"
     severity = "error"
     needs_tree = False

@@ -54,6 +54,7 @@ class UniformNotProvided(Rule):
 
     code = "P008"
     name = "uniform-not-provided"
+    certainty = "certain"
     category = "portability"
     severity = "warning"
 

@@ -36,6 +36,7 @@ class UnusedSuppression(Rule):
     """
 
     code = UNUSED_SUPPRESSION
+    certainty = "certain"
     name = "unused-suppression"
     category = "style"
     needs_tree = False
@@ -60,6 +61,7 @@ def unused_suppressions(
                         "warning",
                         span,
                         "suppression silences nothing; remove it",
+                        certainty="certain",
                     )
                 )
             continue
@@ -69,8 +71,8 @@ def unused_suppressions(
             message = f"suppression names unknown code{'s' if len(unknown) > 1 else ''} " + (
                 ", ".join(unknown) + "; see `glint rule --all`"
             )
-            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message))
+            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message, None, "certain"))
         if unused:
             message = f"unused suppression of {', '.join(unused)}: nothing to silence; remove it"
-            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message))
+            found.append(ctx.finding(UNUSED_SUPPRESSION, "warning", span, message, None, "certain"))
     return found
