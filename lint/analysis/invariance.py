@@ -1,0 +1,313 @@
+"""Which values of a loop body (or of a function body called many times) are the same on every
+pass: a data-flow closure over the writes of the region. A variable written in the region but
+declared outside it carries a value from one pass to the next and varies; so do the parameters
+of a function across its calls, and globals that some function called from the region writes.
+Everything whose value is computed from varying names, or whose write is guarded by a condition
+that reads one, varies too; the rest is computed alike on every pass.
+
+Also a rough cost of the work under a node (ALU operations, a texture fetch as 20, a loop as
+its trip count times its body, a call of the file's own function as its body), and whether the
+work is of a kind compilers do not move out of loops (a texture fetch, a loop)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from lark import Tree
+
+from ..context import LintContext, Node, walk
+from .functions import Function
+from .syntax import call_args, call_name, names_in, root_var
+
+LOOPS = ("for_statement", "while_statement", "do_statement")
+
+# Token for the effect of a call whose function writes globals: never the same on every pass.
+IMPURE = "<impure>"
+
+# Builtins with a cost above one ALU operation (rough issue slots on current GPUs).
+_TRANSCENDENTAL = {
+    "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "asinh", "acosh",
+    "atanh", "pow", "exp", "exp2", "log", "log2",
+}  # fmt: skip
+_ROOTS = {"sqrt", "inversesqrt", "length", "distance", "normalize", "reflect", "refract"}
+_FETCH_COST = 20  # a texture fetch: memory latency that the ALU rarely hides in a loop
+_UNKNOWN_CALL_COST = 8  # a function of another tab (Common): a hash or a noise, typically
+
+# The trip count of a loop whose bound the code does not state (a march).
+UNKNOWN_TRIPS = 64
+
+
+def is_fetch(name: str | None) -> bool:
+    """A texture fetch builtin (texture, textureLod, texelFetch, texture2D, ...)."""
+    return bool(name) and (
+        (name.startswith("texture") and not name.startswith(("textureSize", "textureQuery")))
+        or name.startswith("texel")  # type: ignore[union-attr]
+    )
+
+
+def _builtin_cost(name: str) -> int:
+    if is_fetch(name):
+        return _FETCH_COST
+    if name in _TRANSCENDENTAL:
+        return 4
+    if name in _ROOTS:
+        return 3
+    if name in ("inverse", "determinant"):
+        return 20
+    return 1
+
+
+@dataclass
+class Program:
+    """Per-file facts about the file's functions: cost, whether they fetch or loop, and which
+    globals they read and write, callees included."""
+
+    ctx: LintContext
+    defined: dict[str, Function]
+    globals: set[str]  # non-constant, non-uniform globals
+    trips: object  # callable (loop, fn) -> int
+    _cost: dict[str, int] = field(default_factory=dict)
+    _sticky: dict[str, bool] = field(default_factory=dict)
+    _reads: dict[str, frozenset[str]] = field(default_factory=dict)
+    _writes: dict[str, frozenset[str]] = field(default_factory=dict)
+
+    # --- per function, callees included (memoised; GLSL has no recursion, guarded anyway) --
+
+    def function_cost(self, name: str) -> int:
+        if name not in self.defined:
+            return _UNKNOWN_CALL_COST
+        if name not in self._cost:
+            self._cost[name] = _UNKNOWN_CALL_COST  # a recursion guard
+            fn = self.defined[name]
+            self._cost[name] = self.cost(fn.body, fn)
+        return self._cost[name]
+
+    def function_sticky(self, name: str) -> bool:
+        """Whether the function fetches a texture or loops (itself or in a callee)."""
+        if name not in self.defined:
+            return False
+        if name not in self._sticky:
+            self._sticky[name] = False
+            self._sticky[name] = self.sticky(self.defined[name].body)
+        return self._sticky[name]
+
+    def global_reads(self, name: str) -> frozenset[str]:
+        return self._closure(name, self._reads, lambda fn: names_in(fn.body))
+
+    def global_writes(self, name: str) -> frozenset[str]:
+        return self._closure(name, self._writes, lambda fn: fn.written)
+
+    def _closure(self, name: str, memo: dict[str, frozenset[str]], own: object) -> frozenset[str]:
+        if name not in self.defined:
+            return frozenset()
+        if name not in memo:
+            memo[name] = frozenset()
+            fn = self.defined[name]
+            found = set(own(fn)) - set(fn.locals) - set(fn.params)  # type: ignore[operator]
+            found &= self.globals
+            for call in walk(fn.body):
+                if call.data == "call" and (callee := call_name(call)) in self.defined:
+                    found |= self._closure(callee, memo, own)  # type: ignore[arg-type]
+            memo[name] = frozenset(found)
+        return memo[name]
+
+    # --- per node ---------------------------------------------------------------------------
+
+    def cost(self, node: Node, fn: Function | None) -> int:
+        """Operations the node runs, loops multiplied by their trip counts."""
+        total = 0
+        stack: list[tuple[Node, int]] = [(node, 1)]
+        while stack:
+            item, times = stack.pop()
+            if not isinstance(item, Tree):
+                continue
+            kind = item.data
+            if kind == "call":
+                name = call_name(item)
+                if name in self.defined:
+                    total += times * self.function_cost(name)
+                elif name is not None and name[:1].islower() and not _is_constructor(name):
+                    total += times * (_builtin_cost(name) if _is_builtin(name)
+                                      else _UNKNOWN_CALL_COST)  # fmt: skip
+                stack += [(c, times) for c in item.children[1:]]
+                continue
+            if kind in LOOPS:
+                trips = self.trips(item, fn) if fn is not None else UNKNOWN_TRIPS  # type: ignore[operator]
+                parts = item.children
+                if kind == "for_statement":
+                    stack.append((parts[0], times))
+                    parts = parts[1:]
+                stack += [(c, times * max(1, trips)) for c in parts]
+                continue
+            if kind in ("binary", "unary", "prefix", "postfix", "assignment", "ternary"):
+                total += times
+            stack += [(c, times) for c in item.children]
+        return total
+
+    def sticky(self, node: Node) -> bool:
+        """Whether the node fetches a texture or loops, itself or in a function it calls:
+        work that compilers do not move out of a loop."""
+        for sub in walk(node):
+            if sub.data in LOOPS:
+                return True
+            if sub.data == "call":
+                name = call_name(sub)
+                if is_fetch(name) and name not in self.defined:
+                    return True
+                if name in self.defined and self.function_sticky(name):  # type: ignore[arg-type]
+                    return True
+        return False
+
+    def reads(self, node: Node) -> set[str]:
+        """The names the node's value depends on: its variables and the globals its calls read
+        (IMPURE when a call writes globals)."""
+        found = names_in(node)
+        if isinstance(node, Tree):
+            for call in walk(node):
+                if call.data == "call" and (name := call_name(call)) in self.defined:
+                    found |= self.global_reads(name)  # type: ignore[arg-type]
+                    if self.global_writes(name):  # type: ignore[arg-type]
+                        found.add(IMPURE)
+        return found
+
+
+_CONSTRUCTORS = {"float", "int", "uint", "bool"}
+
+
+def _is_constructor(name: str) -> bool:
+    return name in _CONSTRUCTORS or name[:3] in ("vec", "mat") or name[1:4] in ("vec", "mat")
+
+
+def _is_builtin(name: str) -> bool:
+    from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+
+    return name in BUILTIN_FUNCTIONS
+
+
+@dataclass
+class Write:
+    """One write of a region: its target, what its value depends on (reads), and the names of
+    the conditions that decide whether it runs (control)."""
+
+    target: str
+    reads: set[str]
+    control: frozenset[str]
+
+
+def writes_in(prog: Program, node: Node, control: frozenset[str] = frozenset()) -> list[Write]:
+    """Every write under the node with its dependencies; conditions of ifs, switches and loops
+    control the writes under them, and a break or continue under a condition controls every
+    write of its loop (the loop's number of passes depends on it)."""
+    found: list[Write] = []
+    stack: list[tuple[Node, frozenset[str]]] = [(node, control)]
+    while stack:
+        item, ctl = stack.pop()
+        if not isinstance(item, Tree):
+            continue
+        kind = item.data
+        if kind == "if_statement":
+            stack.append((item.children[0], ctl))
+            inner = ctl | prog.reads(item.children[0])
+            stack += [(c, inner) for c in item.children[1:]]
+            continue
+        if kind == "switch_statement":
+            stack.append((item.children[0], ctl))
+            inner = ctl | prog.reads(item.children[0])
+            stack += [(c, inner) for c in item.children[1:]]
+            continue
+        if kind in LOOPS:
+            cond = {"for_statement": 1, "while_statement": 0, "do_statement": 1}[kind]
+            inner = ctl | prog.reads(item.children[cond]) | _exit_conditions(prog, item)
+            parts = list(item.children)
+            if kind == "for_statement":
+                stack.append((parts.pop(0), ctl))
+            stack += [(c, inner) for c in parts]
+            continue
+        if kind == "ternary":
+            stack.append((item.children[0], ctl))
+            inner = ctl | prog.reads(item.children[0])
+            stack += [(c, inner) for c in item.children[1:]]
+            continue
+        if kind == "declarator":
+            init = item.children[-1] if len(item.children) > 1 else None
+            reads = prog.reads(init) if isinstance(init, Tree) else set()
+            found.append(Write(str(item.children[0]), reads, ctl))
+        elif kind == "condition_declaration":
+            found.append(Write(str(item.children[1]), prog.reads(item.children[-1]), ctl))
+        elif kind == "assignment":
+            target = root_var(item.children[0])
+            if target:
+                reads = prog.reads(item.children[2]) | (names_in(item.children[0]) - {target})
+                partial = not (isinstance(item.children[0], Tree)
+                               and item.children[0].data == "variable")  # fmt: skip
+                if str(item.children[1]) != "=" or partial:
+                    reads.add(target)
+                found.append(Write(target, reads, ctl))
+        elif kind in ("prefix", "postfix"):
+            operand = item.children[1] if kind == "prefix" else item.children[0]
+            target = root_var(operand)
+            if target:
+                found.append(Write(target, {target}, ctl))
+        elif kind == "call" and (name := call_name(item)) in prog.defined:
+            fn = prog.defined[name]  # type: ignore[index]
+            args = call_args(item)
+            reads = prog.reads(item)
+            for i, param in enumerate(fn.param_order):
+                out = "out" in fn.params[param][0] and i < len(args)
+                if out and (target := root_var(args[i])):
+                    found.append(Write(target, reads | {target}, ctl))
+        stack += [(c, ctl) for c in item.children]
+    return found
+
+
+def _exit_conditions(prog: Program, loop: Tree) -> set[str]:
+    """Names read by the conditions of the ifs in a loop that hold a break or continue."""
+    found: set[str] = set()
+    for node in walk(loop):
+        if node.data == "if_statement" and any(
+            sub.data == "jump_statement" and str(sub.children[0]) in ("break", "continue")
+            for part in node.children[1:]
+            for sub in walk(part)
+        ):
+            found |= prog.reads(node.children[0])
+    return found
+
+
+def declared_in(node: Node) -> set[str]:
+    """Names declared under the node (locals of a block, loop counters of nested loops)."""
+    found: set[str] = set()
+    for sub in walk(node):
+        if sub.data == "declarator":
+            found.add(str(sub.children[0]))
+        elif sub.data == "condition_declaration":
+            found.add(str(sub.children[1]))
+    return found
+
+
+def varying(seed: Iterable[str], writes: list[Write]) -> set[str]:
+    """The closure of the seed over the writes: a write that reads a varying name, or that a
+    varying condition controls, makes its target vary (linear: each write fires once)."""
+    result = set(seed)
+    by_name: dict[str, list[int]] = {}
+    for index, write in enumerate(writes):
+        for name in write.reads | write.control:
+            by_name.setdefault(name, []).append(index)
+    todo = list(result)
+    fired: set[int] = set()
+    while todo:
+        name = todo.pop()
+        for index in by_name.get(name, ()):
+            if index in fired:
+                continue
+            fired.add(index)
+            target = writes[index].target
+            if target not in result:
+                result.add(target)
+                todo.append(target)
+    return result
+
+
+def region_parts(loop: Tree) -> list[Node]:
+    """The parts of a loop that run on every pass: all but a for's init."""
+    return list(loop.children[1:] if loop.data == "for_statement" else loop.children)
