@@ -16,7 +16,8 @@ from .. import Rule, register
 from ..lighting._common import macros_used, short_text
 from ._common import BUILTINS, WRITERS
 
-# Builtins worth hoisting: transcendental, square roots, texture fetches, normalisation.
+# Builtins worth hoisting: transcendental, square roots, normalisation. Texture fetches are
+# PF004's (invariant-expensive-call-in-loop), which follows them through calls too.
 _EXPENSIVE = {
     "normalize",
     "length",
@@ -37,11 +38,6 @@ _EXPENSIVE = {
     "log2",
     "sqrt",
     "inversesqrt",
-    "texture",
-    "textureLod",
-    "textureGrad",
-    "texelFetch",
-    "textureProj",
     "inverse",
     "determinant",
     "reflect",
@@ -210,8 +206,8 @@ def calls_per_pixel(ctx: LintContext, up: dict[int, Tree]) -> dict[str, int]:
 @register
 class LoopInvariant(Rule):
     """Finds expensive work inside a loop that gives the same value on every iteration: a call to
-    normalize, length, a trigonometric or exponential function or a texture fetch whose inputs are
-    not changed by the loop.
+    normalize, length, a trigonometric or exponential function whose inputs are not changed by the
+    loop (a texture fetch is PF004's).
 
     What counts as invariant: every variable the expression reads is neither written in the loop
     (assignment, ++/--, an out argument), nor declared inside it, nor a global that any function
@@ -227,8 +223,8 @@ class LoopInvariant(Rule):
     is on targets that do not hoist reliably (ANGLE/FXC, mobile) and in hot march or fold loops.
 
     Why is this bad?
-        A raymarch or shadow loop runs up to hundreds of times per pixel; a normalize or texture
-        fetch of loop-invariant inputs is paid on every step where the compiler does not hoist
+        A raymarch or shadow loop runs up to hundreds of times per pixel; a normalize or a sin
+        of loop-invariant inputs is paid on every step where the compiler does not hoist
         it (ANGLE's HLSL path and many mobile drivers do not reliably).
 
     Example:
