@@ -64,13 +64,17 @@ class Program:
     globals they read and write, callees included."""
 
     ctx: LintContext
-    defined: dict[str, Function]
+    overloads: dict[str, list[Function]]  # every definition of each name
     globals: set[str]  # non-constant, non-uniform globals
     trips: object  # callable (loop, fn) -> int
     _cost: dict[str, int] = field(default_factory=dict)
     _sticky: dict[str, bool] = field(default_factory=dict)
     _reads: dict[str, frozenset[str]] = field(default_factory=dict)
     _writes: dict[str, frozenset[str]] = field(default_factory=dict)
+
+    @property
+    def defined(self) -> dict[str, list[Function]]:
+        return self.overloads
 
     # --- per function, callees included (memoised; GLSL has no recursion, guarded anyway) --
 
@@ -79,8 +83,7 @@ class Program:
             return _UNKNOWN_CALL_COST
         if name not in self._cost:
             self._cost[name] = _UNKNOWN_CALL_COST  # a recursion guard
-            fn = self.defined[name]
-            self._cost[name] = self.cost(fn.body, fn)
+            self._cost[name] = max(self.cost(fn.body, fn) for fn in self.defined[name])
         return self._cost[name]
 
     def function_sticky(self, name: str) -> bool:
@@ -89,7 +92,7 @@ class Program:
             return False
         if name not in self._sticky:
             self._sticky[name] = False
-            self._sticky[name] = self.sticky(self.defined[name].body)
+            self._sticky[name] = any(self.sticky(fn.body) for fn in self.defined[name])
         return self._sticky[name]
 
     def global_reads(self, name: str) -> frozenset[str]:
@@ -103,12 +106,13 @@ class Program:
             return frozenset()
         if name not in memo:
             memo[name] = frozenset()
-            fn = self.defined[name]
-            found = set(own(fn)) - set(fn.locals) - set(fn.params)  # type: ignore[operator]
-            found &= self.globals
-            for call in walk(fn.body):
-                if call.data == "call" and (callee := call_name(call)) in self.defined:
-                    found |= self._closure(callee, memo, own)  # type: ignore[arg-type]
+            found: set[str] = set()
+            for fn in self.defined[name]:  # overloads: what any of them does
+                mine = set(own(fn)) - set(fn.locals) - set(fn.params)  # type: ignore[operator]
+                found |= mine & self.globals
+                for call in walk(fn.body):
+                    if call.data == "call" and (callee := call_name(call)) in self.defined:
+                        found |= self._closure(callee, memo, own)  # type: ignore[arg-type]
             memo[name] = frozenset(found)
         return memo[name]
 
@@ -250,13 +254,13 @@ def writes_in(prog: Program, node: Node, control: frozenset[str] = frozenset()) 
             if target:
                 found.append(Write(target, {target}, ctl))
         elif kind == "call" and (name := call_name(item)) in prog.defined:
-            fn = prog.defined[name]  # type: ignore[index]
             args = call_args(item)
             reads = prog.reads(item)
-            for i, param in enumerate(fn.param_order):
-                out = "out" in fn.params[param][0] and i < len(args)
-                if out and (target := root_var(args[i])):
-                    found.append(Write(target, reads | {target}, ctl))
+            for fn in prog.defined[name]:  # type: ignore[index]
+                for i, param in enumerate(fn.param_order):
+                    out = "out" in fn.params[param][0] and i < len(args)
+                    if out and (target := root_var(args[i])):
+                        found.append(Write(target, reads | {target}, ctl))
         stack += [(c, ctl) for c in item.children]
     return found
 

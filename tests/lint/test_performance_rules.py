@@ -317,6 +317,26 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     assert found(src, "PF004") == [("PF004", 7, 5)]
 
 
+def test_pf004_work_on_a_parameter_the_loop_passes_unchanged_is_the_same_on_every_call() -> None:
+    src = """float map(vec3 p, vec2 uv) {
+    float grain = texture(iChannel0, uv).x;
+    return length(p) - 1.0 - 0.01 * grain;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    vec3 rd = normalize(vec3(uv - 0.5, 1.0));
+    float t = 0.0;
+    for (int i = 0; i < 80; i++) t += map(rd * t, uv);
+    fragColor = vec4(t);
+}
+"""
+    findings = [f for f in lint_source(src, "x.glsl", FAST) if f.code == "PF004"]
+    assert [(f.line, f.column) for f in findings] == [(2, 19)]
+    assert "do not change between these calls" in findings[0].message
+    # the same function called with a coordinate that moves along the ray
+    assert found(src.replace("map(rd * t, uv)", "map(rd * t, uv * t)"), "PF004") == []
+
+
 def test_pf004_an_inner_loop_that_breaks_on_a_changing_condition_varies() -> None:
     src = """float f(vec3 ro, vec3 rd, float limit) {
     float s = 0.0;
@@ -374,7 +394,7 @@ float fold(vec3 p) {
 
 def test_pf004_calls_of_functions_that_write_globals_are_not_moved() -> None:
     src = """float count;
-float sample_(vec2 uv) { count += 1.0; return texture(iChannel0, uv).x; }
+float sample_(vec2 uv) { count += 1.0; return texture(iChannel0, uv + count).x; }
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float s = 0.0;
     for (int i = 0; i < 16; i++) s += sample_(fragCoord) * float(i);

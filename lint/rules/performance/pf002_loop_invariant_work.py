@@ -110,11 +110,11 @@ HOT = 64
 _UNKNOWN_TRIPS = HOT
 
 
-def trip_count(ctx: LintContext, loop: Tree, fn: Function) -> int:
+def trip_count(ctx: LintContext, loop: Tree, fn: Function, unknown: int = _UNKNOWN_TRIPS) -> int:
     """The number of passes of `for (i = A; i < B; i += k)` with constant A, B and k (macros
-    expanded, const names and locals with one value included); _UNKNOWN_TRIPS otherwise."""
+    expanded, const names and locals with one value included); `unknown` otherwise."""
     if loop.data != "for_statement" or len(loop.children) < 4:
-        return _UNKNOWN_TRIPS
+        return unknown
     init, cond, step = loop.children[0], loop.children[1], loop.children[2]
     start = None
     for node in walk(init):
@@ -124,11 +124,11 @@ def trip_count(ctx: LintContext, loop: Tree, fn: Function) -> int:
             start = _number(ctx, node.children[2], fn)
     op = str(cond.children[1]) if isinstance(cond, Tree) and cond.data == "binary" else ""
     if start is None or op not in ("<", "<=", ">", ">="):
-        return _UNKNOWN_TRIPS
+        return unknown
     end = _number(ctx, cond.children[2], fn)  # type: ignore[union-attr]
     delta = _step(ctx, step, fn)
     if end is None or not delta:
-        return _UNKNOWN_TRIPS
+        return unknown
     span = (end - start) if delta > 0 else (start - end)
     span += 1 if op in ("<=", ">=") else 0
     return max(0, math.ceil(span / abs(delta)))

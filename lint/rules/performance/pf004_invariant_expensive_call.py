@@ -22,7 +22,7 @@ from ...context import LintContext, Node, walk, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ..lighting._common import short_text
-from .pf002_loop_invariant_work import _enclosing_trips, _global_names, trip_count
+from .pf002_loop_invariant_work import _enclosing_trips, _from_macro, _global_names, trip_count
 
 # Expression nodes a hoisted value can be (statements and declarations are not).
 _EXPRESSIONS = {"call", "binary", "unary", "constructor", "field", "index", "ternary"}
@@ -31,12 +31,17 @@ _EXPRESSIONS = {"call", "binary", "unary", "constructor", "field", "index", "ter
 # fetch counts 20) below which a finding is not worth a change.
 WASTE = 40
 
+# The least share of the loop's (or the function's) own work that the repeated pieces must
+# make: three extra fetches next to four full renders of an AA loop change nothing.
+SHARE = 1 / 50
+
 
 @dataclass
 class _Site:
     runs: int  # how many times the function runs per pixel, at most
     caller: str | None  # the caller that makes it run that often
     call: Tree | None  # the call in that caller
+    stated: bool = True  # every loop on the way states its trip count (no march)
 
 
 def _runs(ctx: LintContext, up: dict[int, Tree]) -> dict[str, _Site]:
@@ -61,13 +66,24 @@ def _runs(ctx: LintContext, up: dict[int, Tree]) -> dict[str, _Site]:
         for caller, call in sites.get(name, ()):
             runs = count(caller.name, depth + 1) * _enclosing_trips(ctx, call, caller, up)
             if runs > best.runs:
-                best = _Site(min(runs, 1 << 30), caller.name, call)
+                stated = result[caller.name].stated and _stated(ctx, call, caller, up)
+                best = _Site(min(runs, 1 << 30), caller.name, call, stated)
         result[name] = best
         return best.runs
 
     for name in defined:
         count(name, 0)
     return result
+
+
+def _stated(ctx: LintContext, node: Tree, fn: Function, up: dict[int, Tree]) -> bool:
+    """Whether every loop of the function around the node states its trip count."""
+    current: Node = node
+    while (parent := up.get(id(current))) is not None and parent is not fn.node:
+        if parent.data in LOOPS and not trip_count(ctx, parent, fn, unknown=0):
+            return False
+        current = parent
+    return True
 
 
 def _loop_of_chain(sites: dict[str, _Site], name: str, up: dict[int, Tree]) -> Tree | None:
@@ -100,6 +116,41 @@ def _fixed_globals(ctx: LintContext, prog: Program, sites: dict[str, _Site]) -> 
         for loop in walk_kind(fn.body, *LOOPS) if once else [fn.body]:
             moving |= {w.target for w in writes_in(prog, loop)}
     return prog.globals - moving
+
+
+def _moving_in_loop(
+    prog: Program, fn: Function, loop: Tree, decls: list[tuple[str, int]]
+) -> tuple[set[str], set[str]]:
+    """The names that vary between the passes of the loop, and the names declared in it (fresh
+    on every pass)."""
+    parts = region_parts(loop)
+    writes = [w for part in parts for w in writes_in(prog, part)]
+    # a name declared in the loop that also names a variable outside it (a shadowed counter, a
+    # parameter, a global) is taken as the outer one: varying if written
+    declared = set().union(*(declared_in(p) for p in parts))
+    declared -= set(fn.params) | prog.globals | _declared_outside(decls, loop)
+    seed = {w.target for w in writes if w.target not in declared} | {IMPURE}
+    for part in parts:
+        for call in walk(part):
+            if call.data == "call" and (name := call_name(call)) in prog.defined:
+                seed |= prog.global_writes(name)  # type: ignore[arg-type]
+    return varying(seed, writes), declared
+
+
+def fns_of(prog: Program) -> list[Function]:
+    return [fn for group in prog.defined.values() for fn in group]
+
+
+def _innermost_loop(node: Tree, fn: Function, up: dict[int, Tree]) -> Tree | None:
+    """The innermost loop of the function around the node (a for-init is not in its loop)."""
+    current: Node = node
+    while (parent := up.get(id(current))) is not None and parent is not fn.node:
+        if parent.data in LOOPS and not (
+            parent.data == "for_statement" and parent.children[0] is current
+        ):
+            return parent
+        current = parent
+    return None
 
 
 def _declared_outside(decls: list[tuple[str, int]], loop: Tree) -> set[str]:
@@ -198,9 +249,12 @@ class InvariantExpensiveCall(Rule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         constants, other_globals = _global_names(ctx)
         fns = functions(ctx)
+        overloads: dict[str, list[Function]] = {}
+        for f in fns:
+            overloads.setdefault(f.name, []).append(f)
         prog = Program(
             ctx,
-            {f.name: f for f in fns},
+            overloads,
             other_globals,
             lambda loop, fn: trip_count(ctx, loop, fn),
         )
@@ -208,15 +262,21 @@ class InvariantExpensiveCall(Rule):
         sites = _runs(ctx, up)
         fixed = _fixed_globals(ctx, prog, sites)
         self._reported: list[tuple[int, int]] = []
+        # what varies in every loop first: the calls in a loop tell which parameters of the
+        # called function change between its calls there
+        self._loops: dict[int, tuple[set[str], set[str]]] = {}
         for fn in fns:
-            runs = sites.get(fn.name, _Site(1, None, None)).runs
             decls = [(str(n.children[0]), n.meta.start_pos)
                      for n in walk_kind(fn.body, "declarator")]  # fmt: skip
             for loop in walk_kind(fn.body, *LOOPS):
-                if self._covered(loop):
-                    continue
-                yield from self._loop(ctx, prog, fn, loop, runs, up, decls)
-            if runs >= 2:
+                self._loops[id(loop)] = _moving_in_loop(prog, fn, loop, decls)
+        for fn in fns:
+            runs = sites.get(fn.name, _Site(1, None, None)).runs
+            for loop in walk_kind(fn.body, *LOOPS):
+                if not self._covered(loop):
+                    yield from self._loop(ctx, prog, fn, loop, runs, up)
+        for fn in fns:
+            if sites.get(fn.name, _Site(1, None, None)).runs >= 2:
                 yield from self._function(ctx, prog, fn, sites, fixed, up)
 
     def _covered(self, node: Tree) -> bool:
@@ -236,23 +296,12 @@ class InvariantExpensiveCall(Rule):
         loop: Tree,
         runs: int,
         up: dict[int, Tree],
-        decls: list[tuple[str, int]],
     ) -> Iterator[Finding]:
         trips = trip_count(ctx, loop, fn)
         if trips < 2:
             return
         parts = region_parts(loop)
-        writes = [w for part in parts for w in writes_in(prog, part)]
-        # a name declared in the loop that also names a variable outside it (a shadowed
-        # counter, a parameter, a global) is taken as the outer one: varying if written
-        declared = set().union(*(declared_in(p) for p in parts))
-        declared -= set(fn.params) | prog.globals | _declared_outside(decls, loop)
-        seed = {w.target for w in writes if w.target not in declared} | {IMPURE}
-        for part in parts:
-            for call in walk(part):
-                if call.data == "call" and (name := call_name(call)) in prog.defined:
-                    seed |= prog.global_writes(name)  # type: ignore[arg-type]
-        moving = varying(seed, writes)
+        moving, declared = self._loops[id(loop)]
         line = ctx.span(loop)[0]
         outside = runs * _enclosing_trips(ctx, loop, fn, up)
         pointless = self._pointless(ctx, prog, loop, declared, trips, moving)
@@ -260,11 +309,15 @@ class InvariantExpensiveCall(Rule):
             yield pointless
             return
         found: list[tuple[Tree, int]] = []
+        share: list[int] = []
         for node in self._candidates(prog, parts, moving):
             if self._covered(node):
                 continue
             inside = runs * _enclosing_trips(ctx, node, fn, up)
             found.append((node, (inside - outside) * prog.cost(node, fn)))
+            share.append(inside // max(1, outside) * prog.cost(node, fn))
+        if sum(share) < SHARE * prog.cost(loop, fn):
+            return
         yield from self._group(
             ctx,
             found,
@@ -287,12 +340,14 @@ class InvariantExpensiveCall(Rule):
         if node.data in LOOPS:
             what, verb, fix = "this inner loop", "computes the same result", "run it"
         else:
-            what, verb = f"`{short_text(ctx, node, 60)}`", "gives the same value"
+            what = f"`{short_text(ctx, node, 60)}`{_from_macro(ctx, node)}"
+            verb = "gives the same value"
             fix = "do the fetch" if _fetches(node) else "make the call"
         more = ""
         if len(found) > 1:
             lines = ", ".join(str(n) for n in sorted({ctx.span(n)[0] for n, _ in found[1:]}))
-            more = f" ({len(found) - 1} more such at line {lines})"
+            plural = "s" if len(found) > 2 else ""
+            more = f" ({len(found) - 1} more such at line{plural} {lines})"
         yield self.report(
             ctx, node, f"{what} {verb} on {every}: {reads.format(inputs)}{more}; {fix} {where}"
         )
@@ -347,26 +402,73 @@ class InvariantExpensiveCall(Rule):
         fixed: set[str],
         up: dict[int, Tree],
     ) -> Iterator[Finding]:
+        params, outside = self._moving_params(ctx, prog, fn, sites, up)
         writes = writes_in(prog, fn.body)
-        seed = set(fn.params) | (prog.globals - fixed) | {IMPURE}
+        seed = params | (prog.globals - fixed) | {IMPURE}
         moving = varying(seed, writes)
         runs = sites[fn.name].runs
         hot = _loop_of_chain(sites, fn.name, up)
         found: list[tuple[Tree, int]] = []
+        share: list[int] = []
         for node in self._candidates(prog, list(fn.body.children), moving):
             if self._covered(node):
                 continue
-            found.append((node, (runs * _enclosing_trips(ctx, node, fn, up) - 1)
+            share.append(_enclosing_trips(ctx, node, fn, up) * prog.cost(node, fn))
+            found.append((node, (runs * _enclosing_trips(ctx, node, fn, up) - outside)
                           * prog.cost(node, fn)))  # fmt: skip
         hot_line = f"the loop at line {ctx.span(hot)[0]}" if hot is not None else "its caller"
+        if sum(share) < SHARE * prog.cost(fn.body, fn):
+            return
         yield from self._group(
             ctx,
             found,
-            f"every call of {fn.name}, which runs up to {runs} times per pixel from {hot_line}",
-            f"it reads none of {fn.name}'s parameters, only {{}}",
+            f"every call of {fn.name}, which runs "
+            + (f"up to {runs} times per pixel" if sites[fn.name].stated else "many times per pixel")
+            + f" from {hot_line}",
+            (
+                f"it reads none of {fn.name}'s parameters, only {{}}"
+                if params >= set(fn.params)
+                else "it reads only {}, which do not change between these calls"
+            ),  # fmt: skip
             f"once before {hot_line} (or in mainImage) and pass the result in or keep it in a "
             "global",
         )
+
+    def _moving_params(
+        self,
+        ctx: LintContext,
+        prog: Program,
+        fn: Function,
+        sites: dict[str, _Site],
+        up: dict[int, Tree],
+    ) -> tuple[set[str], int]:
+        """The parameters of the function that change between its repeated calls, and how many
+        times per pixel its repeated calls start anew. A call in a loop passes unchanged values
+        where its argument reads nothing the loop changes; a call outside any loop, in a
+        function that runs repeatedly, is taken to pass new values each time."""
+        moving: set[str] = {p for p in fn.params if "out" in fn.params[p][0]}
+        outside = 1
+        for caller in fns_of(prog):
+            if caller.name == fn.name:
+                continue
+            caller_runs = sites.get(caller.name, _Site(1, None, None)).runs
+            for call in walk_kind(caller.body, "call"):
+                if call_name(call) != fn.name:
+                    continue
+                loop = _innermost_loop(call, caller, up)
+                if self._covered(call):  # the whole call is reported as the same in its loop
+                    return set(fn.params), 1
+                if loop is None or id(loop) not in self._loops:
+                    if caller_runs > 1:
+                        return set(fn.params), 1
+                    continue
+                changed = self._loops[id(loop)][0]
+                args = call_args(call)
+                for i, param in enumerate(fn.param_order):
+                    if i >= len(args) or prog.reads(args[i]) & changed:
+                        moving.add(param)
+                outside = max(outside, caller_runs * _enclosing_trips(ctx, loop, caller, up))
+        return moving, outside
 
     # --- candidates -------------------------------------------------------------------------
 
