@@ -4,6 +4,7 @@ apply fixes when asked. Nothing here raises on bad input: every problem is a fin
 from __future__ import annotations
 
 import codecs
+import re
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -11,6 +12,7 @@ from dataclasses import dataclass, field
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import parse, preprocess
+from glint.compiler.glsl.preprocessor import Preprocessed
 
 from .context import LintContext, indexed
 from .finding import Finding
@@ -63,7 +65,9 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
         ctx.pre = preprocess(text, file)
     except InputError as exc:
         ctx.front_end_error = exc
-        return ctx
+        ctx.pre = _with_undefined_macros_as_zero(text, file, exc)
+        if ctx.pre is None:
+            return ctx
     except RecursionError:  # macro calls nested thousands deep in arguments
         ctx.too_deep = True
         return ctx
@@ -74,7 +78,7 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
     try:
         ctx.tree = parse(ctx.pre.text, file)
     except InputError as exc:
-        ctx.front_end_error = exc
+        ctx.front_end_error = ctx.front_end_error or exc  # the #if error (C004) comes first
     except RecursionError:
         # Input nested deeper than the parser can follow: C006 alone is reported.
         ctx.tree = None
@@ -87,6 +91,28 @@ def build_context(text: str, file: str, options: Options) -> LintContext:
             ctx.tree = None
             ctx.too_deep = True
     return ctx
+
+
+_UNDEFINED = re.compile(r"undefined macro '(\w+)'")
+
+
+def _with_undefined_macros_as_zero(text: str, file: str, error: InputError) -> Preprocessed | None:
+    """The file preprocessed with the macros that its #if tests but never defines taken as 0
+    (as C does): they come from another tab (ShaderToy's Common), and the rest of the file is
+    still worth analysing. C004 reports the #if all the same. None for any other error."""
+    predefined: dict[str, str] = {}
+    for _ in range(8):
+        found = _UNDEFINED.search(str(error))
+        if found is None or found.group(1) in predefined:
+            return None
+        predefined[found.group(1)] = "0"
+        try:
+            return preprocess(text, file, predefined)
+        except InputError as exc:
+            error = exc
+        except RecursionError:
+            return None
+    return None
 
 
 def lint_source(
