@@ -122,7 +122,7 @@ def test_syntax_error_without_glslang_is_c003_at_its_line() -> None:
     assert [(f.code, f.line) for f in found] == [("C003", 3)]
 
 
-def test_a_macro_that_an_if_tests_but_no_tab_defines_is_c004_and_the_file_is_still_analysed() -> None:
+def test_an_if_on_a_macro_no_tab_defines_is_c004_and_the_file_is_still_analysed() -> None:
     # SURFACE_CACHE comes from ShaderToy's Common tab: C004 says so, and the rest of the file
     # is linted with it taken as 0 (the #else branch), as C would
     text = (
