@@ -11,6 +11,7 @@ work is of a kind compilers do not move out of loops (a texture fetch, a loop)."
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
@@ -191,54 +192,100 @@ def _is_builtin(name: str) -> bool:
 
 @dataclass
 class Write:
-    """One write of a region: its target, what its value depends on (reads), and the names of
-    the conditions that decide whether it runs (control)."""
+    """One write of a function: its target, what its value depends on (reads: names, and the
+    guard that decides whether it runs), where it is, and whether it declares the target.
+    Guards are writes too, of pseudo-names `#<id>`: an if, switch or ternary's guard reads its
+    condition and the enclosing guard; a loop's guard reads its condition, the enclosing guard
+    and the guards of the ifs that break out of it (its number of passes depends on them)."""
 
     target: str
-    reads: set[str]
-    control: frozenset[str]
+    reads: frozenset[str]
+    pos: int
+    declares: bool = False
 
 
-def writes_in(prog: Program, node: Node, control: frozenset[str] = frozenset()) -> list[Write]:
-    """Every write under the node with its dependencies; conditions of ifs, switches and loops
-    control the writes under them, and a break or continue under a condition controls every
-    write of its loop (the loop's number of passes depends on it)."""
-    found: list[Write] = []
-    stack: list[tuple[Node, frozenset[str]]] = [(node, control)]
+@dataclass
+class Flow:
+    """Every write of a function in source order, with the global writes of its calls."""
+
+    writes: list[Write]
+    positions: list[int]  # of the writes, for bisect
+    call_writes: list[tuple[int, frozenset[str]]]  # (position, globals the call writes)
+    loop_guard: dict[int, str]  # id(loop) -> its guard's pseudo-name
+    exits: list[int]  # positions of the returns and discards
+
+    def within(self, start: int, end: int) -> list[Write]:
+        return self.writes[bisect_left(self.positions, start) : bisect_left(self.positions, end)]
+
+    def globals_written_within(self, start: int, end: int) -> set[str]:
+        found: set[str] = set()
+        first = bisect_left(self.call_writes, (start, frozenset()))
+        for pos, names in self.call_writes[first:]:
+            if pos >= end:
+                break
+            found |= names
+        return found
+
+    def exits_within(self, start: int, end: int) -> bool:
+        """A return or discard in the span: code there cannot be moved as a whole."""
+        index = bisect_left(self.exits, start)
+        return index < len(self.exits) and self.exits[index] < end
+
+
+def flow_of(prog: Program, body: Tree) -> Flow:
+    """The writes of a function body, found in one pass."""
+    writes: list[Write] = []
+    call_writes: list[tuple[int, frozenset[str]]] = []
+    exits: list[int] = []
+    loop_guard: dict[int, str] = {}
+    loop_write: dict[str, int] = {}  # a loop guard's name -> index of its write
+    # (node, enclosing guard, guard of the innermost loop, guards of the ifs since that loop)
+    stack: list[tuple[Node, str, str, tuple[str, ...]]] = [(body, "", "", ())]
+
+    def guard(node: Tree, reads: set[str], parent: str) -> str:
+        name = f"#{id(node)}"
+        writes.append(Write(name, frozenset(reads | ({parent} if parent else set())),
+                            node.meta.start_pos))  # fmt: skip
+        return name
+
     while stack:
-        item, ctl = stack.pop()
+        item, ctl, loop, ifs = stack.pop()
         if not isinstance(item, Tree):
             continue
         kind = item.data
-        if kind == "if_statement":
-            stack.append((item.children[0], ctl))
-            inner = ctl | prog.reads(item.children[0])
-            stack += [(c, inner) for c in item.children[1:]]
-            continue
-        if kind == "switch_statement":
-            stack.append((item.children[0], ctl))
-            inner = ctl | prog.reads(item.children[0])
-            stack += [(c, inner) for c in item.children[1:]]
+        if kind in ("if_statement", "switch_statement", "ternary"):
+            g = guard(item, prog.reads(item.children[0]), ctl)
+            inner = ifs + (g,) if kind == "if_statement" else ifs
+            stack += [(c, g, loop, inner) for c in reversed(item.children[1:])]
+            stack.append((item.children[0], ctl, loop, ifs))
             continue
         if kind in LOOPS:
             cond = {"for_statement": 1, "while_statement": 0, "do_statement": 1}[kind]
-            inner = ctl | prog.reads(item.children[cond]) | _exit_conditions(prog, item)
+            g = guard(item, prog.reads(item.children[cond]), ctl)
+            loop_guard[id(item)] = g
+            loop_write[g] = len(writes) - 1
             parts = list(item.children)
-            if kind == "for_statement":
-                stack.append((parts.pop(0), ctl))
-            stack += [(c, inner) for c in parts]
+            first = [parts.pop(0)] if kind == "for_statement" else []
+            stack += [(c, g, g, ()) for c in reversed(parts)]
+            stack += [(c, ctl, loop, ifs) for c in first]
             continue
-        if kind == "ternary":
-            stack.append((item.children[0], ctl))
-            inner = ctl | prog.reads(item.children[0])
-            stack += [(c, inner) for c in item.children[1:]]
+        if kind == "jump_statement" and str(item.children[0]) in ("return", "discard"):
+            exits.append(item.meta.start_pos)
+        elif kind == "jump_statement" and str(item.children[0]) in ("break", "continue"):
+            if loop and ifs:  # the loop's passes depend on the conditions of this exit
+                index = loop_write[loop]
+                old = writes[index]
+                writes[index] = Write(old.target, old.reads | frozenset(ifs), old.pos)
             continue
+        pos = item.meta.start_pos if not item.meta.empty else 0
+        guard_set = frozenset({ctl}) if ctl else frozenset()
         if kind == "declarator":
             init = item.children[-1] if len(item.children) > 1 else None
             reads = prog.reads(init) if isinstance(init, Tree) else set()
-            found.append(Write(str(item.children[0]), reads, ctl))
+            writes.append(Write(str(item.children[0]), frozenset(reads) | guard_set, pos, True))
         elif kind == "condition_declaration":
-            found.append(Write(str(item.children[1]), prog.reads(item.children[-1]), ctl))
+            reads = prog.reads(item.children[-1])
+            writes.append(Write(str(item.children[1]), frozenset(reads) | guard_set, pos, True))
         elif kind == "assignment":
             target = root_var(item.children[0])
             if target:
@@ -247,55 +294,35 @@ def writes_in(prog: Program, node: Node, control: frozenset[str] = frozenset()) 
                                and item.children[0].data == "variable")  # fmt: skip
                 if str(item.children[1]) != "=" or partial:
                     reads.add(target)
-                found.append(Write(target, reads, ctl))
+                writes.append(Write(target, frozenset(reads) | guard_set, pos))
         elif kind in ("prefix", "postfix"):
             operand = item.children[1] if kind == "prefix" else item.children[0]
             target = root_var(operand)
             if target:
-                found.append(Write(target, {target}, ctl))
+                writes.append(Write(target, frozenset({target}) | guard_set, pos))
         elif kind == "call" and (name := call_name(item)) in prog.defined:
+            call_writes.append((pos, prog.global_writes(name)))  # type: ignore[arg-type]
             args = call_args(item)
             reads = prog.reads(item)
             for fn in prog.defined[name]:  # type: ignore[index]
                 for i, param in enumerate(fn.param_order):
                     out = "out" in fn.params[param][0] and i < len(args)
                     if out and (target := root_var(args[i])):
-                        found.append(Write(target, reads | {target}, ctl))
-        stack += [(c, ctl) for c in item.children]
-    return found
-
-
-def _exit_conditions(prog: Program, loop: Tree) -> set[str]:
-    """Names read by the conditions of the ifs in a loop that hold a break or continue."""
-    found: set[str] = set()
-    for node in walk(loop):
-        if node.data == "if_statement" and any(
-            sub.data == "jump_statement" and str(sub.children[0]) in ("break", "continue")
-            for part in node.children[1:]
-            for sub in walk(part)
-        ):
-            found |= prog.reads(node.children[0])
-    return found
-
-
-def declared_in(node: Node) -> set[str]:
-    """Names declared under the node (locals of a block, loop counters of nested loops)."""
-    found: set[str] = set()
-    for sub in walk(node):
-        if sub.data == "declarator":
-            found.add(str(sub.children[0]))
-        elif sub.data == "condition_declaration":
-            found.add(str(sub.children[1]))
-    return found
+                        writes.append(Write(target, frozenset(reads | {target}) | guard_set, pos))
+        stack += [(c, ctl, loop, ifs) for c in reversed(item.children)]
+    order = sorted(range(len(writes)), key=lambda i: writes[i].pos)
+    ordered = [writes[i] for i in order]
+    call_writes.sort(key=lambda item: item[0])
+    return Flow(ordered, [w.pos for w in ordered], call_writes, loop_guard, sorted(exits))
 
 
 def varying(seed: Iterable[str], writes: list[Write]) -> set[str]:
-    """The closure of the seed over the writes: a write that reads a varying name, or that a
-    varying condition controls, makes its target vary (linear: each write fires once)."""
+    """The closure of the seed over the writes: a write that reads a varying name (a guard
+    included) makes its target vary (linear: each write fires once)."""
     result = set(seed)
     by_name: dict[str, list[int]] = {}
     for index, write in enumerate(writes):
-        for name in write.reads | write.control:
+        for name in write.reads:
             by_name.setdefault(name, []).append(index)
     todo = list(result)
     fired: set[int] = set()
@@ -315,3 +342,14 @@ def varying(seed: Iterable[str], writes: list[Write]) -> set[str]:
 def region_parts(loop: Tree) -> list[Node]:
     """The parts of a loop that run on every pass: all but a for's init."""
     return list(loop.children[1:] if loop.data == "for_statement" else loop.children)
+
+
+def declared_in(node: Node) -> set[str]:
+    """Names declared under the node (for messages: what a piece reads from outside it)."""
+    found: set[str] = set()
+    for sub in walk(node):
+        if sub.data == "declarator":
+            found.add(str(sub.children[0]))
+        elif sub.data == "condition_declaration":
+            found.add(str(sub.children[1]))
+    return found

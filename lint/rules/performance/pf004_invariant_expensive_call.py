@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Iterator
 from dataclasses import dataclass
 
@@ -11,14 +12,16 @@ from ...analysis.functions import Function, functions
 from ...analysis.invariance import (
     IMPURE,
     LOOPS,
+    Flow,
     Program,
     declared_in,
+    flow_of,
+    is_fetch,
     region_parts,
     varying,
-    writes_in,
 )
 from ...analysis.syntax import call_args, call_name, names_in, root_var
-from ...context import LintContext, Node, walk, walk_kind
+from ...context import LintContext, Node, walk_kind
 from ...finding import Finding
 from .. import Rule, register
 from ..lighting._common import short_text
@@ -106,39 +109,47 @@ def _loop_of_chain(sites: dict[str, _Site], name: str, up: dict[int, Tree]) -> T
     return None
 
 
-def _fixed_globals(ctx: LintContext, prog: Program, sites: dict[str, _Site]) -> set[str]:
+def _fixed_globals(prog: Program, sites: dict[str, _Site], flows: dict[int, Flow]) -> set[str]:
     """Globals that keep their value while any function runs repeatedly: written only by
     functions that run once per pixel, and there outside loops (`time = iTime * 0.5;` at the top
     of mainImage)."""
     moving: set[str] = set()
-    for fn in functions(ctx):
-        once = sites.get(fn.name, _Site(1, None, None)).runs <= 1
-        for loop in walk_kind(fn.body, *LOOPS) if once else [fn.body]:
-            moving |= {w.target for w in writes_in(prog, loop)}
+    for group in prog.defined.values():
+        for fn in group:
+            flow = flows[id(fn)]
+            if sites.get(fn.name, _Site(1, None, None)).runs > 1:
+                moving |= {w.target for w in flow.writes}
+                continue
+            end = -1
+            for loop in walk_kind(fn.body, *LOOPS):  # the outermost loops, in source order
+                if loop.meta.start_pos >= end:
+                    end = loop.meta.end_pos
+                    moving |= {w.target for w in flow.within(loop.meta.start_pos, end)}
     return prog.globals - moving
 
 
+def _span(loop: Tree) -> tuple[int, int]:
+    """Where the parts of the loop that repeat are (a for's init is before them)."""
+    first = region_parts(loop)[0]
+    start = first.meta.start_pos if isinstance(first, Tree) and not first.meta.empty else None
+    return (start if start is not None else loop.meta.start_pos + 1), loop.meta.end_pos
+
+
 def _moving_in_loop(
-    prog: Program, fn: Function, loop: Tree, decls: list[tuple[str, int]]
+    prog: Program, fn: Function, loop: Tree, flow: Flow, declarations: Counter[str]
 ) -> tuple[set[str], set[str]]:
     """The names that vary between the passes of the loop, and the names declared in it (fresh
     on every pass)."""
-    parts = region_parts(loop)
-    writes = [w for part in parts for w in writes_in(prog, part)]
+    start, end = _span(loop)
+    writes = flow.within(start, end)
+    inside = Counter(w.target for w in writes if w.declares)
     # a name declared in the loop that also names a variable outside it (a shadowed counter, a
     # parameter, a global) is taken as the outer one: varying if written
-    declared = set().union(*(declared_in(p) for p in parts))
-    declared -= set(fn.params) | prog.globals | _declared_outside(decls, loop)
-    seed = {w.target for w in writes if w.target not in declared} | {IMPURE}
-    for part in parts:
-        for call in walk(part):
-            if call.data == "call" and (name := call_name(call)) in prog.defined:
-                seed |= prog.global_writes(name)  # type: ignore[arg-type]
+    declared = {n for n, k in inside.items() if declarations[n] == k}
+    declared -= set(fn.params) | prog.globals
+    seed = {w.target for w in writes if w.target[0] != "#" and w.target not in declared}
+    seed |= flow.globals_written_within(start, end) | {IMPURE}
     return varying(seed, writes), declared
-
-
-def fns_of(prog: Program) -> list[Function]:
-    return [fn for group in prog.defined.values() for fn in group]
 
 
 def _innermost_loop(node: Tree, fn: Function, up: dict[int, Tree]) -> Tree | None:
@@ -153,18 +164,9 @@ def _innermost_loop(node: Tree, fn: Function, up: dict[int, Tree]) -> Tree | Non
     return None
 
 
-def _declared_outside(decls: list[tuple[str, int]], loop: Tree) -> set[str]:
-    """Names declared in the function but outside the loop's repeated parts (for-init
-    included): `decls` holds each declaration's name and offset."""
-    first = region_parts(loop)[0]
-    start = first.meta.start_pos if isinstance(first, Tree) else loop.meta.start_pos
-    return {name for name, at in decls if not start <= at < loop.meta.end_pos}
-
-
 def _reads_outside_accumulators(prog: Program, body: Node, carried: set[str]) -> set[str] | None:
     """The names the loop body reads, leaving out each carried variable's own operand in its
-    update (`d = min(d, E)`, `s += E`, `x = E`, `n++`); None when a carried variable is updated
-    some other way or a call writes globals."""
+    update (`d = min(d, E)`, `s += E`, `x = E`, `n++`); None when a call writes globals."""
     found: set[str] = set()
     stack: list[Node] = [body]
     while stack:
@@ -194,6 +196,91 @@ def _reads_outside_accumulators(prog: Program, body: Node, carried: set[str]) ->
                 stack.append(rhs)
             continue
         stack += node.children
+    return found
+
+
+@dataclass
+class _Info:
+    """What the candidate search knows of an expression: it reads nothing that varies, has no
+    side effect, fetches or loops (sticky), calls something."""
+
+    same: bool = True
+    pure: bool = True
+    sticky: bool = False
+    calls: bool = False
+
+
+def _pieces(
+    prog: Program, flow: Flow, parts: list[Node], moving: set[str], sticky: bool = True
+) -> list[Tree]:
+    """The largest expressions under the parts (outside nested loops) that read nothing that
+    varies and, with `sticky`, fetch or loop, and the nested loops none of whose writes vary;
+    in source order. Linear: one pass up the tree, one down."""
+    info: dict[int, _Info] = {}
+    # up: children before parents; a nested loop is a leaf, judged by its writes
+    order: list[Node] = []
+    stack: list[Node] = list(parts)
+    while stack:
+        node = stack.pop()
+        order.append(node)
+        if isinstance(node, Tree) and node.data not in LOOPS:
+            stack += node.children
+    for node in reversed(order):
+        if not isinstance(node, Tree):
+            continue
+        here = _Info()
+        if node.data in LOOPS:
+            start, end = node.meta.start_pos, node.meta.end_pos
+            here.same = not any(w.target in moving for w in flow.within(start, end))
+            here.same = here.same and not flow.exits_within(start, end)
+            here.sticky = here.calls = True
+            info[id(node)] = here
+            continue
+        if node.data == "variable":
+            here.same = str(node.children[0]) not in moving
+            info[id(node)] = here
+            continue
+        children = node.children
+        if node.data == "call":
+            name = call_name(node)
+            here.calls = name is not None and not name[:1].isupper()
+            if name in prog.defined:
+                reads = prog.global_reads(name)  # type: ignore[arg-type]
+                here.same = not (reads & moving) and not prog.global_writes(name)  # type: ignore
+                here.sticky = prog.function_sticky(name)  # type: ignore[arg-type]
+            elif is_fetch(name):
+                here.sticky = True
+            if name is not None:
+                children = children[1:]  # the callee's name is not a variable read
+        elif node.data in ("assignment", "prefix", "postfix"):
+            here.pure = False
+        for child in children:
+            sub = info.get(id(child))
+            if sub is not None:
+                here.same &= sub.same
+                here.pure &= sub.pure
+                here.sticky |= sub.sticky
+                here.calls |= sub.calls
+        info[id(node)] = here
+    found: list[Tree] = []
+    down: list[Node] = list(reversed(parts))
+    while down:
+        node = down.pop()
+        if not isinstance(node, Tree):
+            continue
+        here = info[id(node)]
+        if node.data in LOOPS:
+            if sticky and here.same:
+                found.append(node)
+            continue
+        if node.data == "assignment":
+            down.append(node.children[2])
+            continue
+        if node.data in _EXPRESSIONS and here.same:
+            if here.pure and (here.sticky if sticky else here.calls):
+                found.append(node)
+            continue
+        down += reversed(node.children)
     return found
 
 
@@ -247,37 +334,44 @@ class InvariantExpensiveCall(Rule):
     default = False
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
-        constants, other_globals = _global_names(ctx)
+        _, other_globals = _global_names(ctx)
         fns = functions(ctx)
         overloads: dict[str, list[Function]] = {}
         for f in fns:
             overloads.setdefault(f.name, []).append(f)
-        prog = Program(
-            ctx,
-            overloads,
-            other_globals,
-            lambda loop, fn: trip_count(ctx, loop, fn),
-        )
+        prog = Program(ctx, overloads, other_globals, lambda loop, fn: trip_count(ctx, loop, fn))
         up = ctx.parents()
         sites = _runs(ctx, up)
-        fixed = _fixed_globals(ctx, prog, sites)
+        flows = {id(fn): flow_of(prog, fn.body) for fn in fns}
+        fixed = _fixed_globals(prog, sites, flows)
         self._reported: list[tuple[int, int]] = []
         # what varies in every loop first: the calls in a loop tell which parameters of the
         # called function change between its calls there
         self._loops: dict[int, tuple[set[str], set[str]]] = {}
+        self._calls: dict[str, list[tuple[Function, Tree]]] = {}
+        loops_of: dict[int, list[Tree]] = {}
         for fn in fns:
-            decls = [(str(n.children[0]), n.meta.start_pos)
-                     for n in walk_kind(fn.body, "declarator")]  # fmt: skip
-            for loop in walk_kind(fn.body, *LOOPS):
-                self._loops[id(loop)] = _moving_in_loop(prog, fn, loop, decls)
+            for call in walk_kind(fn.body, "call"):
+                if (name := call_name(call)) in overloads and name != fn.name:
+                    self._calls.setdefault(name, []).append((fn, call))  # type: ignore[arg-type]
+            flow = flows[id(fn)]
+            declarations = Counter(w.target for w in flow.writes if w.declares)
+            loops_of[id(fn)] = walk_kind(fn.body, *LOOPS)
+            for loop in loops_of[id(fn)]:
+                self._loops[id(loop)] = _moving_in_loop(prog, fn, loop, flow, declarations)
         for fn in fns:
             runs = sites.get(fn.name, _Site(1, None, None)).runs
-            for loop in walk_kind(fn.body, *LOOPS):
-                if not self._covered(loop):
-                    yield from self._loop(ctx, prog, fn, loop, runs, up)
+            loops = sorted(loops_of[id(fn)], key=lambda n: n.meta.start_pos)
+            for index, loop in enumerate(loops):
+                if self._covered(loop):
+                    continue
+                innermost = index + 1 == len(loops) or (
+                    loops[index + 1].meta.start_pos >= loop.meta.end_pos
+                )
+                yield from self._loop(ctx, prog, fn, flows[id(fn)], loop, runs, up, innermost)
         for fn in fns:
             if sites.get(fn.name, _Site(1, None, None)).runs >= 2:
-                yield from self._function(ctx, prog, fn, sites, fixed, up)
+                yield from self._function(ctx, prog, fn, flows[id(fn)], sites, fixed, up)
 
     def _covered(self, node: Tree) -> bool:
         start, end = node.meta.start_pos, node.meta.end_pos
@@ -293,9 +387,11 @@ class InvariantExpensiveCall(Rule):
         ctx: LintContext,
         prog: Program,
         fn: Function,
+        flow: Flow,
         loop: Tree,
         runs: int,
         up: dict[int, Tree],
+        innermost: bool,
     ) -> Iterator[Finding]:
         trips = trip_count(ctx, loop, fn)
         if trips < 2:
@@ -303,20 +399,22 @@ class InvariantExpensiveCall(Rule):
         parts = region_parts(loop)
         moving, declared = self._loops[id(loop)]
         line = ctx.span(loop)[0]
+        if innermost:
+            pointless = self._pointless(ctx, prog, flow, loop, declared, trips, moving)
+            if pointless is not None:
+                yield pointless
+                return
         outside = runs * _enclosing_trips(ctx, loop, fn, up)
-        pointless = self._pointless(ctx, prog, loop, declared, trips, moving)
-        if pointless is not None:
-            yield pointless
-            return
         found: list[tuple[Tree, int]] = []
-        share: list[int] = []
-        for node in self._candidates(prog, parts, moving):
+        share = 0
+        for node in _pieces(prog, flow, parts, moving):
             if self._covered(node):
                 continue
             inside = runs * _enclosing_trips(ctx, node, fn, up)
-            found.append((node, (inside - outside) * prog.cost(node, fn)))
-            share.append(inside // max(1, outside) * prog.cost(node, fn))
-        if sum(share) < SHARE * prog.cost(loop, fn):
+            cost = prog.cost(node, fn)
+            found.append((node, (inside - outside) * cost))
+            share += inside // max(1, outside) * cost
+        if not found or share < SHARE * prog.cost(loop, fn):
             return
         yield from self._group(
             ctx,
@@ -356,6 +454,7 @@ class InvariantExpensiveCall(Rule):
         self,
         ctx: LintContext,
         prog: Program,
+        flow: Flow,
         loop: Tree,
         declared: set[str],
         trips: int,
@@ -365,20 +464,23 @@ class InvariantExpensiveCall(Rule):
         (besides accumulating into its results): every pass computes the same values."""
         if loop.data != "for_statement" or len(loop.children) < 4:
             return None
-        cond, step, body = loop.children[1], loop.children[2], loop.children[3]
-        counters = {w.target for part in (cond, step) for w in writes_in(prog, part)}
-        body_writes = writes_in(prog, body)
-        carried = {w.target for w in body_writes if w.target not in declared}
+        cond, body = loop.children[1], loop.children[3]
+        if not isinstance(cond, Tree) or not isinstance(body, Tree) or body.meta.empty:
+            return None
+        head = flow.within(cond.meta.start_pos, body.meta.start_pos)
+        counters = {w.target for w in head if w.target[0] != "#"}
+        carried = {w.target for w in flow.within(body.meta.start_pos, loop.meta.end_pos)
+                   if w.target[0] != "#" and w.target not in declared}  # fmt: skip
         if not counters or carried & counters:
             return None
         reads = _reads_outside_accumulators(prog, body, carried)
         if reads is None or reads & (carried | counters):
             return None
         # the first work of the body: an invariant expression with a call
-        first = next((n for n in self._candidates(prog, [body], moving, sticky=False)
-                      if any(s.data == "call" for s in walk(n))), None)  # fmt: skip
-        if first is None:
+        pieces = _pieces(prog, flow, [body], moving, sticky=False)
+        if not pieces:
             return None
+        first = pieces[0]
         self._mark(loop)
         counter = ", ".join(sorted(counters))
         return self.report(
@@ -398,33 +500,33 @@ class InvariantExpensiveCall(Rule):
         ctx: LintContext,
         prog: Program,
         fn: Function,
+        flow: Flow,
         sites: dict[str, _Site],
         fixed: set[str],
         up: dict[int, Tree],
     ) -> Iterator[Finding]:
         params, outside = self._moving_params(ctx, prog, fn, sites, up)
-        writes = writes_in(prog, fn.body)
         seed = params | (prog.globals - fixed) | {IMPURE}
-        moving = varying(seed, writes)
+        moving = varying(seed, flow.writes)
         runs = sites[fn.name].runs
         hot = _loop_of_chain(sites, fn.name, up)
         found: list[tuple[Tree, int]] = []
-        share: list[int] = []
-        for node in self._candidates(prog, list(fn.body.children), moving):
+        share = 0
+        for node in _pieces(prog, flow, list(fn.body.children), moving):
             if self._covered(node):
                 continue
-            share.append(_enclosing_trips(ctx, node, fn, up) * prog.cost(node, fn))
-            found.append((node, (runs * _enclosing_trips(ctx, node, fn, up) - outside)
-                          * prog.cost(node, fn)))  # fmt: skip
-        hot_line = f"the loop at line {ctx.span(hot)[0]}" if hot is not None else "its caller"
-        if sum(share) < SHARE * prog.cost(fn.body, fn):
+            cost = prog.cost(node, fn)
+            around = _enclosing_trips(ctx, node, fn, up)
+            share += around * cost
+            found.append((node, (runs * around - outside) * cost))
+        if not found or share < SHARE * prog.cost(fn.body, fn):
             return
+        hot_line = f"the loop at line {ctx.span(hot)[0]}" if hot is not None else "its caller"
+        how_often = f"up to {runs} times" if sites[fn.name].stated else "many times"
         yield from self._group(
             ctx,
             found,
-            f"every call of {fn.name}, which runs "
-            + (f"up to {runs} times per pixel" if sites[fn.name].stated else "many times per pixel")
-            + f" from {hot_line}",
+            f"every call of {fn.name}, which runs {how_often} per pixel from {hot_line}",
             (
                 f"it reads none of {fn.name}'s parameters, only {{}}"
                 if params >= set(fn.params)
@@ -448,89 +550,26 @@ class InvariantExpensiveCall(Rule):
         function that runs repeatedly, is taken to pass new values each time."""
         moving: set[str] = {p for p in fn.params if "out" in fn.params[p][0]}
         outside = 1
-        for caller in fns_of(prog):
-            if caller.name == fn.name:
-                continue
+        for caller, call in self._calls.get(fn.name, ()):
             caller_runs = sites.get(caller.name, _Site(1, None, None)).runs
-            for call in walk_kind(caller.body, "call"):
-                if call_name(call) != fn.name:
-                    continue
-                loop = _innermost_loop(call, caller, up)
-                if self._covered(call):  # the whole call is reported as the same in its loop
+            loop = _innermost_loop(call, caller, up)
+            if self._covered(call):  # the whole call is reported as the same in its loop
+                return set(fn.params), 1
+            if loop is None or id(loop) not in self._loops:
+                if caller_runs > 1:
                     return set(fn.params), 1
-                if loop is None or id(loop) not in self._loops:
-                    if caller_runs > 1:
-                        return set(fn.params), 1
-                    continue
-                changed = self._loops[id(loop)][0]
-                args = call_args(call)
-                for i, param in enumerate(fn.param_order):
-                    if i >= len(args) or prog.reads(args[i]) & changed:
-                        moving.add(param)
-                outside = max(outside, caller_runs * _enclosing_trips(ctx, loop, caller, up))
+                continue
+            changed = self._loops[id(loop)][0]
+            args = call_args(call)
+            for i, param in enumerate(fn.param_order):
+                if i >= len(args) or prog.reads(args[i]) & changed:
+                    moving.add(param)
+            outside = max(outside, caller_runs * _enclosing_trips(ctx, loop, caller, up))
         return moving, outside
-
-    # --- candidates -------------------------------------------------------------------------
-
-    def _candidates(
-        self, prog: Program, nodes: list[Node], moving: set[str], sticky: bool = True
-    ) -> Iterator[Tree]:
-        """The largest expressions (and inner loops) under the nodes that read nothing that
-        varies and, with `sticky`, fetch or loop; in source order."""
-        stack: list[tuple[Node, frozenset[str]]] = [(n, frozenset()) for n in reversed(nodes)]
-        while stack:
-            node, extra = stack.pop()
-            if not isinstance(node, Tree):
-                continue
-            kind = node.data
-            if kind in LOOPS:
-                if sticky and _unchanged(prog, node, moving | extra) and not _exits(node):
-                    yield node
-                    continue
-                written = extra | {w.target for w in writes_in(prog, node)}
-                parts = list(node.children)
-                if kind == "for_statement":
-                    stack += [(c, written) for c in reversed(parts[1:])]
-                    stack.append((parts[0], extra))
-                else:
-                    stack += [(c, written) for c in reversed(parts)]
-                continue
-            if kind == "assignment":
-                stack.append((node.children[2], extra))
-                continue
-            if kind in _EXPRESSIONS and _unchanged(prog, node, moving | extra):
-                if not _has_side_effects(node) and (prog.sticky(node) if sticky
-                                                    else _does_work(node)):  # fmt: skip
-                    yield node
-                continue
-            stack += [(c, extra) for c in reversed(node.children)]
-
-
-def _unchanged(prog: Program, node: Node, moving: set[str]) -> bool:
-    names = prog.reads(node)
-    return not (names & moving)
-
-
-def _has_side_effects(node: Tree) -> bool:
-    return any(s.data in ("assignment", "prefix", "postfix") for s in walk(node))
-
-
-def _does_work(node: Tree) -> bool:
-    return any(s.data == "call" for s in walk(node))
-
-
-def _exits(loop: Tree) -> bool:
-    """A return or discard in the loop: it cannot be moved as a whole."""
-    return any(
-        s.data == "jump_statement" and str(s.children[0]) in ("return", "discard")
-        for s in walk(loop)
-    )
 
 
 def _fetches(node: Tree) -> bool:
-    from ...analysis.invariance import is_fetch
-
-    return any(s.data == "call" and is_fetch(call_name(s)) for s in walk(node))
+    return any(is_fetch(call_name(s)) for s in walk_kind(node, "call"))
 
 
 def _inputs(node: Tree) -> str:
