@@ -47,7 +47,7 @@ CLASS_RULES: dict[str, frozenset[str]] = {
     "minmax-clamp-noop": frozenset({"N008"}),
     "clamp-argument-order": frozenset({"N008", "N010"}),
     "copy-paste-twin": frozenset({"C108", "C109"}),
-    "loop-invariant-expensive": frozenset({"PF002"}),
+    "loop-invariant-expensive": frozenset({"PF002", "PF004"}),
     "es300-portability": frozenset(
         {"C001", "P001", "P002", "P003", "P004", "P005", "P006", "P007"}
     ),

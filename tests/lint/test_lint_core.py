@@ -122,6 +122,23 @@ def test_syntax_error_without_glslang_is_c003_at_its_line() -> None:
     assert [(f.code, f.line) for f in found] == [("C003", 3)]
 
 
+def test_an_if_on_a_macro_no_tab_defines_is_c004_and_the_file_is_still_analysed() -> None:
+    # SURFACE_CACHE comes from ShaderToy's Common tab: C004 says so, and the rest of the file
+    # is linted with it taken as 0 (the #else branch), as C would
+    text = (
+        "#if SURFACE_CACHE > 0\n#define SCALE 2.0\n#else\n#define SCALE 1.0\n#endif\n"
+        "void mainImage(out vec4 c, in vec2 p) {\n"
+        "    float d = p.x / 0.0;\n"
+        "    c = vec4(d * SCALE);\n}\n"
+    )
+    found = lint_source(text, "x.glsl", Options(select=["C004", "N"], glslang=False))
+    assert ("C004", 1) in [(f.code, f.line) for f in found]
+    assert any(f.code.startswith("N") and f.line == 7 for f in found), found
+    # a syntax error after the #if is not reported over it: the #if comes first
+    broken = text.replace("c = vec4(d * SCALE);", "c = vec4(d * SCALE)")
+    assert codes(lint_source(broken, "x.glsl", Options(select=["C"], glslang=False))) == ["C004"]
+
+
 def test_inline_suppression_on_the_line_silences_that_code() -> None:
     text = BROKEN.replace("}\n", "} // glint: ignore[C003]\n")
     assert lint_source(text, "x.glsl", Options(glslang=False)) == []

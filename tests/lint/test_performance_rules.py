@@ -35,7 +35,7 @@ def image(body: str, head: str = "") -> str:
     return f"{head}void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{body}\n}}\n"
 
 
-@pytest.mark.parametrize("code", ["PF001", "PF002", "PF003"])
+@pytest.mark.parametrize("code", ["PF001", "PF002", "PF003", "PF004"])
 def test_rule_is_documented(code: str) -> None:
     rule = all_rules()[code]
     doc = rule_doc(rule)
@@ -206,6 +206,211 @@ float f(vec3 p) {
 }
 """
     assert found(src, "PF002") == []
+
+
+# --- PF004 ----------------------------------------------------------------------------------
+
+
+def test_pf004_reports_a_fetch_whose_coordinate_the_loop_does_not_change() -> None:
+    src = image(
+        "    vec2 uv = fragCoord / iResolution.xy;\n"
+        "    vec3 col = vec3(0.0);\n"
+        "    for (int i = 0; i < 4; i++) {\n"
+        "        float r = texture(iChannel1, fragCoord / iChannelResolution[1].xy).x;\n"
+        "        vec2 o = uv + vec2(float(i), r) * 0.01;\n"
+        "        col += texture(iChannel0, o).rgb;\n"
+        "    }\n"
+        "    fragColor = vec4(col, 1.0);"
+    )
+    assert found(src, "PF004") == [("PF004", 5, 19)]
+    message = lint_source(src, "x.glsl", FAST)[0].message
+    assert "before the loop at line 4" in message and "fragCoord, iChannel1" in message
+
+
+def test_pf004_a_fetch_that_depends_on_the_loop_through_variables_is_not_reported() -> None:
+    src = image(
+        "    vec2 uv = fragCoord / iResolution.xy;\n"
+        "    vec3 p = vec3(uv, 0.0);\n"
+        "    vec3 col = vec3(0.0);\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) {\n"
+        "        float k = float(i) * 0.1;\n"
+        "        vec2 c = uv + k;\n"
+        "        col += texture(iChannel0, c).rgb;\n"  # through a local set from i
+        "        col += texture(iChannel1, p.xy).rgb;\n"  # p is moved below
+        "        vec2 s = uv;\n"
+        "        if (t > 1.0) s = uv * 2.0;\n"  # written under a condition that varies
+        "        col += texture(iChannel2, s).rgb;\n"
+        "        p += vec3(0.1);\n"
+        "        t += 0.1;\n"
+        "    }\n"
+        "    fragColor = vec4(col, 1.0);"
+    )
+    assert found(src, "PF004") == []
+
+
+def test_pf004_a_short_loop_of_one_repeat_is_not_worth_a_finding() -> None:
+    src = image(
+        "    vec3 col = vec3(0.0);\n"
+        "    for (int i = 0; i < 2; i++) {\n"
+        "        col += texture(iChannel0, fragCoord / iResolution.xy).rgb * float(i);\n"
+        "    }\n"
+        "    fragColor = vec4(col, 1.0);"
+    )
+    assert found(src, "PF004") == []
+    assert found(src.replace("i < 2", "i < 4"), "PF004") == [("PF004", 4, 16)]
+
+
+def test_pf004_reports_invariant_work_of_a_function_the_march_calls() -> None:
+    src = """float level;
+float seed;
+float bump(vec2 p) { return texture(iChannel1, p).x; }
+float map(vec3 p) {
+    float a = textureLod(iChannel3, vec2(0.5, 0.15), 0.0).x;
+    float b = bump(p.xz);
+    float c = texture(iChannel2, vec2(seed)).x;
+    seed += 0.1;
+    float d = texture(iChannel0, vec2(level)).x;
+    return length(p) - 1.0 - a - b - c - d;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    level = iTime * 0.1;
+    vec3 rd = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));
+    float t = 0.0;
+    for (int i = 0; i < 70; i++) t += map(rd * t);
+    fragColor = vec4(t);
+}
+"""
+    findings = [f for f in lint_source(src, "x.glsl", FAST) if f.code == "PF004"]
+    # a (constants) and d (a global set once in mainImage) are the same on every call; b reads
+    # map's parameter; c reads a global that map itself moves
+    assert [(f.line, f.column) for f in findings] == [(5, 15)]
+    assert "1 more such at line 9" in findings[0].message
+    assert "map, which runs up to 70 times per pixel from the loop at line 16" in (
+        findings[0].message
+    )
+
+
+def test_pf004_reports_an_inner_march_that_reads_nothing_the_calls_change() -> None:
+    src = """uniform float screenZ;
+vec2 sceneMap(vec3 p) { return vec2(length(p) - 1.0, 0.0); }
+float gizmo(vec3 p) {
+    vec3 ray = normalize(vec3(iResolution.xy, screenZ));
+    vec3 pos;
+    float t = 0.01;
+    for (int i = 0; i < 20; i++) {
+        pos = ray * t;
+        t += sceneMap(pos).x;
+    }
+    float e = 0.0;
+    for (int j = 0; j < 20; j++) {
+        e += sceneMap(p * e).x;
+    }
+    return length(p - pos) - 0.3 + e;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float t = 0.0;
+    for (int i = 0; i < 60; i++) t += gizmo(vec3(fragCoord, t));
+    fragColor = vec4(t);
+}
+"""
+    assert found(src, "PF004") == [("PF004", 7, 5)]
+
+
+def test_pf004_work_on_a_parameter_the_loop_passes_unchanged_is_the_same_on_every_call() -> None:
+    src = """float map(vec3 p, vec2 uv) {
+    float grain = texture(iChannel0, uv).x;
+    return length(p) - 1.0 - 0.01 * grain;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    vec3 rd = normalize(vec3(uv - 0.5, 1.0));
+    float t = 0.0;
+    for (int i = 0; i < 80; i++) t += map(rd * t, uv);
+    fragColor = vec4(t);
+}
+"""
+    findings = [f for f in lint_source(src, "x.glsl", FAST) if f.code == "PF004"]
+    assert [(f.line, f.column) for f in findings] == [(2, 19)]
+    assert "do not change between these calls" in findings[0].message
+    # the same function called with a coordinate that moves along the ray
+    assert found(src.replace("map(rd * t, uv)", "map(rd * t, uv * t)"), "PF004") == []
+
+
+def test_pf004_an_inner_loop_that_breaks_on_a_changing_condition_varies() -> None:
+    src = """float f(vec3 ro, vec3 rd, float limit) {
+    float s = 0.0;
+    for (int i = 0; i < 32; i++) {
+        float t = 0.0;
+        for (int j = 0; j < 16; j++) {
+            if (s > limit) break;
+            t += texture(iChannel0, ro.xy + rd.xy * t).x;
+        }
+        s += t;
+    }
+    return s;
+}
+"""
+    assert found(src, "PF004") == []
+
+
+def test_pf004_a_shadowed_counter_still_varies() -> None:
+    src = """vec4 noise(float x) { return texture(iChannel0, vec2(x, 0.5)); }
+float f(float seed) {
+    float s = 0.0;
+    for (float i = 0.0; i < 20.0; i++) {
+        vec4 n = noise(seed + i);
+        for (int i = 0; i < 3; i++) s += n.x * float(i);
+    }
+    return s;
+}
+"""
+    assert found(src, "PF004") == []
+
+
+def test_pf004_reports_a_loop_whose_body_ignores_its_counter() -> None:
+    src = """vec2 hash22(vec2 p) { return fract(sin(vec2(dot(p, vec2(12.1, 7.3)), p.x)) * 4375.5); }
+float cracks(vec2 p, float t) {
+    float d = 1.0e10;
+    for (float i = 0.; i < 25.; i++) {
+        vec2 tp = hash22(p) - .5;
+        tp *= max(0., (length(tp) + clamp(t, 0., 1.) - 1.) / length(tp));
+        d = min(d, length(tp + 0.5 - p));
+    }
+    return d;
+}
+float fold(vec3 p) {
+    for (int i = 0; i < 8; i++) p = abs(p) / dot(p, p) - vec3(0.5);
+    return length(p);
+}
+"""
+    findings = [f for f in lint_source(src, "x.glsl", FAST) if f.code == "PF004"]
+    assert [(f.line, f.column) for f in findings] == [(5, 19)]
+    assert "never uses i" in findings[0].message and "25 passes" in findings[0].message
+    # the counter read through a local makes the passes differ
+    used = src.replace("hash22(p) - .5", "hash22(p + i) - .5")
+    assert found(used, "PF004") == []
+
+
+def test_pf004_calls_of_functions_that_write_globals_are_not_moved() -> None:
+    src = """float count;
+float sample_(vec2 uv) { count += 1.0; return texture(iChannel0, uv + count).x; }
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float s = 0.0;
+    for (int i = 0; i < 16; i++) s += sample_(fragCoord) * float(i);
+    fragColor = vec4(s, count, 0.0, 1.0);
+}
+"""
+    assert found(src, "PF004") == []
+
+
+def test_pf002_leaves_texture_fetches_to_pf004() -> None:
+    src = image(
+        "    float s = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) s += texture(iChannel0, fragCoord).x * float(i);\n"
+        "    fragColor = vec4(s);"
+    )
+    assert [code for code, _, _ in found(src)] == ["PF004"]
 
 
 # --- PF003 ----------------------------------------------------------------------------------

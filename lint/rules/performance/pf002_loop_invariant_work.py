@@ -16,7 +16,8 @@ from .. import Rule, register
 from ..lighting._common import macros_used, short_text
 from ._common import BUILTINS, WRITERS
 
-# Builtins worth hoisting: transcendental, square roots, texture fetches, normalisation.
+# Builtins worth hoisting: transcendental, square roots, normalisation. Texture fetches are
+# PF004's (invariant-expensive-call-in-loop), which follows them through calls too.
 _EXPENSIVE = {
     "normalize",
     "length",
@@ -37,11 +38,6 @@ _EXPENSIVE = {
     "log2",
     "sqrt",
     "inversesqrt",
-    "texture",
-    "textureLod",
-    "textureGrad",
-    "texelFetch",
-    "textureProj",
     "inverse",
     "determinant",
     "reflect",
@@ -114,11 +110,11 @@ HOT = 64
 _UNKNOWN_TRIPS = HOT
 
 
-def trip_count(ctx: LintContext, loop: Tree, fn: Function) -> int:
+def trip_count(ctx: LintContext, loop: Tree, fn: Function, unknown: int = _UNKNOWN_TRIPS) -> int:
     """The number of passes of `for (i = A; i < B; i += k)` with constant A, B and k (macros
-    expanded, const names and locals with one value included); _UNKNOWN_TRIPS otherwise."""
+    expanded, const names and locals with one value included); `unknown` otherwise."""
     if loop.data != "for_statement" or len(loop.children) < 4:
-        return _UNKNOWN_TRIPS
+        return unknown
     init, cond, step = loop.children[0], loop.children[1], loop.children[2]
     start = None
     for node in walk(init):
@@ -128,11 +124,11 @@ def trip_count(ctx: LintContext, loop: Tree, fn: Function) -> int:
             start = _number(ctx, node.children[2], fn)
     op = str(cond.children[1]) if isinstance(cond, Tree) and cond.data == "binary" else ""
     if start is None or op not in ("<", "<=", ">", ">="):
-        return _UNKNOWN_TRIPS
+        return unknown
     end = _number(ctx, cond.children[2], fn)  # type: ignore[union-attr]
     delta = _step(ctx, step, fn)
     if end is None or not delta:
-        return _UNKNOWN_TRIPS
+        return unknown
     span = (end - start) if delta > 0 else (start - end)
     span += 1 if op in ("<=", ">=") else 0
     return max(0, math.ceil(span / abs(delta)))
@@ -210,8 +206,8 @@ def calls_per_pixel(ctx: LintContext, up: dict[int, Tree]) -> dict[str, int]:
 @register
 class LoopInvariant(Rule):
     """Finds expensive work inside a loop that gives the same value on every iteration: a call to
-    normalize, length, a trigonometric or exponential function or a texture fetch whose inputs are
-    not changed by the loop.
+    normalize, length, a trigonometric or exponential function whose inputs are not changed by the
+    loop (a texture fetch is PF004's).
 
     What counts as invariant: every variable the expression reads is neither written in the loop
     (assignment, ++/--, an out argument), nor declared inside it, nor a global that any function
@@ -227,8 +223,8 @@ class LoopInvariant(Rule):
     is on targets that do not hoist reliably (ANGLE/FXC, mobile) and in hot march or fold loops.
 
     Why is this bad?
-        A raymarch or shadow loop runs up to hundreds of times per pixel; a normalize or texture
-        fetch of loop-invariant inputs is paid on every step where the compiler does not hoist
+        A raymarch or shadow loop runs up to hundreds of times per pixel; a normalize or a sin
+        of loop-invariant inputs is paid on every step where the compiler does not hoist
         it (ANGLE's HLSL path and many mobile drivers do not reliably).
 
     Example:
