@@ -134,9 +134,10 @@ def test_an_if_on_a_macro_no_tab_defines_is_c004_and_the_file_is_still_analysed(
     found = lint_source(text, "x.glsl", Options(select=["C004", "N"], glslang=False))
     assert ("C004", 1) in [(f.code, f.line) for f in found]
     assert any(f.code.startswith("N") and f.line == 7 for f in found), found
-    # a syntax error after the #if is not reported over it: the #if comes first
+    # a syntax error after the #if is reported too, at its own line
     broken = text.replace("c = vec4(d * SCALE);", "c = vec4(d * SCALE)")
-    assert codes(lint_source(broken, "x.glsl", Options(select=["C"], glslang=False))) == ["C004"]
+    found = lint_source(broken, "x.glsl", Options(select=["C"], glslang=False))
+    assert [(f.code, f.line) for f in found] == [("C004", 1), ("C003", 9)]
 
 
 def test_inline_suppression_on_the_line_silences_that_code() -> None:
