@@ -44,7 +44,7 @@ class ModAtanZero(NumericalRule):
 
     code = "N007"
     name = "mod-atan-zero"
-    default = False  # below 90% worth acting on in the labelled corpus sample
+    default = False  # below 80% worth acting on in the labelled corpus sample
     severity = "warning"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
