@@ -82,7 +82,8 @@ def test_p008_reports_uniforms_shadertoy_never_sets_that_are_read() -> None:
     found = lint(src, "P008")
     assert lines(found) == [1, 2, 4]  # not u_unused (never read), not the sampler
     assert "uniform bool u_shadows" in found[0].message
-    assert "always false, so the branch of `if (u_shadows)` at line 9 never runs" in found[0].message
+    message = found[0].message
+    assert "always false, so the branch of `if (u_shadows)` at line 9 never runs" in message
     assert "always 0.0" in found[1].message
     assert "vec3[]" in found[2].message
 
