@@ -12,7 +12,11 @@ import pytest
 from glint.lint.precision import (
     CORPUS,
     DEFAULT_PRECISION,
+    DEFAULT_SAMPLE,
+    DEFAULT_SET_PRECISION,
+    Label,
     corpus_findings,
+    default_sample,
     load_labels,
     load_measured,
     measure,
@@ -90,3 +94,41 @@ def test_stored_precision_is_current(findings: list[dict[str, Any]]) -> None:
         "regenerate: python -m glint.lint.precision --write, then "
         "glint rule --all --markdown > site/docs/rules.md"
     )
+
+
+def test_the_default_findings_are_labelled_and_worth_acting_on(
+    findings: list[dict[str, Any]],
+) -> None:
+    """Issue 26: of the default rules' findings on the corpus, a labelled sample of at least
+    DEFAULT_SAMPLE (all of them if fewer) is worth acting on at DEFAULT_SET_PRECISION or more."""
+    sample = default_sample(load_labels(), findings)
+    shown = "\n".join(
+        f"{f['code']} {f['file']}:{f['line']}:{f['column']}" for f in sample.unlabelled[:20]
+    )
+    assert sample.enough, (
+        f"{sample.labelled} of {sample.count} default findings labelled; label at least "
+        f"{min(sample.count, DEFAULT_SAMPLE)} (tests/lint/labelled). Unlabelled:\n{shown}"
+    )
+    assert sample.precision is not None and sample.precision >= DEFAULT_SET_PRECISION, sample.line()
+
+
+def test_the_default_sample_counts_only_default_findings_and_their_labels() -> None:
+    """default_sample on made-up findings: opt-in rules are left out, a finding without a
+    label makes the sample short, and the verdicts give the precision."""
+    default = next(code for code, rule in all_rules().items() if rule.default)
+    opt_in = next(code for code, rule in all_rules().items() if not rule.default)
+
+    def finding(code: str, line: int) -> dict[str, Any]:
+        return {"code": code, "file": "a.glsl", "line": line, "column": 1}
+
+    def label(line: int, verdict: str) -> Label:
+        return Label(default, "a.glsl", line, 1, "x", verdict, "because")
+
+    findings = [finding(default, n) for n in (1, 2, 3, 4, 5)] + [finding(opt_in, 9)]
+    labels = [label(1, "worth"), label(2, "worth"), label(3, "worth"), label(4, "not-worth")]
+    sample = default_sample(labels, findings)
+    assert (sample.count, sample.labelled) == (5, 4)
+    assert not sample.enough and sample.unlabelled == [findings[4]]
+    sample = default_sample([*labels, label(5, "wrong")], findings)
+    assert sample.enough and sample.precision == 0.6  # 3 of 5: below the bar
+    assert "5 findings on the corpus, all labelled: 3 worth acting on" in sample.line()

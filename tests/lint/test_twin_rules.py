@@ -82,7 +82,8 @@ def test_p008_reports_uniforms_shadertoy_never_sets_that_are_read() -> None:
     found = lint(src, "P008")
     assert lines(found) == [1, 2, 4]  # not u_unused (never read), not the sampler
     assert "uniform bool u_shadows" in found[0].message
-    assert "always false" in found[0].message and "`u_shadows` at line 9" in found[0].message
+    message = found[0].message
+    assert "always false, so the branch of `if (u_shadows)` at line 9 never runs" in message
     assert "always 0.0" in found[1].message
     assert "vec3[]" in found[2].message
 
@@ -92,6 +93,39 @@ def test_p008_leaves_other_targets_and_shadertoys_own_inputs() -> None:
     assert lint(src, "P008", target="webgl2") == []
     own = main("    uv *= iTime;\n", "uniform float iTime;\n")
     assert lint(own, "P008") == []
+
+
+def test_p008_says_which_branch_or_loop_the_zero_kills() -> None:
+    src = main(
+        "    if (!u_fast) uv *= 2.0;\n"  # line 6: always true, no else: kills nothing
+        "    if (u_fast) uv *= 0.5;\n"  # 7: never runs: the one to name
+        "    if (u_mode == 0) uv.x += 1.0; else uv.y += 1.0;\n"  # 8: the else never runs
+        "    for (int i = 0; i < u_count; i++) uv *= 0.9;\n"  # 9: never runs
+        "    for (int i = 0; i <= u_max; i++) uv *= 0.9;\n"  # 10: runs: no claim of 'always'
+        "    float s = u_on && uv.x > 0.5 ? 1.0 : 2.0;\n",  # 11: the ?: takes its second value
+        "uniform bool u_fast, u_on;\nuniform int u_mode, u_count, u_max;\n",
+    )
+    found = {f.message.split()[2]: f.message for f in lint(src, "P008")}
+    assert "the branch of `if (u_fast)` at line 7 never runs" in found["u_fast"]
+    assert "the else branch of `if (u_mode == 0)` (line 8) never runs" in found["u_mode"]
+    assert "the loop at line 9 never runs: `i < u_count` is false" in found["u_count"]
+    assert "the test `i <= u_max` at line 10 always reads it as 0" in found["u_max"]
+    assert "always takes its second value" in found["u_on"]
+
+
+def test_p008_names_a_division_or_product_the_zero_spoils() -> None:
+    src = main(
+        "    float k = 2.0 * u_height;\n"  # line 5: a scale by a literal names nothing
+        "    uv *= k + u_width;\n"
+        "    uv = uv / u_zoom;\n"  # 7: divides by zero
+        "    uv += uv.x * u_speed;\n",  # 8: always zero
+        "uniform float u_height, u_width, u_zoom, u_speed;\n",
+    )
+    found = {f.message.split()[2]: f.message for f in lint(src, "P008")}
+    assert "`uv / u_zoom` at line 7 divides by zero" in found["u_zoom"]
+    assert "`uv.x * u_speed` at line 8 is always zero" in found["u_speed"]
+    assert "always 0.0 wherever it is read (first at line 5)" in found["u_height"]
+    assert "always 0.0 wherever it is read (first at line 6)" in found["u_width"]
 
 
 # --- C108 unused-twin -------------------------------------------------------------------------
@@ -117,7 +151,7 @@ def test_c108_reports_the_live_value_read_beside_saved_copies() -> None:
         "    float glowSave = glow;\n    float glow2Save = glow2;\n    float glow3Save = glow3;\n"
         "    vec3 col = vec3(0.0);\n"
         "    col += vec3(0.3) * glowSave;\n"
-        "    col += vec3(0.9) * glow2;\n"  # line 10: glow2Save was meant
+        "    col += vec3(0.9) * glow2;\n"  # line 8: glow2Save was meant
         "    col += vec3(0.2) * glow3Save;\n"
         "    uv += col.xy;\n",
         helpers,
@@ -153,7 +187,7 @@ def test_c109_reports_the_copy_that_reads_one_component_twice() -> None:
     src = main(
         "    vec4 p1 = vec4(0.5, 4.0, 0.1, 0.2);\n    vec4 p2 = vec4(0.3, 9.0, 0.2, 0.1);\n"
         "    float b1 = p1.x * texture(iChannel0, uv * p1.y).x;\n"
-        "    float b2 = p2.x * texture(iChannel0, uv * p2.x).x;\n"  # line 7
+        "    float b2 = p2.x * texture(iChannel0, uv * p2.x).x;\n"  # line 5
         "    uv += b1 + b2;\n"
     )
     found = lint(src, "C109")
@@ -184,9 +218,9 @@ def test_n013_reports_a_guard_the_code_before_it_ruled_out() -> None:
         "    if (t < 0.0) t = 600.0;\n"
         "    if (t < 0.0) uv = vec2(0.0);\n"  # line 6
         "    float d = uv.x - 0.3;\n"
-        "    if (abs(d) < 0.0 || d > 2.0) uv.y = 1.0;\n"  # line 8
+        "    if (abs(d) < 0.0 || d > 2.0) uv.y = 1.0;\n"  # line 6
         "    if (t > 500.0) uv.x += 1.0;\n"
-        "    else if (t > 800.0) uv.x += 2.0;\n"  # line 10: the first test takes these
+        "    else if (t > 800.0) uv.x += 2.0;\n"  # line 8: the first test takes these
         "    else if (t > 1000.0) uv.x += 3.0;\n"  # one finding for the chain
     )
     found = lint(src, "N013")

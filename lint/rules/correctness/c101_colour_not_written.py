@@ -71,7 +71,7 @@ class ColourNotWritten(Rule):
 
     code = "C101"
     name = "colour-not-written"
-    default = False  # below 90% worth acting on in the labelled corpus sample
+    default = False  # below 80% worth acting on in the labelled corpus sample
     category = "correctness"
     severity = "warning"
 

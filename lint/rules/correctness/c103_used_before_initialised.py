@@ -54,7 +54,7 @@ class UsedBeforeInitialised(Rule):
 
     code = "C103"
     name = "used-before-initialised"
-    default = False  # below 90% worth acting on in the labelled corpus sample
+    default = False  # below 80% worth acting on in the labelled corpus sample
     category = "correctness"
     severity = "warning"
 

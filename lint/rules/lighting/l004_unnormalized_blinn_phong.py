@@ -82,7 +82,7 @@ class UnnormalizedBlinnPhong(Rule):
 
     code = "L004"
     name = "unnormalized-blinn-phong"
-    default = False  # below 90% worth acting on in the labelled corpus sample
+    default = False  # below 80% worth acting on in the labelled corpus sample
     category = "lighting"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

@@ -44,8 +44,8 @@ class ModAtanZero(NumericalRule):
 
     code = "N007"
     name = "mod-atan-zero"
-    certainty = "certain"
-    default = False  # below 90% worth acting on in the labelled corpus sample
+    certainty = "possible"
+    default = False  # below 80% worth acting on in the labelled corpus sample
     severity = "warning"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
@@ -57,9 +57,13 @@ class ModAtanZero(NumericalRule):
                 continue
             a, b = (model.value_of(x) for x in args)
             if name == "mod" and b.range == zero:
-                yield self.emit(ctx, call, "mod by zero is undefined", severity="error")
+                yield self.emit(
+                    ctx, call, "mod by zero is undefined", severity="error", certainty="certain"
+                )
             elif name == "atan" and a.range == zero and b.range == zero:
-                yield self.emit(ctx, call, "atan(0, 0) is undefined", severity="error")
+                yield self.emit(
+                    ctx, call, "atan(0, 0) is undefined", severity="error", certainty="certain"
+                )
             elif name == "atan" and _both_zero(a, b):
                 message = (
                     f"atan({text(ctx, args[0], 24)}, {text(ctx, args[1], 24)}): both may be 0 "

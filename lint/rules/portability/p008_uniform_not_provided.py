@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import operator
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from typing import Any
 
 from lark import Token, Tree
 
-from ...analysis.syntax import spec_text
+from ...analysis.syntax import int_value, spec_text
 from ...analysis.types import SHADERTOY_TYPES
 from ...context import LintContext, Node
 from ...finding import Finding
@@ -26,7 +29,9 @@ class UniformNotProvided(Rule):
     Such uniforms come from shaders written for another host (a GUI toggle such as `u_mode`, or
     glslsandbox's `time` and `resolution`) and pasted into ShaderToy. Uniforms never read and
     samplers (which ShaderToy's texture units alias) are not reported; the rule runs only for
-    the ShaderToy target.
+    the ShaderToy target. The message says what the zero does: the branch or loop it kills
+    (its tests evaluated with the uniform at zero, a for loop's counter at its start), else a
+    division by it, else a product it wipes out, else where it is first read.
 
     Why is this bad?
         Nothing assigns the uniform, so every test of it takes the same way on every frame: a
@@ -85,19 +90,164 @@ class UniformNotProvided(Rule):
         for name, (token, typ) in declared.items():
             if name not in reads:
                 continue  # never read: harmless
-            first_read, test = reads[name]
             zero = _ZERO.get(typ, f"{typ}(0)")
-            if test is not None:
-                shown = " ".join(ctx.node_text(test).split())
-                shown = shown if len(shown) <= 40 else shown[:37] + "..."
-                effect = f", so the test `{shown}` at line {ctx.span(test)[0]} always sees {zero}"
-            else:
-                effect = f" wherever it is read (first at line {ctx.span(first_read)[0]})"
             message = (
-                f"uniform {typ} {name} is never set by ShaderToy: it is always {zero}{effect}; "
+                f"uniform {typ} {name} is never set by ShaderToy: it is always {zero}"
+                f"{_effect(ctx, name, typ, zero, reads[name])}; "
                 "make it a const or a #define with the value meant"
             )
             yield self.report(ctx, token, message)
+
+
+@dataclass
+class _Reads:
+    """How the shader reads one uniform: its first read, the tests (conditions of an if, a
+    loop, a switch or a ?:) that read it with their statements, the first division by it."""
+
+    first: Tree
+    tests: list[tuple[Tree, Tree]] = field(default_factory=list)
+    divisor: Tree | None = None
+    product: Tree | None = None
+
+
+def _effect(ctx: LintContext, name: str, typ: str, zero: str, reads: _Reads) -> str:
+    """What the zero value does, most telling first: a branch or loop it kills, a division by
+    it, a test that merely reads it, else where it is first read."""
+    told: list[str] = []
+    for test, statement in reads.tests:
+        value = _value(test, _bindings(name, typ, statement))
+        if statement.data == "for_statement" and value is True:
+            value = None  # true on the first iteration only: the counter moves on
+        dead = _dead(ctx, test, statement, value)
+        if dead:
+            return dead
+        told.append(_shown(ctx, test, statement, value, zero))
+    if reads.divisor is not None:
+        shown = _short(ctx.node_text(reads.divisor))
+        return f", so `{shown}` at line {ctx.span(reads.divisor)[0]} divides by zero"
+    if reads.product is not None:
+        shown = _short(ctx.node_text(reads.product))
+        return f", so `{shown}` at line {ctx.span(reads.product)[0]} is always zero"
+    if told:
+        return told[0]
+    return f" wherever it is read (first at line {ctx.span(reads.first)[0]})"
+
+
+def _dead(ctx: LintContext, test: Tree, statement: Tree, value: object) -> str | None:
+    """The code the test's constant value makes unreachable, said in words; None if none."""
+    if not isinstance(value, bool):
+        return None
+    shown = _short(ctx.node_text(test))
+    line = ctx.span(test)[0]
+    kind = statement.data
+    if kind == "if_statement":
+        if not value:
+            return f", so the branch of `if ({shown})` at line {line} never runs"
+        if len(statement.children) > 2:
+            else_line = ctx.span(statement.children[2])[0]
+            return f", so the else branch of `if ({shown})` (line {else_line}) never runs"
+        return None
+    if kind in ("for_statement", "while_statement") and not value:
+        return f", so the loop at line {line} never runs: `{shown}` is false from the start"
+    if kind == "ternary":
+        which = "first" if value else "second"
+        return f", so `{shown} ? ... : ...` at line {line} always takes its {which} value"
+    return None
+
+
+def _shown(ctx: LintContext, test: Tree, statement: Tree, value: object, zero: str) -> str:
+    """The test with what it reads when it kills nothing (or its value is unknown)."""
+    shown = _short(ctx.node_text(test))
+    line = ctx.span(test)[0]
+    if isinstance(value, bool):
+        return f", so `{shown}` at line {line} is always {'true' if value else 'false'}"
+    if statement.data == "switch_statement" and value is not None:
+        return f", so `switch ({shown})` at line {line} always switches on {zero}"
+    return f", so the test `{shown}` at line {line} always reads it as {zero}"
+
+
+def _short(text: str) -> str:
+    shown = " ".join(text.split())
+    return shown if len(shown) <= 40 else shown[:37] + "..."
+
+
+# The zero of each scalar type, as _value computes with it (vectors: not evaluated).
+_ZERO_VALUE: dict[str, object] = {"bool": False, "int": 0, "uint": 0, "float": 0.0}
+
+
+def _bindings(name: str, typ: str, statement: Tree) -> dict[str, object]:
+    """The values known when the test is first evaluated: the uniform is zero and a for loop's
+    counter holds its literal initial value (on the first iteration)."""
+    values: dict[str, object] = {}
+    if typ in _ZERO_VALUE:
+        values[name] = _ZERO_VALUE[typ]
+    if statement.data == "for_statement":
+        init = statement.children[0]
+        for decl in init.find_data("declarator") if isinstance(init, Tree) else ():
+            if len(decl.children) == 2 and isinstance(decl.children[0], Token):
+                value = _value(decl.children[1], {})
+                if value is not None:
+                    values[str(decl.children[0])] = value
+    return values
+
+
+_COMPARE: dict[str, Callable[[Any, Any], bool]] = {
+    "==": operator.eq,
+    "!=": operator.ne,
+    "<": operator.lt,
+    "<=": operator.le,
+    ">": operator.gt,
+    ">=": operator.ge,
+}
+_ARITHMETIC: dict[str, Callable[[Any, Any], Any]] = {
+    "+": operator.add,
+    "-": operator.sub,
+    "*": operator.mul,
+}
+
+
+def _value(node: Node, values: dict[str, object]) -> object:
+    """The node's constant value (bool, int or float) given the known variables; None where
+    anything else decides it. `a && b` is false when either side is, whatever the other."""
+    if not isinstance(node, Tree):
+        return None
+    kind = node.data
+    if kind == "variable":
+        return values.get(str(node.children[0]))
+    if kind == "bool_literal":
+        return str(node.children[0]) == "true"
+    if kind == "int_literal":
+        return int_value(str(node.children[0]))
+    if kind == "float_literal":
+        try:
+            return float(str(node.children[0]).rstrip("fFlL"))
+        except ValueError:
+            return None
+    if kind == "unary":
+        op, operand = str(node.children[0]), _value(node.children[1], values)
+        if op == "!" and isinstance(operand, bool):
+            return not operand
+        if op == "-" and isinstance(operand, (int, float)) and not isinstance(operand, bool):
+            return -operand
+        return operand if op == "+" else None
+    if kind != "binary":
+        return None
+    op = str(node.children[1])
+    left, right = _value(node.children[0], values), _value(node.children[2], values)
+    if op in ("&&", "||"):
+        absorbing = op == "||"  # true absorbs an or, false an and
+        if left is absorbing or right is absorbing:
+            return absorbing
+        if isinstance(left, bool) and isinstance(right, bool):
+            return not absorbing
+        return None
+    if left is None or right is None:
+        return None
+    if op in _COMPARE:
+        return _COMPARE[op](left, right)
+    if op in _ARITHMETIC and not isinstance(left, bool) and not isinstance(right, bool):
+        return _ARITHMETIC[op](left, right)
+    return None
 
 
 def _is_uniform(spec: Node) -> bool:
@@ -109,33 +259,69 @@ def _is_uniform(spec: Node) -> bool:
     )
 
 
-def _reads(ctx: LintContext, names: set[str]) -> dict[str, tuple[Tree, Tree | None]]:
-    """For each name read in a function: its first read and the first condition (of an if,
-    loop, switch or ?:) that reads it, if any."""
+def _reads(ctx: LintContext, names: set[str]) -> dict[str, _Reads]:
+    """For each name read in a function: its first read, the tests that read it (with their
+    statement) and the first division by it."""
     parents = ctx.parents()
-    found: dict[str, tuple[Tree, Tree | None]] = {}
+    found: dict[str, _Reads] = {}
     for node in ctx.nodes("variable"):
         name = str(node.children[0])
-        if name not in names or (name in found and found[name][1] is not None):
+        if name not in names:
             continue
-        test = _condition_of(node, parents)
-        if name not in found:
-            found[name] = (node, test)
-        elif test is not None:
-            found[name] = (found[name][0], test)
+        reads = found.setdefault(name, _Reads(node))
+        test = _condition_of(ctx, node, parents)
+        if test is not None:
+            reads.tests.append(test)
+        parent = parents.get(id(node))
+        if reads.divisor is None and parent is not None and _divides_by(parent, node):
+            reads.divisor = parent
+        if reads.product is None and parent is not None and _multiplies_by(parent, node):
+            reads.product = parent
     return found
 
 
-def _condition_of(node: Tree, parents: dict[int, Tree]) -> Tree | None:
-    """The condition expression the node is part of, if it is in one."""
+def _divides_by(parent: Tree, node: Tree) -> bool:
+    """Whether the parent divides by the node: `a / node` or `a /= node`."""
+    if parent.data not in ("binary", "assignment") or parent.children[2] is not node:
+        return False
+    return str(parent.children[1]) in ("/", "/=")
+
+
+def _for_condition(ctx: LintContext, loop: Tree) -> Node | None:
+    """A for loop's condition. With only one of condition and step the tree does not say
+    which, so count the `;` before it: two mean the condition is empty."""
+    middle = loop.children[1:-1]
+    if len(middle) != 1:
+        return middle[0] if middle else None
+    only = middle[0]
+    if ctx.pre is None or loop.meta.empty or not isinstance(only, Tree) or only.meta.empty:
+        return None
+    before = ctx.pre.text[loop.meta.start_pos : only.meta.start_pos]
+    return None if before.count(";") >= 2 else only
+
+
+def _multiplies_by(parent: Tree, node: Tree) -> bool:
+    """Whether the parent multiplies something by the node, `a * node` or `node * a`: the zero
+    wipes out `a` (a scale by a literal, `2.0 * node`, wipes out nothing worth naming)."""
+    if parent.data != "binary" or str(parent.children[1]) != "*":
+        return False
+    other = parent.children[2] if parent.children[0] is node else parent.children[0]
+    return not (isinstance(other, Tree) and other.data in ("int_literal", "float_literal"))
+
+
+def _condition_of(
+    ctx: LintContext, node: Tree, parents: dict[int, Tree]
+) -> tuple[Tree, Tree] | None:
+    """The condition expression the node is part of and its statement (if, loop, switch or
+    ?:), if it is in one."""
     current: Tree = node
     while (parent := parents.get(id(current))) is not None:
         if parent.data in _TESTS:
-            return current if parent.children[_TESTS[parent.data]] is current else None
+            return (current, parent) if parent.children[_TESTS[parent.data]] is current else None
         if parent.data == "ternary":
-            return current if parent.children[0] is current else None
+            return (current, parent) if parent.children[0] is current else None
         if parent.data == "for_statement":
-            return current if len(parent.children) > 2 and parent.children[1] is current else None
+            return (current, parent) if _for_condition(ctx, parent) is current else None
         if parent.data in ("compound_statement", "function_definition"):
             return None
         current = parent
