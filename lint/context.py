@@ -265,7 +265,7 @@ class TreeIndex:
                 order.append(item)
                 ends.append(0)
                 stack.append(position)
-                stack.extend(item.children[::-1])
+                stack.extend(reversed(item.children))
         self.order = order
         self._starts = starts
         self._ends = ends
