@@ -15,6 +15,7 @@ from lark import Token, Tree
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import Preprocessed
+from glint.compiler.glsl.ast import Variable, first_child
 from glint.compiler.target.glslang import Diagnostic, validate
 from glint.compiler.target.shadertoy import Tab
 
@@ -267,7 +268,7 @@ class TreeIndex:
                 order.append(item)
                 ends.append(0)
                 stack.append(position)
-                stack.extend(item.children[::-1])
+                stack.extend(reversed(item.children))
         self.order = order
         self._starts = starts
         self._ends = ends
@@ -295,8 +296,8 @@ class TreeIndex:
             self.of_kind(node, ())  # makes self._kinds
             assert self._kinds is not None
             positions, variables = self._kinds.get("variable", ([], []))
-            heads = {id(call.children[0]) for call in self._kinds.get("call", ((), ()))[1]}
-            names = ["" if id(v) in heads else str(v.children[0]) for v in variables]
+            heads = {id(first_child(call)) for call in self._kinds.get("call", ((), ()))[1]}
+            names = ["" if id(v) in heads else Variable(v).name for v in variables]
             self._names = (positions, names)
         positions, names = self._names
         low = bisect_left(positions, start)

@@ -18,10 +18,11 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 
-from lark import Token, Tree
+from lark import Tree
 
 from glint.compiler.compose.units import GENERATED, Unit
 from glint.compiler.glsl import parse_source, reachable, symbols_of
+from glint.compiler.glsl.ast import FunctionDefinition, FunctionPrototype, VariableDeclaration
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 from glint.compiler.target.sourcemap import source_marker
 
@@ -96,15 +97,16 @@ def _items(tree: Tree, lines: list[str]) -> list[_Item]:
 def _declared(node: Tree) -> set[str]:
     """Names a top-level node defines; none for what always stays (precision statements)."""
     if node.data == "function_definition":
-        return {str(node.children[0].children[1])}
+        return {FunctionDefinition(node).name}
     if node.data == "function_prototype":
-        return {str(node.children[1])}
+        return {FunctionPrototype(node).name}
     if node.data != "variable_declaration":
         return set()
-    names = {str(declarator.children[0]) for declarator in node.children[1:]}
-    struct = next(node.children[0].find_data("struct_specifier"), None)
-    if struct is not None and isinstance(struct.children[0], Token):
-        names.add(str(struct.children[0]))
+    declaration = VariableDeclaration(node)
+    names = {declarator.name for declarator in declaration.declarators}
+    struct = declaration.type.type.struct
+    if struct is not None and struct.name is not None:
+        names.add(struct.name)
     return names
 
 

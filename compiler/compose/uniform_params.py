@@ -29,6 +29,7 @@ from glint.compiler.catalog.loader import Catalog
 from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.units import Unit
 from glint.compiler.glsl import Macro, parse_source, preprocess
+from glint.compiler.glsl.ast import Variable, VariableDeclaration
 from glint.compiler.glsl.pptokens import tokenize
 
 MANIFEST_OPEN = "/* glint-params"
@@ -132,25 +133,21 @@ def _constant_expressions(tree: Tree) -> Iterator[Tree | Token]:
             qualifiers = _qualifiers(node)
             # `const` anywhere; a global without a storage qualifier (ES 3.00 section 4.3)
             if "const" in qualifiers or (id(node) in top_level and not qualifiers & _STORAGE):
-                for declarator in node.find_data("declarator"):
-                    yield from declarator.children[1:]
+                for declarator in VariableDeclaration(node).declarators:
+                    # the array size and the initializer
+                    yield from (
+                        p for p in (declarator.array, declarator.initializer) if p is not None
+                    )
 
 
 def _qualifiers(declaration: Tree) -> set[str]:
-    head = declaration.children[0]
-    if not isinstance(head, Tree):
-        return set()
-    return {
-        str(token)
-        for qualifier in head.find_data("type_qualifier")
-        for token in qualifier.scan_values(lambda value: isinstance(value, Token))
-    }
+    return set(VariableDeclaration(declaration).type.qualifiers)
 
 
 def _variables(node: Tree | Token) -> Iterator[str]:
     if isinstance(node, Tree):
         for variable in node.find_data("variable"):
-            yield str(variable.children[0])
+            yield Variable(variable).name
 
 
 def _in_conditions(source: str, macros: dict[str, Macro], wanted: set[str]) -> Iterator[str]:

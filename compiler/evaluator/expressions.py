@@ -32,6 +32,23 @@ from glint.compiler.evaluator.values import (
     vec_size,
     vector_type,
 )
+from glint.compiler.glsl.ast import (
+    BoolLiteral,
+    Constructor,
+    Field,
+    FloatLiteral,
+    Index,
+    IntLiteral,
+    Postfix,
+    Prefix,
+    Sequence,
+    StructSpecifier,
+    Ternary,
+    TypeSpecifier,
+    Unary,
+    Variable,
+    binary_parts,
+)
 from glint.compiler.glsl.preprocessor import Preprocessed
 
 Step = tuple[str, Any]  # ("field", name) or ("index", Value)
@@ -80,28 +97,29 @@ class ExpressionEvaluator:
 
     def type_of(self, spec: Tree) -> str:
         """The type named by a type_specifier (registering an inline struct)."""
-        if any(isinstance(c, Tree) and c.data == "array_specifier" for c in spec.children):
+        view = TypeSpecifier(spec)
+        if view.array is not None:
             raise self.error(spec, "arrays are not supported by the evaluator", unsupported=True)
-        name = spec.children[0]
-        if isinstance(name, Tree):  # struct_specifier
-            return self.define_struct(name)
-        text = str(name)
+        struct = view.struct
+        if struct is not None:
+            return self.define_struct(struct.syntax)
+        text = view.name
         if text == "void" or is_value_type(text) or text in self.structs:
             return text
         raise self.error(spec, f"type '{text}' is not supported", unsupported=True)
 
     def define_struct(self, node: Tree) -> str:
-        name = str(node.children[0]) if isinstance(node.children[0], Token) else None
+        struct = StructSpecifier(node)
+        name = struct.name
         if name is None:
             raise self.error(node, "anonymous structs are not supported", unsupported=True)
         members: list[tuple[str, str]] = []
-        for member in node.children[1:]:
-            spec = next(c for c in member.children if c.data == "type_specifier")
-            for decl in member.children:
-                if decl.data == "struct_declarator":
-                    if len(decl.children) > 1:
-                        raise self.error(decl, "array members are not supported", True)
-                    members.append((str(decl.children[0]), self.type_of(spec)))
+        for member in struct.members:
+            spec = member.type.syntax
+            for decl in member.declarators:
+                if decl.array is not None:
+                    raise self.error(decl.syntax, "array members are not supported", True)
+                members.append((decl.name, self.type_of(spec)))
         self.structs[name] = members
         return name
 
@@ -163,10 +181,10 @@ class ExpressionEvaluator:
         raise self.error(node, f"'{name}' is not defined (pass it in externals?)")
 
     def _e_variable(self, node: Tree) -> AnyValue:
-        return self.lookup(str(node.children[0]), node)[1]
+        return self.lookup(Variable(node).name, node)[1]
 
     def _e_int_literal(self, node: Tree) -> Value:
-        text = str(node.children[0]).rstrip("uU")
+        text = IntLiteral(node).text.rstrip("uU")
         if text[:2].lower() == "0x":
             n = int(text, 16)
         else:
@@ -174,18 +192,18 @@ class ExpressionEvaluator:
         return Value("int", np.asarray(n, np.int32))
 
     def _e_float_literal(self, node: Tree) -> Value:
-        return Value("float", np.asarray(float(str(node.children[0]).rstrip("fF")), self.ft))
+        return Value("float", np.asarray(FloatLiteral(node).value, self.ft))
 
     def _e_bool_literal(self, node: Tree) -> Value:
-        return Value("bool", np.asarray(str(node.children[0]) == "true"))
+        return Value("bool", np.asarray(BoolLiteral(node).value))
 
     def _e_sequence(self, node: Tree) -> AnyValue:
-        self.expr(node.children[0])
-        return self.expr(node.children[1])
+        sequence = Sequence(node)
+        self.expr(sequence.left)
+        return self.expr(sequence.right)
 
     def _e_binary(self, node: Tree) -> AnyValue:
-        left, op_tok, right = node.children
-        op = str(op_tok)
+        left, op, right = binary_parts(node)
         if op in ("&&", "||"):
             return self._logic(op, left, right)
         a, b = self.expr(left), self.expr(right)
@@ -219,7 +237,8 @@ class ExpressionEvaluator:
         return Value("bool", (a & b) if op == "&&" else (a | b))
 
     def _e_unary(self, node: Tree) -> Value:
-        op, operand = str(node.children[0]), self.value(node.children[1])
+        unary = Unary(node)
+        op, operand = unary.op, self.value(unary.operand)
         if op == "-":
             return negate(operand, self.ft)
         if op == "!" and operand.type == "bool":
@@ -231,10 +250,12 @@ class ExpressionEvaluator:
         raise self.error(node, f"unary '{op}' on {operand.type}")
 
     def _e_prefix(self, node: Tree) -> Value:
-        return self._step(node.children[1], str(node.children[0]), node)[1]
+        prefix = Prefix(node)
+        return self._step(prefix.operand, prefix.op, node)[1]  # type: ignore[arg-type]
 
     def _e_postfix(self, node: Tree) -> Value:
-        return self._step(node.children[0], str(node.children[1]), node)[0]
+        postfix = Postfix(node)
+        return self._step(postfix.operand, postfix.op, node)[0]  # type: ignore[arg-type]
 
     def _step(self, target: Tree, op: str, node: Tree) -> tuple[Value, Value]:
         """`++`/`--`: (old, new)."""
@@ -248,9 +269,8 @@ class ExpressionEvaluator:
         return old, new
 
     def _e_assignment(self, node: Tree) -> AnyValue:
-        target, op_tok, rhs = node.children
-        op = str(op_tok)
-        lv = self.lvalue(target)
+        target, op, rhs = binary_parts(node)
+        lv = self.lvalue(target)  # type: ignore[arg-type]
         new = self.expr(rhs)
         if op != "=":
             old = self.read(lv, node)
@@ -260,10 +280,11 @@ class ExpressionEvaluator:
         return self.assign(lv, new, node)
 
     def _e_ternary(self, node: Tree) -> AnyValue:
-        cond = self.truth(node.children[0])
+        ternary = Ternary(node)
+        cond = self.truth(ternary.condition)
         saved = self.mask
         out: list[AnyValue | None] = []
-        for lanes_, branch in ((cond, node.children[1]), (~cond, node.children[2])):
+        for lanes_, branch in ((cond, ternary.if_true), (~cond, ternary.if_false)):
             if (saved & lanes_).any():
                 self.mask = saved & lanes_
                 try:
@@ -284,11 +305,13 @@ class ExpressionEvaluator:
     # ---- fields, swizzles, indexing -------------------------------------------------------
 
     def _e_field(self, node: Tree) -> AnyValue:
-        return self.get(self.expr(node.children[0]), ("field", str(node.children[1])), node)
+        field = Field(node)
+        return self.get(self.expr(field.base), ("field", field.name), node)
 
     def _e_index(self, node: Tree) -> AnyValue:
-        base = self.expr(node.children[0])
-        return self.get(base, ("index", self.value(node.children[1])), node)
+        index = Index(node)
+        base = self.expr(index.base)
+        return self.get(base, ("index", self.value(index.index)), node)
 
     def get(self, value: AnyValue, step: Step, node: Tree) -> AnyValue:
         kind, key = step
@@ -333,13 +356,15 @@ class ExpressionEvaluator:
 
     def lvalue(self, node: Tree) -> tuple[str, list[Step], Tree]:
         if node.data == "variable":
-            return str(node.children[0]), [], node
+            return Variable(node).name, [], node
         if node.data == "field":
-            name, steps, _ = self.lvalue(node.children[0])
-            return name, [*steps, ("field", str(node.children[1]))], node
+            field = Field(node)
+            name, steps, _ = self.lvalue(field.base)  # type: ignore[arg-type]
+            return name, [*steps, ("field", field.name)], node
         if node.data == "index":
-            name, steps, _ = self.lvalue(node.children[0])
-            return name, [*steps, ("index", self.value(node.children[1]))], node
+            index = Index(node)
+            name, steps, _ = self.lvalue(index.base)  # type: ignore[arg-type]
+            return name, [*steps, ("index", self.value(index.index))], node
         raise self.error(node, "this expression cannot be assigned to")
 
     def read(self, lv: tuple[str, list[Step], Tree], node: Tree) -> AnyValue:
@@ -393,8 +418,9 @@ class ExpressionEvaluator:
     # ---- constructors ------------------------------------------------------------------------
 
     def _e_constructor(self, node: Tree) -> AnyValue:
-        type_ = self.type_of(node.children[0])
-        args = [self.expr(a) for a in node.children[1].children] if len(node.children) > 1 else []
+        constructor = Constructor(node)
+        type_ = self.type_of(constructor.type.syntax)
+        args = [self.expr(a) for a in constructor.arguments]
         return self.construct(type_, args, node)
 
     def construct(self, type_: str, args: list[AnyValue], node: Tree) -> AnyValue:

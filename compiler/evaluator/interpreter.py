@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from lark import Token, Tree
+from lark import Tree
 
 from glint.compiler.evaluator.builtins import UNSUPPORTED, call_builtin
 from glint.compiler.evaluator.expressions import ExpressionEvaluator, Frame, Loop
@@ -29,6 +29,20 @@ from glint.compiler.evaluator.values import (
     stack,
     to_numpy,
     vec_size,
+)
+from glint.compiler.glsl.ast import (
+    Call,
+    CompoundStatement,
+    DeclarationStatement,
+    DoStatement,
+    ExpressionStatement,
+    FunctionDefinition,
+    FunctionPrototype,
+    IfStatement,
+    JumpStatement,
+    VariableDeclaration,
+    WhileStatement,
+    for_parts,
 )
 from glint.compiler.glsl.parser import parse_source
 
@@ -80,32 +94,32 @@ class Interpreter(ExpressionEvaluator):
 
     def _top_level(self, node: Tree) -> None:
         if node.data == "function_definition":
-            fn = self._function(node.children[0], node.children[1])
+            definition = FunctionDefinition(node)
+            fn = self._function(definition.prototype, definition.body)
             self.functions.setdefault(fn.name, []).append(fn)
         elif node.data == "function_prototype":
-            self.prototypes[str(node.children[1])] = self.type_of(_spec(node.children[0]))
+            proto = FunctionPrototype(node)
+            self.prototypes[proto.name] = self.type_of(proto.return_type.type.syntax)
         elif node.data == "variable_declaration":
-            qualifiers = _qualifiers(node.children[0])
-            if qualifiers & {"uniform", "in", "out"}:  # shader inputs come from externals
-                self.type_of(_spec(node.children[0]))
+            full_type = VariableDeclaration(node).type
+            if set(full_type.qualifiers) & {"uniform", "in", "out"}:  # inputs come from externals
+                self.type_of(full_type.type.syntax)
                 return
             self._s_variable_declaration(node)
 
-    def _function(self, proto: Tree, body: Tree) -> Function:
+    def _function(self, proto: FunctionPrototype, body: Tree) -> Function:
         params: list[tuple[str, str, str]] = []
-        for child in proto.children[2:]:
-            for param in child.children:
-                spec = _spec(param)
-                names = [c for c in param.children if isinstance(c, Token)]
-                quals = _qualifiers(param) & _DIRECTIONS
-                if not names:  # `float f(void)` or an unnamed parameter
-                    if self.type_of(spec) == "void":
-                        continue
-                    names = [Token("IDENTIFIER", f"_arg{len(params)}")]
-                params.append((quals.pop() if quals else "in", self.type_of(spec), str(names[0])))
-        return Function(
-            str(proto.children[1]), self.type_of(_spec(proto.children[0])), params, body
-        )
+        for param in proto.parameters:
+            spec = param.type.syntax
+            name = param.name
+            qualifier = param.qualifier
+            quals = set(qualifier.words) & _DIRECTIONS if qualifier is not None else set()
+            if name is None:  # `float f(void)` or an unnamed parameter
+                if self.type_of(spec) == "void":
+                    continue
+                name = f"_arg{len(params)}"
+            params.append((quals.pop() if quals else "in", self.type_of(spec), name))
+        return Function(proto.name, self.type_of(proto.return_type.type.syntax), params, body)
 
     # ---- calls -------------------------------------------------------------------------------
 
@@ -155,11 +169,11 @@ class Interpreter(ExpressionEvaluator):
         return result, outs
 
     def _e_call(self, node: Tree) -> AnyValue:
-        callee = node.children[0]
-        arg_nodes = list(node.children[1].children) if len(node.children) > 1 else []
-        if callee.data != "variable":
+        call = Call(node)
+        arg_nodes = call.arguments
+        name = call.callee_name
+        if name is None:
             raise self.error(node, "method calls such as .length() are not supported", True)
-        name = str(callee.children[0])
         if name in self.functions:
             return self._call_user(name, arg_nodes, node)
         if name in self.externals and callable(self.externals[name]):
@@ -262,13 +276,13 @@ class Interpreter(ExpressionEvaluator):
     def _s_compound_statement(self, node: Tree) -> None:
         self.frame.scopes.append({})
         try:
-            for child in node.children:
-                self.stmt(child)
+            for child in CompoundStatement(node).statements:
+                self.stmt(child)  # type: ignore[arg-type]
         finally:
             self.frame.scopes.pop()
 
     def _s_declaration_statement(self, node: Tree) -> None:
-        self.stmt(node.children[0])
+        self.stmt(DeclarationStatement(node).declaration)
 
     def _s_precision_declaration(self, node: Tree) -> None:
         pass
@@ -277,27 +291,27 @@ class Interpreter(ExpressionEvaluator):
         pass
 
     def _s_expression_statement(self, node: Tree) -> None:
-        self.expr(node.children[0])
+        self.expr(ExpressionStatement(node).expression)  # type: ignore[arg-type]
 
     def _s_variable_declaration(self, node: Tree) -> None:
-        type_ = self.type_of(_spec(node.children[0]))
+        declaration = VariableDeclaration(node)
+        type_ = self.type_of(declaration.type.type.syntax)
         scope = self.frame.scopes[-1]
-        for decl in node.children[1:]:
-            name = str(decl.children[0])
-            rest = decl.children[1:]
-            if rest and rest[0].data == "array_specifier":
-                raise self.error(decl, "arrays are not supported by the evaluator", True)
-            value = self.coerce(self.expr(rest[0]), type_, decl) if rest else self.zero(type_)
-            scope[name] = value
+        for decl in declaration.declarators:
+            if decl.array is not None:
+                raise self.error(decl.syntax, "arrays are not supported by the evaluator", True)
+            init = decl.initializer
+            if init is None:
+                scope[decl.name] = self.zero(type_)
+            else:
+                scope[decl.name] = self.coerce(self.expr(init), type_, decl.syntax)  # type: ignore[arg-type]
 
     def _s_if_statement(self, node: Tree) -> None:
-        cond = self.truth(node.children[0])
+        branch_ = IfStatement(node)
+        cond = self.truth(branch_.condition)  # type: ignore[arg-type]
         entry = self.mask
         exits = []
-        for lanes_, branch in (
-            (cond, node.children[1]),
-            (~cond, node.children[2] if len(node.children) > 2 else None),
-        ):
+        for lanes_, branch in ((cond, branch_.then_branch), (~cond, branch_.else_branch)):
             self.mask = entry & lanes_
             if branch is not None:
                 self._scoped(branch)
@@ -305,10 +319,12 @@ class Interpreter(ExpressionEvaluator):
         self.mask = exits[0] | exits[1]
 
     def _s_jump_statement(self, node: Tree) -> None:
-        kind = str(node.children[0])
+        jump = JumpStatement(node)
+        kind = jump.keyword
         if kind == "return":
-            if len(node.children) > 1:
-                value = self.coerce(self.expr(node.children[1]), self.frame.return_type, node)
+            returned = jump.value
+            if returned is not None:
+                value = self.coerce(self.expr(returned), self.frame.return_type, node)  # type: ignore[arg-type]
                 prev = self.frame.result
                 self.frame.result = value if prev is None else select(self.mask, value, prev)
             self.frame.returned = self.frame.returned | self.mask
@@ -325,27 +341,23 @@ class Interpreter(ExpressionEvaluator):
         self.mask = self.mask & False  # these lanes run nothing more in this block
 
     def _s_for_statement(self, node: Tree) -> None:
-        init, *middle, body = node.children
-        cond = incr = None
-        for part in middle:  # which of the optional parts is there: count the `;` before it
-            if self.text.count(";", node.meta.start_pos, part.meta.start_pos) >= 2:
-                incr = part
-            else:
-                cond = part
+        init, cond, incr, body = for_parts(node)
         self.frame.scopes.append({})
         try:
             self.stmt(init)
-            self._loop(node, cond, body, incr)
+            self._loop(node, cond, body, incr)  # type: ignore[arg-type]
         finally:
             self.frame.scopes.pop()
 
     def _s_while_statement(self, node: Tree) -> None:
-        if node.children[0].data == "condition_declaration":
+        loop = WhileStatement(node)
+        if loop.declaration is not None:
             raise self.error(node, "declarations in a while condition are not supported", True)
-        self._loop(node, node.children[0], node.children[1], None)
+        self._loop(node, loop.condition, loop.body, None)  # type: ignore[arg-type]
 
     def _s_do_statement(self, node: Tree) -> None:
-        self._loop(node, node.children[1], node.children[0], None, test_first=False)
+        loop = DoStatement(node)
+        self._loop(node, loop.condition, loop.body, None, test_first=False)  # type: ignore[arg-type]
 
     def _loop(
         self, node: Tree, cond: Tree | None, body: Tree, incr: Tree | None, test_first: bool = True
@@ -377,20 +389,3 @@ class Interpreter(ExpressionEvaluator):
 
     def _s_switch_statement(self, node: Tree) -> None:
         raise self.error(node, "switch statements are not supported", True)
-
-
-def _spec(node: Tree) -> Tree:
-    """The type_specifier inside a fully_specified_type or parameter."""
-    for child in node.children:
-        if isinstance(child, Tree) and child.data == "type_specifier":
-            return child
-        if isinstance(child, Tree) and child.data == "fully_specified_type":
-            return _spec(child)
-    raise ValueError(f"no type in {node.data}")
-
-
-def _qualifiers(node: Tree) -> set[str]:
-    quals = next(
-        (c for c in node.children if isinstance(c, Tree) and c.data == "type_qualifier"), None
-    )
-    return {str(t) for t in quals.children if isinstance(t, Token)} if quals is not None else set()

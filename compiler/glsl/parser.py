@@ -329,6 +329,19 @@ class _Shape:
             _nest(operands, operators)
         return operands[0]  # type: ignore[return-value]
 
+    def for_statement(self, items: list[Tree | Token]) -> Tree:
+        """`for (init cond? ; update?) body` as [init, cond?, update?, body], the children
+        lark gives, with `meta.for_parts` saying which optional parts are there: the `;`
+        between them (kept by the grammar for this) is where the condition ends."""
+        semicolon = next(
+            i
+            for i, item in enumerate(items)
+            if isinstance(item, Token) and item.type == "SEMICOLON"
+        )
+        node = Tree("for_statement", items[:semicolon] + items[semicolon + 1 :], Meta())
+        node.meta.for_parts = (semicolon == 2, len(items) - semicolon == 3)  # type: ignore[attr-defined]
+        return node
+
 
 def _nest(operands: list[Tree | Token], operators: list[Token]) -> None:
     """Replace the last two operands by their `binary` node, with the positions lark's

@@ -6,6 +6,15 @@ from __future__ import annotations
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    Field,
+    Unary,
+    VariableDeclaration,
+    binary_parts,
+    token_text,
+    variable_name,
+)
+
 from ..context import LintContext, Node
 from .functions import Function
 from .model import semantic_model
@@ -20,16 +29,17 @@ def const_value(node: Node, names: dict[str, float] | None = None) -> float | No
     if not isinstance(node, Tree):
         return None
     if names and node.data == "variable":
-        return names.get(str(node.children[0]))
+        return names.get(str(variable_name(node)))
     if node.data in ("float_literal", "int_literal"):
-        text = str(node.children[0]).rstrip("fFuU")
+        text = str(token_text(node)).rstrip("fFuU")
         try:
             return float(int(text, 0)) if node.data == "int_literal" else float(text)
         except ValueError:
             return None
     if node.data == "unary":
-        inner = const_value(node.children[1], names)
-        sign = str(node.children[0])
+        unary = Unary(node)
+        inner = const_value(unary.operand, names)
+        sign = unary.op
         if inner is None or sign not in "+-":
             return None
         return -inner if sign == "-" else inner
@@ -41,8 +51,9 @@ def const_value(node: Node, names: dict[str, float] | None = None) -> float | No
         return None
     op = binary_op(node)
     if op in ("+", "-", "*", "/"):
-        left = const_value(node.children[0], names)
-        right = const_value(node.children[2], names)
+        left_node, _, right_node = binary_parts(node)
+        left = const_value(left_node, names)
+        right = const_value(right_node, names)
         if left is None or right is None:
             return None
         if op == "+":
@@ -62,18 +73,13 @@ def global_const_inits(ctx: LintContext) -> dict[str, Node]:
         return cached  # type: ignore[no-any-return]
     values: dict[str, Node] = {}
     for node in ctx.tree.children if ctx.tree is not None else ():
-        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+        decl = VariableDeclaration.cast(node)
+        if decl is None or not decl.type.is_const:
             continue
-        spec = node.children[0]
-        qual = spec.children[0] if isinstance(spec, Tree) and spec.children else None
-        if not (isinstance(qual, Tree) and qual.data == "type_qualifier"
-                and "const" in [str(t) for t in qual.children]):  # fmt: skip
-            continue
-        for child in node.children[1:]:
-            if isinstance(child, Tree) and child.data == "declarator" and len(child.children) > 1:
-                init = child.children[-1]
-                if isinstance(init, Tree) and init.data != "array_specifier":
-                    values[str(child.children[0])] = init
+        for declarator in decl.declarators:
+            init = declarator.initializer
+            if isinstance(init, Tree):
+                values[declarator.name] = init
     ctx.cache["const_inits"] = values
     return values
 
@@ -112,7 +118,7 @@ def is_compile_time(ctx: LintContext, node: Node, fn: Function | None, depth: in
     if node.data in ("float_literal", "int_literal", "bool_literal"):
         return True
     if node.data == "variable":
-        name = str(node.children[0])
+        name = str(variable_name(node))
         if fn is not None and (name in fn.locals or name in fn.params):
             value = fn.value_of(name) if name not in fn.params else None
             return value is not None and is_compile_time(ctx, value, fn, depth - 1)
@@ -125,9 +131,10 @@ def is_compile_time(ctx: LintContext, node: Node, fn: Function | None, depth: in
             is_compile_time(ctx, a, fn, depth - 1) for a in call_args(node)
         )
     if node.data in ("binary", "unary", "field", "ternary"):
-        kids = [c for c in node.children if isinstance(c, Tree)]
         if node.data == "field":
-            kids = kids[:1]
+            kids = [Field(node).base]
+        else:  # the operands, not the operator's token
+            kids = [c for c in node.children if isinstance(c, Tree)]
         return bool(kids) and all(is_compile_time(ctx, k, fn, depth - 1) for k in kids)
     return False
 

@@ -7,53 +7,49 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from lark import Token, Tree
+from lark import Tree
+
+from glint.compiler.glsl.ast import (
+    FunctionDefinition,
+    Parameter,
+    StructSpecifier,
+    VariableDeclaration,
+)
 
 from ..context import Node
-from .syntax import array_text, is_tree, spec_text
+from .syntax import array_text, spec_text
 
 
 def declared_variables(node: Tree) -> tuple[bool, list[tuple[str, str, Node | None]]]:
     """Whether a variable declaration is const, and its (name, type, initializer)s."""
-    full_type = node.children[0]
-    spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
-    base = spec_text(spec)  # type: ignore[arg-type]
-    const = any(
-        is_tree(q, "type_qualifier") and "const" in (str(t) for t in q.children)
-        for q in full_type.children
-    )
+    decl_view = VariableDeclaration(node)
+    full_type = decl_view.type
+    base = spec_text(full_type.type.syntax)
     declared: list[tuple[str, str, Node | None]] = []
-    for decl in node.children[1:]:
-        if not is_tree(decl, "declarator"):
-            continue
-        name = str(decl.children[0])
-        arrays = [array_text(c) for c in decl.children[1:] if is_tree(c, "array_specifier")]
-        init = next((c for c in decl.children[1:] if not is_tree(c, "array_specifier")), None)
-        declared.append((name, base + "".join(arrays), init))
-    return const, declared
+    for declarator in decl_view.declarators:
+        array = declarator.array
+        arrays = array_text(array) if array is not None else ""
+        declared.append((declarator.name, base + arrays, declarator.initializer))
+    return full_type.is_const, declared
 
 
 def parameter(node: Tree) -> tuple[str, str, str]:
     """A parameter declaration's (qualifiers, type, name); the name is "" when unnamed."""
-    qualifier = " ".join(
-        str(t) for q in node.children if is_tree(q, "type_qualifier") for t in q.children
-    )
-    spec = next(c for c in node.children if is_tree(c, "type_specifier"))
-    name = next((str(c) for c in node.children if isinstance(c, Token)), "")
-    arrays = [array_text(c) for c in node.children if is_tree(c, "array_specifier")]
-    return qualifier, spec_text(spec) + "".join(arrays), name  # type: ignore[arg-type]
+    param = Parameter(node)
+    qualifier = param.qualifier
+    words = " ".join(qualifier.words) if qualifier is not None else ""
+    array = param.array
+    arrays = array_text(array) if array is not None else ""
+    return words, spec_text(param.type.syntax) + arrays, param.name or ""
 
 
 def signature(definition: Tree) -> tuple[str, str, list[tuple[str, str, str]]]:
     """A function definition's (name, return type, parameters); a lone `void` parameter list
     is no parameter."""
-    proto = definition.children[0]
-    full_type = proto.children[0]
-    plist = proto.children[2] if len(proto.children) > 2 else None
-    params = [parameter(p) for p in plist.children] if is_tree(plist, "parameter_list") else []
+    proto = FunctionDefinition(definition).prototype
+    params = [parameter(p.syntax) for p in proto.parameters]
     params = [p for p in params if p[1] != "void" or p[2]]
-    spec = next(c for c in full_type.children if is_tree(c, "type_specifier"))
-    return str(proto.children[1]), spec_text(spec), params  # type: ignore[arg-type]
+    return proto.name, spec_text(proto.return_type.type.syntax), params
 
 
 def struct_members(specifiers: Iterable[Tree]) -> dict[str, dict[str, str]]:
@@ -61,16 +57,14 @@ def struct_members(specifiers: Iterable[Tree]) -> dict[str, dict[str, str]]:
     struct of the same name wins)."""
     structs: dict[str, dict[str, str]] = {}
     for node in specifiers:
-        name = next((str(c) for c in node.children if isinstance(c, Token)), None)
+        struct = StructSpecifier(node)
         members: dict[str, str] = {}
-        for member in node.children:
-            if not is_tree(member, "struct_member"):
-                continue
-            spec = next(c for c in member.children if is_tree(c, "type_specifier"))
-            for decl in member.children:
-                if is_tree(decl, "struct_declarator"):
-                    arrays = [array_text(a) for a in decl.children[1:]]
-                    members[str(decl.children[0])] = spec_text(spec) + "".join(arrays)
+        for member in struct.members:
+            base = spec_text(member.type.syntax)
+            for decl in member.declarators:
+                array = decl.array
+                members[decl.name] = base + (array_text(array) if array is not None else "")
+        name = struct.name
         if name:
             structs[name] = members
     return structs

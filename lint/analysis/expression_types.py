@@ -17,6 +17,27 @@ from collections.abc import Callable, Sequence
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    Assignment,
+    Constructor,
+    Field,
+    FunctionDefinition,
+    IfStatement,
+    JumpStatement,
+    SwitchStatement,
+    Ternary,
+    Unary,
+    WhileStatement,
+    binary_parts,
+    first_child,
+    for_parts,
+    operand,
+    token_text,
+    variable_name,
+)
+from glint.compiler.glsl.ast import (
+    Sequence as CommaExpression,
+)
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk, walk_kind
@@ -77,7 +98,7 @@ class ExpressionTypes:
             if pname:
                 frame.setdefault(pname, []).append((self._position, ptype))
         self._position += 1
-        self._statement(node.children[1], [*self._globals, frame])
+        self._statement(FunctionDefinition(node).body, [*self._globals, frame])
 
     def _declaration(self, node: Tree, frames: list[Frame]) -> None:
         for name, dtype, init in declared_variables(node)[1]:
@@ -98,51 +119,62 @@ class ExpressionTypes:
         # The statements the model's forward pass records (statements.py), with their scopes.
         if not isinstance(stmt, Tree):
             return
-        kind, kids = stmt.data, stmt.children
+        kind = stmt.data
         if kind == "compound_statement":
             inner = [*frames, {}]
-            for child in kids:
+            for child in stmt.children:
                 self._statement(child, inner)
         elif kind == "declaration_statement":
-            if is_tree(kids[0], "variable_declaration"):
-                self._declaration(kids[0], frames)  # type: ignore[arg-type]
+            decl = first_child(stmt)
+            if is_tree(decl, "variable_declaration"):
+                self._declaration(decl, frames)  # type: ignore[arg-type]
         elif kind == "expression_statement":
-            self._place(kids[0], frames)
+            self._place(first_child(stmt), frames)
         elif kind == "jump_statement":
-            if str(kids[0]) == "return" and len(kids) > 1:
-                self._place(kids[1], frames)
+            jump = JumpStatement(stmt)
+            value = jump.value
+            if jump.keyword == "return" and value is not None:
+                self._place(value, frames)
         elif kind == "if_statement":
-            self._place(kids[0], frames)
-            for branch in kids[1:]:
-                self._statement(branch, frames)
+            branch = IfStatement(stmt)
+            self._place(branch.condition, frames)
+            self._statement(branch.then_branch, frames)
+            other = branch.else_branch
+            if other is not None:
+                self._statement(other, frames)
         elif kind == "for_statement":
             inner = [*frames, {}]
-            self._statement(kids[0], inner)
-            for part in kids[1:-1]:
-                self._place(part, inner)
-            self._statement(kids[-1], inner)
+            init, cond, update, body = for_parts(stmt)
+            self._statement(init, inner)
+            for part in (cond, update):
+                if part is not None:
+                    self._place(part, inner)
+            self._statement(body, inner)
         elif kind == "while_statement":
             inner = [*frames, {}]
-            cond = kids[0]
-            if is_tree(cond, "condition_declaration"):
-                spec = next(c for c in cond.children[0].children if is_tree(c, "type_specifier"))
-                inner[-1][str(cond.children[1])] = [(self._position, spec_text(spec))]
+            loop = WhileStatement(stmt)
+            declared = loop.declaration
+            if declared is not None:
+                spec = declared.type.type.syntax
+                inner[-1][declared.name] = [(self._position, spec_text(spec))]
                 self._position += 1
             else:
-                self._place(cond, inner)
-            self._statement(kids[1], inner)
+                self._place(loop.condition, inner)
+            self._statement(loop.body, inner)
         elif kind == "do_statement":
-            self._statement(kids[0], frames)
-            self._place(kids[1], frames)
+            body, cond = stmt.children
+            self._statement(body, frames)
+            self._place(cond, frames)
         elif kind == "switch_statement":
-            self._place(kids[0], frames)
+            switch = SwitchStatement(stmt)
+            self._place(switch.selector, frames)
             inner = [*frames, {}]
-            for child in kids[1:]:
+            for child in switch.body:
                 self._statement(child, inner)
 
     def _variable_type(self, node: Tree) -> str | None:
         frames, position = self._scope_of.get(id(node), self._outside)
-        name = str(node.children[0])
+        name = variable_name(node)
         for frame in reversed(frames):
             declared = frame.get(name)
             if declared:
@@ -154,31 +186,35 @@ class ExpressionTypes:
     # --- typing rules (the evaluator's, expressions.py) --------------------------------------
 
     def _unary(self, node: Tree) -> str | None:
-        return "bool" if str(node.children[0]) == "!" else self.type_of(node.children[1])
+        unary = Unary(node)
+        return "bool" if unary.op == "!" else self.type_of(unary.operand)
 
     def _binary(self, node: Tree) -> str | None:
-        left, op, right = node.children
-        return T.binary(str(op), self.type_of(left), self.type_of(right))
+        left, op, right = binary_parts(node)
+        return T.binary(op, self.type_of(left), self.type_of(right))
 
     def _ternary(self, node: Tree) -> str | None:
-        return self.type_of(node.children[1]) or self.type_of(node.children[2])
+        ternary = Ternary(node)
+        return self.type_of(ternary.if_true) or self.type_of(ternary.if_false)
 
     def _assignment(self, node: Tree) -> str | None:
-        target = self.type_of(node.children[0])
-        return target or self.type_of(node.children[2]) if str(node.children[1]) == "=" else target
+        assignment = Assignment(node)
+        target = self.type_of(assignment.target)
+        return target or self.type_of(assignment.value) if assignment.op == "=" else target
 
     def _field(self, node: Tree) -> str | None:
-        base, name = self.type_of(node.children[0]), str(node.children[1])
+        field = Field(node)
+        base, name = self.type_of(field.base), field.name
         swizzled = T.swizzle(base, name)
         if swizzled is not None:
             return swizzled
         return self.structs.get(base or "", {}).get(name)
 
     def _call(self, node: Tree) -> str | None:
-        head = node.children[0]
         args = call_args(node)
         types = [self.type_of(a) for a in args]
-        if is_tree(head, "field") and str(head.children[1]) == "length":  # type: ignore
+        method = Field.cast(first_child(node))
+        if method is not None and method.name == "length":
             return "int"
         name = callee_name(node)
         if name is None:
@@ -195,19 +231,19 @@ def _literal(ty: str) -> Callable[[ExpressionTypes, Tree], str | None]:
 
 _HANDLERS: dict[str, Callable[[ExpressionTypes, Tree], str | None]] = {
     "float_literal": _literal("float"),
-    "int_literal": lambda _, n: "uint" if str(n.children[0])[-1] in "uU" else "int",
+    "int_literal": lambda _, n: "uint" if str(token_text(n))[-1] in "uU" else "int",
     "bool_literal": _literal("bool"),
     "variable": ExpressionTypes._variable_type,
     "unary": ExpressionTypes._unary,
-    "prefix": lambda types, n: types.type_of(n.children[1]),
-    "postfix": lambda types, n: types.type_of(n.children[0]),
+    "prefix": lambda types, n: types.type_of(operand(n)),
+    "postfix": lambda types, n: types.type_of(operand(n)),
     "binary": ExpressionTypes._binary,
     "ternary": ExpressionTypes._ternary,
     "assignment": ExpressionTypes._assignment,
-    "sequence": lambda types, n: types.type_of(n.children[-1]),
+    "sequence": lambda types, n: types.type_of(CommaExpression(n).right),
     "field": ExpressionTypes._field,
-    "index": lambda types, n: T.element(types.type_of(n.children[0])),
-    "constructor": lambda _, n: spec_text(n.children[0]),
+    "index": lambda types, n: T.element(types.type_of(first_child(n))),
+    "constructor": lambda _, n: spec_text(Constructor(n).type.syntax),
     "call": ExpressionTypes._call,
 }
 

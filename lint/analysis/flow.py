@@ -32,6 +32,7 @@ from typing import Literal
 
 from lark import Token, Tree
 
+from glint.compiler.glsl.ast import for_parts
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk_kind
@@ -624,19 +625,9 @@ class _Analyzer:
         return _join([leave, again, *target.breaks])
 
     def for_parts(self, node: Tree) -> tuple[Node | None, Node | None]:
-        """The condition and the step of a for loop; either may be absent, and the tree does
-        not say which one is there when only one is, so count the `;` before it."""
-        middle = node.children[1:-1]
-        if len(middle) == 2:
-            return middle[0], middle[1]
-        if not middle:
-            return None, None
-        start = node.meta.start_pos if not node.meta.empty else 0
-        only = middle[0]
-        end = _start_pos(only)
-        if end is None:
-            return only, None
-        return (None, only) if self.text[start:end].count(";") >= 2 else (only, None)
+        """The condition and the step of a for loop; either may be absent."""
+        _, cond, step, _ = for_parts(node)
+        return cond, step
 
     def runs_once(self, init: Node, cond: Node) -> bool:
         """Whether a counted loop certainly runs its body: `for (int i = A; i < B; ...)`, with
@@ -1121,12 +1112,6 @@ def _clearing(target: Node, op: str, value: Node) -> Node | bool | None:
 
 def _is_true(node: Node) -> bool:
     return isinstance(node, Tree) and node.data == "bool_literal" and node.children[0] == "true"
-
-
-def _start_pos(node: Node) -> int | None:
-    if isinstance(node, Token):
-        return node.start_pos
-    return None if node.meta.empty else node.meta.start_pos
 
 
 _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}

@@ -8,6 +8,15 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
+from glint.compiler.glsl.ast import (
+    ConditionDeclaration,
+    FunctionDefinition,
+    FunctionPrototype,
+    VariableDeclaration,
+    first_child,
+    operand,
+)
+
 from ..context import LintContext, Node, walk
 from .syntax import call_args, call_name, calls_in, root_var, var_name
 
@@ -55,26 +64,17 @@ def _tokens(node: Node) -> list[Token]:
 
 
 def _prototype(proto: Tree) -> tuple[str, dict[str, tuple[str, str]], list[str]]:
-    name = ""
+    view = FunctionPrototype(proto)
     params: dict[str, tuple[str, str]] = {}
     order: list[str] = []
-    for child in proto.children:
-        if isinstance(child, Token) and child.type == "IDENTIFIER":
-            name = str(child)
-        elif isinstance(child, Tree) and child.data == "parameter_list":
-            for param in child.children:
-                qual, typ, pname = "", "", ""
-                for part in param.children:
-                    if isinstance(part, Tree) and part.data == "type_qualifier":
-                        qual = _type_text(part)
-                    elif isinstance(part, Tree) and part.data == "type_specifier":
-                        typ = _type_text(part)
-                    elif isinstance(part, Token) and part.type == "IDENTIFIER":
-                        pname = str(part)
-                if pname:
-                    params[pname] = (qual, typ)
-                    order.append(pname)
-    return name, params, order
+    for param in view.parameters:
+        pname = param.name
+        if pname:
+            qualifier = param.qualifier
+            qual = _type_text(qualifier.syntax) if qualifier is not None else ""
+            params[pname] = (qual, _type_text(param.type.syntax))
+            order.append(pname)
+    return view.name, params, order
 
 
 def functions(ctx: LintContext) -> list[Function]:
@@ -88,11 +88,12 @@ def functions(ctx: LintContext) -> list[Function]:
                 and n.data == "function_definition"]  # fmt: skip
         out_params = {}
         for node in defs:
-            name, params, order = _prototype(node.children[0])
+            name, params, order = _prototype(FunctionDefinition(node).prototype.syntax)
             out_params[name] = [i for i, p in enumerate(order) if "out" in params[p][0]]
         for node in defs:
-            name, params, order = _prototype(node.children[0])
-            fn = Function(name, node, node.children[1], params, order)
+            definition = FunctionDefinition(node)
+            name, params, order = _prototype(definition.prototype.syntax)
+            fn = Function(name, node, definition.body, params, order)
             _collect(fn, out_params)
             result.append(fn)
     ctx.cache["functions"] = result
@@ -106,33 +107,28 @@ def function_map(ctx: LintContext) -> dict[str, Function]:
 def _collect(fn: Function, out_params: dict[str, list[int]]) -> None:
     for node in walk(fn.body):
         if node.data == "variable_declaration":
-            typ = ""
-            for child in node.children:
-                if isinstance(child, Tree) and child.data == "fully_specified_type":
-                    typ = _type_text(child.children[-1])
-                elif isinstance(child, Tree) and child.data == "declarator":
-                    name = str(child.children[0])
-                    if name in fn.locals or name in fn.params:
-                        fn.declared_twice.add(name)
-                    fn.locals[name] = typ
-                    init = child.children[-1]
-                    if isinstance(init, Tree) and init.data != "array_specifier":
-                        fn.init.setdefault(name, init)
+            decl = VariableDeclaration(node)
+            typ = _type_text(decl.type.type.syntax)
+            for declarator in decl.declarators:
+                name = declarator.name
+                if name in fn.locals or name in fn.params:
+                    fn.declared_twice.add(name)
+                fn.locals[name] = typ
+                init = declarator.initializer
+                if isinstance(init, Tree):
+                    fn.init.setdefault(name, init)
         elif node.data == "condition_declaration":
-            fn.declared_twice.add(str(node.children[1]))
+            fn.declared_twice.add(ConditionDeclaration(node).name)
         fn.written |= writes_of(node, out_params)
 
 
 def writes_of(node: Tree, out_params: dict[str, list[int]]) -> set[str]:
     """Variables the node itself writes: assignment targets, ++/--, out/inout arguments."""
     if node.data == "assignment":
-        name = root_var(node.children[0])
+        name = root_var(first_child(node))
         return {name} if name else set()
-    if node.data == "prefix":
-        name = root_var(node.children[1])
-        return {name} if name else set()
-    if node.data == "postfix":
-        name = root_var(node.children[0])
+    if node.data in ("prefix", "postfix"):
+        name = root_var(operand(node))
         return {name} if name else set()
     if node.data == "call":
         callee = call_name(node)

@@ -7,6 +7,15 @@ from __future__ import annotations
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    Assignment,
+    Declarator,
+    DoStatement,
+    ForStatement,
+    JumpStatement,
+    first_child,
+)
+
 from ..context import LintContext, Node, walk
 from .functions import Function, out_param_map
 from .syntax import call_args, call_name, names_in, root_var
@@ -37,20 +46,29 @@ def live_names(ctx: LintContext, fn: Function) -> set[str]:
             seeds.update(reads)
 
     for node in walk(fn.body):
-        if node.data == "jump_statement" and len(node.children) == 2:
-            seeds |= names_in(node.children[1])
-        elif node.data in _CONDITIONS:
-            cond = node.children[1] if node.data == "do_statement" else node.children[0]
+        kind = node.data
+        if kind == "jump_statement":
+            value = JumpStatement(node).value
+            if value is not None:
+                seeds |= names_in(value)
+        elif kind in _CONDITIONS:  # the condition or selector
+            cond = DoStatement(node).condition if kind == "do_statement" else first_child(node)
             seeds |= names_in(cond)
-        elif node.data == "for_statement" and len(node.children) > 2:
-            seeds |= names_in(node.children[1])
-        elif node.data == "ternary":
-            seeds |= names_in(node.children[0])
-        elif node.data == "declarator" and len(node.children) > 1:
-            depend(str(node.children[0]), names_in(node.children[-1]))
-        elif node.data == "assignment":
-            target = root_var(node.children[0])
-            reads = names_in(node.children[2]) | (names_in(node.children[0]) - {target})
+        elif kind == "for_statement":
+            cond = ForStatement(node).condition
+            if cond is not None:
+                seeds |= names_in(cond)
+        elif kind == "ternary":
+            seeds |= names_in(first_child(node))
+        elif kind == "declarator":
+            declarator = Declarator(node)
+            init = declarator.initializer
+            if init is not None:
+                depend(declarator.name, names_in(init))
+        elif kind == "assignment":
+            assignment = Assignment(node)
+            target = root_var(assignment.target)
+            reads = names_in(assignment.value) | (names_in(assignment.target) - {target})
             depend(target, reads)
         elif node.data == "call":
             callee = call_name(node)
@@ -79,11 +97,12 @@ def reaches_output(ctx: LintContext, node: Node, fn: Function, up: dict[int, Tre
     current: Node = node
     while (parent := up.get(id(current))) is not None:
         if parent.data == "declarator":
-            return str(parent.children[0]) in live
+            return Declarator(parent).name in live
         if parent.data == "assignment":
-            if current is parent.children[0]:
+            lvalue = Assignment(parent).target
+            if current is lvalue:
                 return True
-            target = root_var(parent.children[0])
+            target = root_var(lvalue)
             local = target in fn.locals or (
                 target in fn.params and "out" not in fn.params[target][0]
             )

@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
+from glint.compiler.glsl.ast import for_parts
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk
@@ -604,14 +605,7 @@ class Moments:
         state.become(join_states(state, [a, b]))
 
     def _for(self, node: Tree, state: State) -> None:
-        init, *middle, body = node.children
-        cond: Node | None = None
-        update: Node | None = None
-        if len(middle) == 2:
-            cond, update = middle
-        elif len(middle) == 1:
-            is_cond = is_tree(middle[0], "binary", "unary", "variable", "bool_literal", "call")
-            cond, update = (middle[0], None) if is_cond else (None, middle[0])
+        init, cond, update, body = for_parts(node)
         state.push()
         self.statement(init, state)
         self._loop(node, state, cond, update, body)

@@ -11,6 +11,7 @@ from typing import Protocol
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import for_parts
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
@@ -172,13 +173,7 @@ class ForwardPass:
         scopes.become(join_scopes(branches))
 
     def _for_statement(self, node: Tree, scopes: Scopes) -> None:
-        init, *middle, body = node.children
-        cond = update = None
-        if len(middle) == 2:
-            cond, update = middle
-        elif len(middle) == 1:  # `for (;; i++)` or `for (; c;)`: positions do not say which
-            is_cond = is_tree(middle[0], "binary", "unary", "variable", "bool_literal", "call")
-            cond, update = (middle[0], None) if is_cond else (None, middle[0])
+        init, cond, update, body = for_parts(node)
         scopes.push()
         self.statement(init, scopes)
         self.loop(scopes, cond, update, body)

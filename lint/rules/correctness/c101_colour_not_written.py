@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Assignment, operand, variable_name
+
 from ...analysis.flow import function_flows, mask_names
 from ...analysis.syntax import call_args, root_variable
 from ...context import LintContext, walk_kind
@@ -17,10 +19,10 @@ from ._data_flow import main_colour
 def _assigns(definition: Tree, name: str) -> bool:
     """Whether any statement assigns to `name` (or a component of it), on any path."""
     for node in walk_kind(definition, "assignment", "postfix", "prefix", "call"):
-        if node.data in ("assignment", "postfix"):
-            target = node.children[0]
-        elif node.data == "prefix":
-            target = node.children[1]
+        if node.data == "assignment":
+            target = Assignment(node).target
+        elif node.data in ("postfix", "prefix"):
+            target = operand(node)
         elif node.data == "call":  # an out/inout argument may write it
             if any(root_variable(arg) == name for arg in call_args(node)):
                 return True
@@ -33,7 +35,7 @@ def _assigns(definition: Tree, name: str) -> bool:
 
 
 def _writes_gl_fragcolor(definition: Tree) -> bool:
-    return any(n.children[0] in ("gl_FragColor", "gl_FragData")
+    return any(variable_name(n) in ("gl_FragColor", "gl_FragData")
                for n in walk_kind(definition, "variable"))  # fmt: skip
 
 

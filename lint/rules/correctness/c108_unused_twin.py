@@ -5,7 +5,16 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterator
 
-from lark import Token, Tree
+from lark import Tree
+
+from glint.compiler.glsl.ast import (
+    Assignment,
+    Call,
+    CompoundStatement,
+    Declarator,
+    Variable,
+    first_child,
+)
 
 from ...analysis.functions import Function, functions
 from ...analysis.syntax import call_args, var_name
@@ -121,11 +130,11 @@ def _reads(fn: Function, parents: dict[int, Tree]) -> Counter[str]:
     counts: Counter[str] = Counter()
     for node in walk_kind(fn.body, "variable"):
         parent = parents.get(id(node))
-        if parent is not None and parent.data == "call" and parent.children[0] is node:
+        if parent is not None and parent.data == "call" and Call(parent).callee is node:
             continue
         if _assigned(node, parents):
             continue
-        counts[str(node.children[0])] += 1
+        counts[Variable(node).name] += 1
     return counts
 
 
@@ -133,9 +142,9 @@ def _assigned(node: Tree, parents: dict[int, Tree]) -> bool:
     current: Tree = node
     while (parent := parents.get(id(current))) is not None:
         if parent.data == "assignment":
-            return parent.children[0] is current
-        if parent.data not in ("field", "index") or parent.children[0] is not current:
-            return False
+            return Assignment(parent).target is current
+        if parent.data not in ("field", "index") or first_child(parent) is not current:
+            return False  # not the base of a field or index
         current = parent
     return False
 
@@ -169,17 +178,18 @@ def _live_beside_saved(fn: Function, twin: str, suffix: str, init: Node,
     another value's saved copy (same suffix)."""
     start = init.meta.end_pos if isinstance(init, Tree) and not init.meta.empty else 0
     for node in walk_kind(fn.body, "variable"):
-        if str(node.children[0]) != twin or node.meta.empty or node.meta.start_pos < start:
+        if Variable(node).name != twin or node.meta.empty or node.meta.start_pos < start:
             continue
         statement = _statement_of(node, parents)
         block = parents.get(id(statement)) if statement is not None else None
         if statement is None or block is None:
             continue
-        i = next(k for k, c in enumerate(block.children) if c is statement)
+        siblings = CompoundStatement(block).statements
+        i = next(k for k, c in enumerate(siblings) if c is statement)
         for j in (i - 1, i + 1):
-            if 0 <= j < len(block.children) and isinstance(block.children[j], Tree):
-                for other in walk_kind(block.children[j], "variable"):
-                    seen = str(other.children[0])
+            if 0 <= j < len(siblings) and isinstance(siblings[j], Tree):
+                for other in walk_kind(siblings[j], "variable"):
+                    seen = Variable(other).name
                     base = seen[: len(seen) - len(suffix)] if seen.endswith(suffix) else ""
                     if base and base != twin and copy_suffix(seen, base) == suffix:
                         return statement, seen
@@ -197,6 +207,5 @@ def _statement_of(node: Tree, parents: dict[int, Tree]) -> Tree | None:
 
 def _declarator(init: Node, parents: dict[int, Tree]) -> Node:
     parent = parents.get(id(init))
-    if parent is not None and parent.data == "declarator" and isinstance(parent.children[0], Token):
-        return parent.children[0]
-    return init
+    declarator = Declarator.cast(parent)
+    return declarator.name_token if declarator is not None else init

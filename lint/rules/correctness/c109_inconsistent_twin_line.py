@@ -4,7 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lark import Token, Tree
+from lark import Tree
+
+from glint.compiler.glsl.ast import Field, variable_name
 
 from ...context import LintContext, Node
 from ...finding import Finding
@@ -66,13 +68,14 @@ class InconsistentTwinLine(Rule):
                     yield self._finding(ctx, *found)
 
     def _finding(self, ctx: LintContext, bad: Tree, good: Tree, other: Tree) -> Finding:
-        base, letter = ctx.node_text(bad.children[0]).strip(), str(bad.children[1])
-        meant = str(good.children[1])
-        twin = ctx.node_text(good.children[0]).strip()
+        wrong, right = Field(bad), Field(good)
+        base, letter = ctx.node_text(wrong.base).strip(), wrong.name
+        meant = right.name
+        twin = ctx.node_text(right.base).strip()
         message = (
             f"`{base}.{letter}` here is `{twin}.{meant}` in the twin statement at line "
             f"{ctx.span(good)[0]}, which reads {twin}.{meant} and "
-            f"{twin}.{other.children[1]} where this one reads {base}.{letter} twice: "
+            f"{twin}.{Field(other).name} where this one reads {base}.{letter} twice: "
             f"`{base}.{meant}` was probably meant (this statement never reads {base}.{meant})"
         )
         return self.report(ctx, bad, message)
@@ -97,7 +100,7 @@ def _collapse(first: list[Node], second: list[Node]) -> tuple[Tree, Tree, Tree] 
     for fields in pairs.values():
         for i, (xi, yi) in enumerate(fields):
             for xj, yj in fields[i + 1 :]:
-                a_i, a_j, b_i, b_j = (str(n.children[1]) for n in (xi, xj, yi, yj))
+                a_i, a_j, b_i, b_j = (Field(n).name for n in (xi, xj, yi, yj))
                 if a_i != a_j and b_i == b_j:  # the second statement collapsed two letters
                     return (yi, xi, xj) if b_i != a_i else (yj, xj, xi)
                 if b_i != b_j and a_i == a_j:  # the first did
@@ -107,9 +110,5 @@ def _collapse(first: list[Node], second: list[Node]) -> tuple[Tree, Tree, Tree] 
 
 def _field_base(node: Node) -> str | None:
     """`v` for a swizzle or field `v.x` of a plain variable."""
-    if not (isinstance(node, Tree) and node.data == "field"):
-        return None
-    base, name = node.children[0], node.children[-1]
-    if isinstance(base, Tree) and base.data == "variable" and isinstance(name, Token):
-        return str(base.children[0])
-    return None
+    field = Field.cast(node)
+    return variable_name(field.base) if field is not None else None

@@ -8,6 +8,16 @@ import re
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    Assignment,
+    Binary,
+    Declarator,
+    Field,
+    IfStatement,
+    JumpStatement,
+    variable_name,
+)
+
 from ...analysis.constants import const_value, global_constants, is_compile_time
 from ...analysis.expression_types import expression_types
 from ...analysis.functions import Function, function_map, functions, resolve
@@ -96,8 +106,9 @@ class ColourOutput:
         if ENCODE_NAME.search(fn.name) and fn.name != "mainImage":
             return True
         for node in walk_kind(fn.body, "jump_statement"):
-            if len(node.children) == 2:
-                value = self._peel(resolve(node.children[1], fn))
+            returned = JumpStatement(node).value
+            if returned is not None:
+                value = self._peel(resolve(returned, fn))
                 if self.gamma_of(value, fn, direct=True) is not None:
                     return True
         return False
@@ -146,7 +157,7 @@ class ColourOutput:
             node = call_args(node)[0]
         op = binary_op(node)
         if op == "/":
-            return const_value(node.children[0]) == 1.0  # type: ignore[union-attr]
+            return const_value(Binary(node).left) == 1.0  # type: ignore[arg-type]
         return op is None and call_name(node) is None  # a bare name: gamma, invGamma
 
     def curve_of(self, node: Node, fn: Function | None) -> Node | None:
@@ -193,21 +204,25 @@ class ColourOutput:
 
     def _tonemap_form(self, node: Tree) -> bool:
         text = self.ctx.node_text
-        if binary_op(node) == "/":
-            top = " ".join(text(node.children[0]).split())
-            parts = operands(node.children[2], "+")
+        op = binary_op(node)
+        if op == "/":
+            ratio = Binary(node)
+            top = " ".join(text(ratio.left).split())
+            parts = operands(ratio.right, "+")
             # x / (1 + x), x / (x + k): Reinhard and its variants
             if len(parts) >= 2 and top in {" ".join(text(p).split()) for p in parts}:
                 return True
-        if binary_op(node) == "-" and const_value(node.children[0]) == 1.0:
-            return call_name(node.children[2]) == "exp"  # 1 - exp(-k x): exponential
+        if op == "-":
+            difference = Binary(node)
+            if const_value(difference.left) == 1.0:
+                return call_name(difference.right) == "exp"  # 1 - exp(-k x): exponential
         if call_name(node) in ("clamp", "min", "saturate", "smoothstep"):
             return False
         return False
 
 
 def output_writes(fn: Function, out: str) -> list[Tree]:
-    return [n for n in walk_kind(fn.body, "assignment") if root_var(n.children[0]) == out]
+    return [n for n in walk_kind(fn.body, "assignment") if root_var(Assignment(n).target) == out]
 
 
 def product_factors(node: Node) -> tuple[list[Node], list[Node]]:
@@ -219,9 +234,9 @@ def product_factors(node: Node) -> tuple[list[Node], list[Node]]:
         item, up = stack.pop()
         op = binary_op(item)
         if op in ("*", "/"):
-            assert isinstance(item, Tree)
-            stack.append((item.children[0], up))
-            stack.append((item.children[2], up if op == "*" else not up))
+            product = Binary(item)  # type: ignore[arg-type]
+            stack.append((product.left, up))
+            stack.append((product.right, up if op == "*" else not up))
         else:
             (top if up else bottom).append(item)
     return top, bottom
@@ -271,7 +286,7 @@ def rough_bound(node: Node, fn: Function, names: dict[str, float], depth: int = 
         parts = [rough_bound(p, fn, names, depth - 1) for p in operands(node, "+")]
         return None if any(p is None for p in parts) else sum(parts)  # type: ignore[arg-type]
     if op == "-":
-        return rough_bound(node.children[0], fn, names, depth - 1)
+        return rough_bound(Binary(node).left, fn, names, depth - 1)
     if call_name(node) == "mix" and len(call_args(node)) == 3:
         ends = [rough_bound(a, fn, names, depth - 1) for a in call_args(node)[:2]]
         return None if None in ends else max(ends)  # type: ignore[type-var]
@@ -283,11 +298,13 @@ def rough_bound(node: Node, fn: Function, names: dict[str, float], depth: int = 
 
 def _alpha_of(ctx: LintContext, fn: Function, write: Tree) -> Node | None:
     """The alpha a write of the output (or of the variable it copies) stores, when it says."""
-    target, value = write.children[0], write.children[2]
-    if str(write.children[1]) != "=":
+    assignment = Assignment(write)
+    target, value = assignment.target, assignment.value
+    if assignment.op != "=":
         return None
-    if isinstance(target, Tree) and target.data == "field":
-        return value if str(target.children[-1]) in ("w", "a") else None
+    field = Field.cast(target)
+    if field is not None:
+        return value if field.name in ("w", "a") else None
     if isinstance(value, Tree) and value.data == "constructor":
         args = call_args(value)
         if len(args) in (2, 4) and expression_types(ctx).type_of(args[-1]) in ("float", "int"):
@@ -308,12 +325,13 @@ def _state_store(fn: Function, coord: str | None) -> bool:
     if coord is None:
         return False
     for node in walk_kind(fn.body, "if_statement"):
-        cond = node.children[0]
+        branch = IfStatement(node)
+        cond = branch.condition
         if not any(binary_op(c) == "==" for c in walk_kind(cond, "binary")):
             continue
         if coord not in names_of(cond):
             continue
-        if walk_kind(node.children[1], "assignment"):
+        if walk_kind(branch.then_branch, "assignment"):
             return True
     return False
 
@@ -321,7 +339,7 @@ def _state_store(fn: Function, coord: str | None) -> bool:
 def names_of(node: Node) -> set[str]:
     if not isinstance(node, Tree):
         return set()
-    return {str(s.children[0]) for s in walk_kind(node, "variable")}
+    return {str(variable_name(s)) for s in walk_kind(node, "variable")}
 
 
 def _packed_normal(node: Node, fn: Function) -> bool:
@@ -353,8 +371,9 @@ def _sources(ctx: LintContext, fn: Function, value: Node) -> list[tuple[Function
     if callee in defined:
         other = defined[callee]
         for node in walk_kind(other.body, "jump_statement"):
-            if len(node.children) == 2:
-                returned = var_name(node.children[1])
+            value = JumpStatement(node).value
+            if value is not None:
+                returned = var_name(value)
                 if returned is not None and returned in other.locals:
                     found += [(other, w) for w in output_writes(other, returned)]
     return found
@@ -379,24 +398,26 @@ def _palette(ctx: LintContext, node: Node, fn: Function, depth: int = 10) -> boo
         return all(_palette(ctx, p, fn, depth - 1) for p in parts)
     callee = function_map(ctx).get(name or "")
     if callee is not None:  # a function of the shader that returns palette colours only
-        returned = [r.children[1] for r in walk_kind(callee.body, "jump_statement")
-                    if len(r.children) == 2]  # fmt: skip
+        returned = [v for r in walk_kind(callee.body, "jump_statement")
+                    if (v := JumpStatement(r).value) is not None]  # fmt: skip
         return bool(returned) and all(_palette(ctx, r, callee, depth - 1) for r in returned)
     local = var_name(node)
     if local is None or local not in fn.locals:
         return False
     values: list[Node] = []
     for sub in walk_kind(fn.body, "declarator", "assignment"):
-        if sub.data == "declarator" and str(sub.children[0]) == local and len(sub.children) > 1:
-            values.append(sub.children[-1])
-        elif sub.data == "assignment" and root_var(sub.children[0]) == local:
-            if (
-                str(sub.children[1]) != "="
-                or not isinstance(sub.children[0], Tree)
-                or (sub.children[0].data != "variable")
-            ):
+        if sub.data == "declarator":
+            declarator = Declarator(sub)
+            init = declarator.initializer
+            if declarator.name == local and init is not None:
+                values.append(init)
+        elif sub.data == "assignment":
+            assignment = Assignment(sub)
+            if root_var(assignment.target) != local:
+                continue
+            if assignment.op != "=" or variable_name(assignment.target) is None:
                 return False
-            values.append(sub.children[2])
+            values.append(assignment.value)
     return bool(values) and all(_palette(ctx, v, fn, depth - 1) for v in values)
 
 
@@ -422,8 +443,9 @@ def data_output(ctx: LintContext) -> str:
         alpha = _alpha_of(ctx, fn, write)
         if alpha is not None:
             alphas.append(alpha)
-        if str(write.children[1]) == "=":
-            sources += [(fn, write)] + _sources(ctx, fn, write.children[2])
+        assignment = Assignment(write)
+        if assignment.op == "=":
+            sources += [(fn, write)] + _sources(ctx, fn, assignment.value)
     if not alphas:  # the alpha of what the output copies
         for owner, source in sources:
             if owner is not fn or source not in writes:
@@ -434,14 +456,14 @@ def data_output(ctx: LintContext) -> str:
         return "it stores data in alpha"
     if _state_store(fn, coord):
         return "it stores state in a texel"
-    if any(_packed_normal(s.children[2], owner) for owner, s in sources):
+    if any(_packed_normal(Assignment(s).value, owner) for owner, s in sources):
         return "it packs a normal as data"
-    if writes and all(_palette(ctx, w.children[2], fn) for w in writes):
+    if writes and all(_palette(ctx, Assignment(w).value, fn) for w in writes):
         return "it writes a palette of constant colours"
     if not ColourOutput(ctx).any_tonemap():
         names = global_constants(ctx)
         for write in writes:
-            value = ColourOutput(ctx)._peel(write.children[2])
+            value = ColourOutput(ctx)._peel(Assignment(write).value)
             hi = rough_bound(value, fn, names)
             if hi is not None and hi >= RADIANCE:
                 return "it writes radiance far above 1 without a tone map (a later pass shows it)"

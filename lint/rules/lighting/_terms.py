@@ -24,6 +24,8 @@ import re
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Binary, Unary, first_child
+
 from ...analysis.constants import const_value
 from ...analysis.expression_types import expression_types
 from ...analysis.functions import Function, callable_from_main, functions, resolve
@@ -95,8 +97,9 @@ def name_role(name: str) -> str | None:
 
 def vector_role(node: Node, fn: Function | None) -> str | None:
     """N, L, V or H for an expression that names one of those vectors, else None."""
-    if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) in "+-":
-        return vector_role(node.children[1], fn)
+    unary = Unary.cast(node)
+    if unary is not None and unary.op in "+-":
+        return vector_role(unary.operand, fn)
     if isinstance(node, Tree) and call_name(node) == "normalize":
         args = call_args(node)
         return vector_role(args[0], fn) if len(args) == 1 else None
@@ -185,8 +188,10 @@ def schlick_base(node: Node) -> Node | None:
         if len(inner) != 1:
             return None
         base = inner[0]
-    if binary_op(base) == "-" and const_value(base.children[0]) == 1.0:  # type: ignore[union-attr]
-        return base.children[2]  # type: ignore[union-attr]
+    if binary_op(base) == "-":
+        difference = Binary(base)  # type: ignore[arg-type]
+        if const_value(difference.left) == 1.0:
+            return difference.right
     return None
 
 
@@ -234,7 +239,7 @@ def _light_like(node: Node, fn: Function) -> bool:
         base = (
             call_args(base)[0]
             if call_name(base) == "normalize"
-            else (base.children[1] if base.data == "unary" else base.children[0])
+            else (Unary(base).operand if base.data == "unary" else first_child(base))
         )
     name = var_name(base)
     if name is None:

@@ -7,6 +7,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Assignment, Constructor, Declarator, JumpStatement
+
 from ...analysis.constants import const_value
 from ...analysis.functions import Function, functions, resolve
 from ...analysis.model import is_unit, may_be_negative
@@ -74,8 +76,9 @@ class UnclampedCosine(Rule):
         for fn in functions(ctx):
             compared: set[str] | None = None  # found when a candidate needs it (few do)
             for node in walk_kind(fn.body, "jump_statement", "binary"):
-                if node.data == "jump_statement" and len(node.children) == 2:
-                    candidates = [node.children[1]]
+                returned = JumpStatement(node).value if node.data == "jump_statement" else None
+                if returned is not None:
+                    candidates = [returned]
                     # a bare cosine returned by a diffuse-named function is its diffuse term;
                     # elsewhere (`facing(n, v)`) a signed cosine may be the point
                     colour = bool(_DIFFUSE_FUNCTION.search(fn.name))
@@ -176,9 +179,9 @@ class UnclampedCosine(Rule):
         if parent is None:
             return False
         if parent.data == "declarator":
-            return fn.locals.get(str(parent.children[0])) in _COLOUR_TYPES
+            return fn.locals.get(Declarator(parent).name) in _COLOUR_TYPES
         if parent.data == "assignment":
-            target = root_var(parent.children[0])
+            target = root_var(Assignment(parent).target)
             return bool(target) and fn.type_of(target) in _COLOUR_TYPES  # type: ignore[arg-type]
         return False
 
@@ -199,5 +202,6 @@ class UnclampedCosine(Rule):
 
 
 def ctx_type(node: Tree) -> str:
-    spec = node.children[0]
-    return " ".join(str(t) for t in spec.children) if isinstance(spec, Tree) else ""
+    """The type a constructor builds, "" for an array or a struct in place."""
+    spec = Constructor(node).type
+    return spec.name if spec.array is None and spec.struct is None else ""

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from glint.compiler.glsl.ast import Assignment, Declarator
+
 from ...analysis.functions import functions
 from ...analysis.syntax import calls_in, names_in, root_var
 from ...context import LintContext, Node, walk_kind
@@ -63,12 +65,17 @@ class DoubleGamma(Rule):
         fn, _ = found
         encoded: set[str] = set()
         for node in walk_kind(fn.body, "declarator", "assignment"):
-            if node.data == "declarator" and len(node.children) > 1:
-                target, value = str(node.children[0]), node.children[-1]
-            elif node.data == "assignment" and str(node.children[1]) == "=":
-                target, value = root_var(node.children[0]) or "", node.children[2]
+            if node.data == "declarator":
+                declarator = Declarator(node)
+                init = declarator.initializer
+                if init is None:
+                    continue
+                target, value = declarator.name, init
             else:
-                continue
+                assignment = Assignment(node)
+                if assignment.op != "=":
+                    continue
+                target, value = root_var(assignment.target) or "", assignment.value
             for call in calls_in(value):
                 inner = output.gamma_of(call, fn)
                 if inner is not None and names_in(inner) & encoded and id(call) not in reported:

@@ -7,6 +7,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Assignment, JumpStatement
+
 from ...analysis.constants import const_value, global_constants
 from ...analysis.functions import Function, callable_from_main, functions
 from ...analysis.model import semantic_model
@@ -157,11 +159,12 @@ class HdrWithoutTonemap(Rule):
                 parts = operands(node, "+")
                 if sum(1 for p in parts if carries(p)) >= 2 and may_exceed(parts):
                     return f"light terms summed in {fn.name}"
-            if node.data == "assignment" and str(node.children[1]) == "+=":
-                target = root_var(node.children[0]) or ""
-                if carries(node.children[2]):
+            assignment = Assignment.cast(node)
+            if assignment is not None and assignment.op == "+=":
+                target = root_var(assignment.target) or ""
+                if carries(assignment.value):
                     added = per_target.setdefault(target, [])
-                    added.append(node.children[2])
+                    added.append(assignment.value)
                     if len(added) >= 2 and may_exceed(added):
                         return f"light terms accumulated into `{target}` in {fn.name}"
         return ""
@@ -179,9 +182,9 @@ def _returns_clipped(ctx: LintContext, fn: Function) -> bool:
     """Whether the function returns a clipped colour: a clip (inside a constructor too), or a
     variable last given one."""
     for node in walk_kind(fn.body, "jump_statement"):
-        if len(node.children) != 2:
+        value = JumpStatement(node).value
+        if value is None:
             continue
-        value = node.children[1]
         while isinstance(value, Tree) and value.data == "constructor" and call_args(value):
             value = call_args(value)[0]
         if _clip(ctx, value):
@@ -189,8 +192,8 @@ def _returns_clipped(ctx: LintContext, fn: Function) -> bool:
         name = root_var(value)
         if name is None:
             continue
-        writes = [w.children[2] for w in walk_kind(fn.body, "assignment")
-                  if root_var(w.children[0]) == name]  # fmt: skip
+        writes = [a.value for w in walk_kind(fn.body, "assignment")
+                  if root_var((a := Assignment(w)).target) == name]  # fmt: skip
         if writes and _clip(ctx, writes[-1]):
             return True
     return False

@@ -7,6 +7,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Binary, Field
+
 from ...analysis.constants import const_value
 from ...analysis.functions import Function, function_map, functions
 from ...analysis.syntax import (
@@ -135,7 +137,7 @@ class EnergyNotSplit(Rule):
         for part in self._expand(node, fn):
             if any(_DIFFUSE_NAME.match(n) for n in names_in(part)):
                 return True
-            if any(_DIFFUSE_NAME.match(str(f.children[-1])) for f in walk_kind(part, "field")):
+            if any(_DIFFUSE_NAME.match(Field(f).name) for f in walk_kind(part, "field")):
                 return True
             if any(_DIFFUSE_CALL.search(call_name(c) or "") for c in calls_in(part)):
                 return True
@@ -164,13 +166,16 @@ class EnergyNotSplit(Rule):
         return False
 
     def _one_minus(self, node: Tree, fn: Function, fresnel_vars: set[str]) -> bool:
-        if binary_op(node) != "-" or const_value(node.children[0]) != 1.0:
+        if binary_op(node) != "-":
             return False
-        right = node.children[2]
+        difference = Binary(node)
+        if const_value(difference.left) != 1.0:
+            return False
+        right = difference.right
         names = names_in(right)
         if names & fresnel_vars or any(_METAL_NAME.search(n) for n in names):
             return True
-        if any(_METAL_NAME.search(str(f.children[-1])) for f in walk_kind(right, "field")):
+        if any(_METAL_NAME.search(Field(f).name) for f in walk_kind(right, "field")):
             return True
         return self._has_fresnel(right, fn, fresnel_vars) or any(
             n.upper().startswith("F") or n.lower().startswith("ks") for n in names

@@ -8,9 +8,11 @@ from dataclasses import dataclass
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Assignment, Binary, Unary
+
 from ...analysis.constants import const_value
 from ...analysis.functions import Function, functions
-from ...analysis.syntax import binary_op, call_args, call_name, calls_in, is_tree, var_name
+from ...analysis.syntax import binary_op, call_args, call_name, calls_in, var_name
 from ...context import LintContext, Node, walk
 from ...finding import Finding
 from .. import Rule, register
@@ -39,15 +41,15 @@ def _marched(fn: Function) -> dict[str, Tree]:
     found: dict[str, Tree] = {}
     for node in walk(fn.body):
         if binary_op(node) == "+":
-            steps = [node.children[0], node.children[2]]
-        elif node.data == "assignment" and str(node.children[1]) == "+=":
-            steps = [node.children[2]]
+            steps = [Binary(node).left, Binary(node).right]
+        elif node.data == "assignment" and Assignment(node).op == "+=":
+            steps = [Assignment(node).value]
         else:
             continue
         for step in steps:
             if binary_op(step) != "*":
                 continue
-            a, b = step.children[0], step.children[2]  # type: ignore[union-attr]
+            a, b = Binary(step).left, Binary(step).right  # type: ignore[arg-type]
             for factor, other in ((a, b), (b, a)):
                 name = var_name(factor)
                 if (
@@ -68,9 +70,10 @@ def _negated(fn: Function) -> set[str]:
     """Names assigned a negation somewhere (`v = -rd`): their direction flips, no fact holds."""
     names = set()
     for node in walk(fn.body):
-        value = node.children[2] if node.data == "assignment" else None
-        if is_tree(value, "unary") and str(value.children[0]) == "-":  # type: ignore[union-attr]
-            name = var_name(node.children[0])
+        assignment = Assignment.cast(node)
+        unary = Unary.cast(assignment.value) if assignment is not None else None
+        if assignment is not None and unary is not None and unary.op == "-":
+            name = var_name(assignment.target)
             names |= {name} if name else set()
     return names
 
@@ -84,7 +87,7 @@ def _view_uses(fn: Function, name: str) -> list[_ViewUse]:
         callee = call_name(node)
         args = call_args(node) if callee else []
         if callee == "normalize" and len(args) == 1 and binary_op(args[0]) == "+":
-            a, b = args[0].children[0], args[0].children[2]  # type: ignore[union-attr]
+            a, b = Binary(args[0]).left, Binary(args[0]).right  # type: ignore[arg-type]
             if (var_name(a) == name and vector_role(b, fn) == "L") or (
                 var_name(b) == name and vector_role(a, fn) == "L"
             ):
@@ -94,8 +97,8 @@ def _view_uses(fn: Function, name: str) -> list[_ViewUse]:
                 uses.append(_ViewUse(node, "a cosine clamped at 0"))
         elif (
             binary_op(node) == "-"
-            and const_value(node.children[0]) == 1.0
-            and _dot_with_normal(fn, node.children[2], name)
+            and const_value(Binary(node).left) == 1.0
+            and _dot_with_normal(fn, Binary(node).right, name)
         ):
             uses.append(_ViewUse(node, "a Schlick Fresnel factor"))
     return uses

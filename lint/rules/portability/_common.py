@@ -3,7 +3,15 @@ mainImage signature check (P001, P002), prototypes and a map from node to parent
 
 from __future__ import annotations
 
-from lark import Token, Tree
+from lark import Tree
+
+from glint.compiler.glsl.ast import (
+    ConditionDeclaration,
+    Declarator,
+    FunctionDefinition,
+    FunctionPrototype,
+    VariableDeclaration,
+)
 
 from ...analysis.syntax import parameter_parts
 from ...context import LintContext, walk_kind
@@ -22,18 +30,19 @@ def defined_names(ctx: LintContext) -> set[str]:
     for node in ctx.tree.children:
         if not isinstance(node, Tree):
             continue
-        proto = node.children[0] if node.data == "function_definition" else node
-        if isinstance(proto, Tree) and proto.data == "function_prototype":
-            names.add(str(proto.children[1]))
+        definition = FunctionDefinition.cast(node)
+        proto = FunctionPrototype.cast(definition.prototype.syntax if definition else node)
+        if proto is not None:
+            names.add(proto.name)
         if node.data == "variable_declaration":
-            names.update(str(d.children[0]) for d in node.children[1:] if isinstance(d, Tree))
+            names.update(d.name for d in VariableDeclaration(node).declarators)
     return names
 
 
 def declares_name(node: Tree, name: str) -> bool:
     """Whether a local of that name is declared anywhere under the node."""
     return any(
-        any(isinstance(c, Token) and c == name for c in sub.children)
+        (Declarator(sub) if sub.data == "declarator" else ConditionDeclaration(sub)).name == name
         for sub in walk_kind(node, "declarator", "condition_declaration")
     )
 
@@ -58,7 +67,7 @@ def function_prototypes(tree: Tree) -> list[Tree]:
     found = []
     for node in tree.children:
         if isinstance(node, Tree) and node.data == "function_definition":
-            node = node.children[0]  # type: ignore[assignment]
+            node = FunctionDefinition(node).prototype.syntax
         if isinstance(node, Tree) and node.data == "function_prototype":
             found.append(node)
     return found

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from glint.compiler.glsl.ast import FunctionPrototype, variable_name
 from glint.compiler.target.shadertoy import is_complete
 
 from ...analysis.syntax import parameter_parts, prototype_parts
@@ -51,10 +52,10 @@ class MainImageSignature(Rule):
         if ctx.tab.is_common:
             return  # a Common tab has no mainImage: ShaderToy gives it a `main` of its own
         protos = function_prototypes(ctx.tree)
-        names = {str(p.children[1]) for p in protos}
+        names = {FunctionPrototype(p).name for p in protos}
         if "main" in names or is_complete(ctx.text):
             return
-        mains = [p for p in protos if p.children[1] == "mainImage"]
+        mains = [p for p in protos if FunctionPrototype(p).name == "mainImage"]
         problems = []
         for proto in mains:
             ret, name, params = prototype_parts(proto)
@@ -75,14 +76,14 @@ class MainImageSignature(Rule):
             )  # fmt: skip
         if mains:
             return
-        near = [p.children[1] for p in protos if str(p.children[1]).lower().replace("_", "")
-                == "mainimage"]  # fmt: skip
+        near = [p.name_token for p in map(FunctionPrototype, protos)
+                if p.name.lower().replace("_", "") == "mainimage"]  # fmt: skip
         if near:
             yield self.report(ctx, near[0], f"`{near[0]}` is not `mainImage`: ShaderToy "
                               "calls `mainImage`, with this capitalisation")  # fmt: skip
             return
         uses = next((n for n in ctx.nodes("variable")
-                     if n.children[0] in ("gl_FragColor", "gl_FragData", "gl_FragCoord")),
+                     if variable_name(n) in ("gl_FragColor", "gl_FragData", "gl_FragCoord")),
                     None)  # fmt: skip
         if uses is not None:
             yield self.report(

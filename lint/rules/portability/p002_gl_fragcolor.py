@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import FunctionDefinition, Index, token_text, variable_name
+
 from ...analysis.syntax import parameter_parts, prototype_parts
 from ...context import LintContext, Node, walk
 from ...finding import Finding, Fix
@@ -22,7 +24,7 @@ def _main_image_out(ctx: LintContext) -> tuple[Tree, str] | None:
     """mainImage's definition and the name of its `out vec4` colour, when its signature is
     the one ShaderToy calls."""
     for fdef in _functions(ctx):
-        ret, name, params = prototype_parts(fdef.children[0])  # type: ignore[arg-type]
+        ret, name, params = prototype_parts(FunctionDefinition(fdef).prototype.syntax)
         if name == "mainImage" and signature_problem(ret, params) is None:
             pname = parameter_parts(params[0])[3]
             if pname is not None:
@@ -69,27 +71,27 @@ class FragColor(Rule):
         if is_es1(ctx):
             return
         uses = [
-            n for n in ctx.nodes("variable") if n.children[0] in ("gl_FragColor", "gl_FragData")
+            n for n in ctx.nodes("variable") if variable_name(n) in ("gl_FragColor", "gl_FragData")
         ]
         if not uses:
             return  # most files: nothing to look up
         main = _main_image_out(ctx)
         inside: set[int] = set()
-        if main is not None and not declares_name(main[0].children[1], main[1]):  # type: ignore[arg-type]
+        if main is not None and not declares_name(FunctionDefinition(main[0]).body, main[1]):
             inside = {id(n) for n in walk(main[0])}
         parents = ctx.parents()
         for node in uses:
             target: Node = node
-            if node.children[0] == "gl_FragData":
-                parent = parents.get(id(node))
-                at_zero = (parent is not None and parent.data == "index"
-                           and _literal(parent.children[1]) == "0")  # fmt: skip
-                target = parent if at_zero else node  # type: ignore[assignment]
+            name = variable_name(node)
+            if name == "gl_FragData":
+                parent = Index.cast(parents.get(id(node)))
+                at_zero = parent is not None and _literal(parent.index) == "0"
+                target = parent.syntax if at_zero else node  # type: ignore[union-attr]
             fix = None
-            if id(node) in inside and (target is not node or node.children[0] == "gl_FragColor"):
+            if id(node) in inside and (target is not node or name == "gl_FragColor"):
                 edit = ctx.replace(target, main[1])  # type: ignore[index]
                 fix = Fix(f"write `{main[1]}`", (edit,)) if edit else None  # type: ignore[index]
-            old = ctx.node_text(target).strip() or str(node.children[0])
+            old = ctx.node_text(target).strip() or str(name)
             where = f"`{main[1]}`" if main else "mainImage's `out vec4` parameter"
             message = f"`{old}` does not exist in GLSL ES 3.00; write {where}"
             yield self.report(ctx, target, message, fix)
@@ -97,5 +99,5 @@ class FragColor(Rule):
 
 def _literal(node: Node) -> str | None:
     if isinstance(node, Tree) and node.data in ("int_literal", "float_literal"):
-        return str(node.children[0])
+        return token_text(node)
     return None

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lark import Tree
+from glint.compiler.glsl.ast import Call
 
 from ...context import LintContext
 from ...finding import Finding, Fix
@@ -68,10 +68,11 @@ class Es1Texture(Rule):
             return
         own = defined_names(ctx)  # a file may define its own texture2D as a shim
         for node in ctx.nodes("call"):
-            callee = node.children[0]
-            if not (isinstance(callee, Tree) and callee.data == "variable"):
+            call = Call(node)
+            old = call.callee_name
+            if old is None:
                 continue
-            old = str(callee.children[0])
+            callee = call.callee
             new = ES1_TEXTURE.get(old)
             if new is None or old in own:
                 continue

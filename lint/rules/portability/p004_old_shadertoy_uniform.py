@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lark import Tree
+from glint.compiler.glsl.ast import Field, variable_name
 
 from ...context import LintContext, walk_kind
 from ...finding import Finding, Fix
@@ -53,18 +53,16 @@ class OldShadertoyUniform(Rule):
             return  # the file declares it itself
         shadowed = declares_name(ctx.tree, "iTime") or "iTime" in own
         for node in walk_kind(ctx.tree, "variable", "field"):
-            if node.data == "variable" and node.children[0] == "iGlobalTime":
+            if variable_name(node) == "iGlobalTime":
                 edit = None if shadowed else ctx.replace(node, "iTime")
                 fix = Fix("use `iTime`", (edit,)) if edit else None
                 message = "`iGlobalTime` is ShaderToy's old name for `iTime`"
                 yield self.report(ctx, node, message, fix)
-            elif node.data == "field" and "iChannelResolution" not in own:
-                base = node.children[0]
-                if (
-                    isinstance(base, Tree)
-                    and base.data == "variable"
-                    and (base.children[0] == "iChannelResolution")
-                ):
-                    message = ("`iChannelResolution` is an array, one vec3 per channel: "
+            elif (
+                node.data == "field"
+                and "iChannelResolution" not in own
+                and variable_name(Field(node).base) == "iChannelResolution"
+            ):
+                message = ("`iChannelResolution` is an array, one vec3 per channel: "
                                "index it, e.g. `iChannelResolution[0].xy`")  # fmt: skip
-                    yield self.report(ctx, node, message)
+                yield self.report(ctx, node, message)

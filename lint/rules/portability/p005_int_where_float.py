@@ -7,6 +7,20 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    Arguments,
+    Assignment,
+    Binary,
+    Call,
+    Constructor,
+    Declarator,
+    FunctionDefinition,
+    FunctionPrototype,
+    Ternary,
+    Unary,
+    VariableDeclaration,
+    token_text,
+)
 from glint.compiler.glsl.keywords import words
 
 from ...analysis.expression_types import ExpressionTypes, expression_types
@@ -80,12 +94,12 @@ class IntWhereFloat(Rule):
         parents = ctx.parents()
         for node in walk_kind(ctx.tree, "int_literal", "variable"):
             if node.data == "int_literal":
-                if str(node.children[0])[-1] in "uU":
+                if str(token_text(node))[-1] in "uU":
                     continue
                 expr: Tree = node
-                while (parent := parents.get(id(expr))) is not None and parent.data == "unary" \
-                        and parent.children[0] in ("-", "+"):  # fmt: skip
-                    expr = parent
+                while (parent := Unary.cast(parents.get(id(expr)))) is not None \
+                        and parent.op in ("-", "+"):  # fmt: skip
+                    expr = parent.syntax
             elif node.data == "variable" and types(node) == "int":
                 expr = node
             else:
@@ -93,7 +107,7 @@ class IntWhereFloat(Rule):
             why = self.float_context(expr, parents, typed)
             if why is None:
                 continue
-            text = str(node.children[0])
+            text = str(token_text(node))
             if node.data == "variable":
                 message = (f"int `{text}` {why}; GLSL ES has no implicit conversion: "
                            f"write `float({text})`")  # fmt: skip
@@ -117,25 +131,24 @@ class IntWhereFloat(Rule):
             parent = parents.get(id(expr))
             if parent is None:
                 return None
-            kids = parent.children
             kind = parent.data
-            if kind == "declarator" and expr is kids[-1] and len(kids) > 1:
-                decl = parents.get(id(parent))
-                if decl is None or decl.data != "variable_declaration":
+            if kind == "declarator" and expr is (declarator := Declarator(parent)).initializer:
+                decl = VariableDeclaration.cast(parents.get(id(parent)))
+                if decl is None:
                     return None
-                ty, arr = type_of_declaration(decl.children[0])  # type: ignore[arg-type]
-                is_arr = arr or any(isinstance(c, Tree) and c.data == "array_specifier"
-                                    for c in kids)  # fmt: skip
+                ty, arr = type_of_declaration(decl.type.syntax)
+                is_arr = arr or declarator.array is not None
                 return "initialises a float" if ty == "float" and not is_arr else None
-            if kind == "assignment" and expr is kids[2]:
-                target = types(kids[0])
-                if kids[1] == "=":
+            if kind == "assignment" and expr is (assignment := Assignment(parent)).value:
+                target = types(assignment.target)
+                if assignment.op == "=":
                     return "is assigned to a float" if target == "float" else None
-                return f"is used in `{kids[1]}` on a float" if is_float_like(target) else None
-            if kind == "binary" and str(kids[1]) in _ARITHMETIC:
-                other = kids[2] if expr is kids[0] else kids[0]
+                op = assignment.op
+                return f"is used in `{op}` on a float" if is_float_like(target) else None
+            if kind == "binary" and (binary := Binary(parent)).op in _ARITHMETIC:
+                other = binary.right if expr is binary.left else binary.left
                 if is_float_like(types(other)):
-                    return f"is an operand of `{kids[1]}` beside a float"
+                    return f"is an operand of `{binary.op}` beside a float"
                 return None
             if kind == "arguments":
                 return self.argument(expr, parent, parents, typed)
@@ -145,10 +158,10 @@ class IntWhereFloat(Rule):
                     function = parents.get(id(function))
                 if function is None:
                     return None
-                ret, name, _ = prototype_parts(function.children[0])  # type: ignore[arg-type]
+                ret, name, _ = prototype_parts(FunctionDefinition(function).prototype.syntax)
                 return f"is returned from `{name}`, which returns float" if ret == "float" else None
-            if kind == "ternary" and expr is not kids[0]:
-                other = kids[2] if expr is kids[1] else kids[1]
+            if kind == "ternary" and expr is not (ternary := Ternary(parent)).condition:
+                other = ternary.if_false if expr is ternary.if_true else ternary.if_true
                 if is_float_like(types(other)):
                     return "is a branch of `?:` beside a float"
                 expr = parent  # the ternary's own context decides
@@ -159,24 +172,24 @@ class IntWhereFloat(Rule):
         self, expr: Tree, args: Tree, parents: dict[int, Tree], typed: ExpressionTypes
     ) -> str | None:
         call = parents.get(id(args))
-        position = next(i for i, a in enumerate(args.children) if a is expr)
+        items = Arguments(args).items
+        position = next(i for i, a in enumerate(items) if a is expr)
         if call is None:
             return None
         if call.data == "constructor":
-            ty, arr = type_of_declaration(call.children[0])  # type: ignore[arg-type]
+            ty, arr = type_of_declaration(Constructor(call).type.syntax)
             if arr:
                 return "is an element of a float array" if ty == "float" else None
             # struct constructors convert nothing; vector and matrix constructors do
             members = list(typed.structs.get(ty, {}).items())
-            if len(members) == len(args.children) and members[position][1] == "float":
+            if len(members) == len(items) and members[position][1] == "float":
                 return f"initialises the float member `{members[position][0]}` of `{ty}`"
             return None
-        callee = call.children[0]
-        if call.data != "call" or not (isinstance(callee, Tree) and callee.data == "variable"):
+        name = Call(call).callee_name if call.data == "call" else None
+        if name is None:
             return None
-        name = str(callee.children[0])
-        count = len(args.children)
-        own = {str(p.children[1]) for p in function_prototypes(typed.tree)}
+        count = len(items)
+        own = {FunctionPrototype(p).name for p in function_prototypes(typed.tree)}
         if name in own:  # the file's own function, every overload taking a float
             overloads = [p for p in typed.parameters.get(name, []) if len(p) == count]
             if overloads and all(p[position][1] == "float" for p in overloads):
@@ -186,7 +199,7 @@ class IntWhereFloat(Rule):
             return f"is passed to `{name}`, which takes floats"
         if FLOAT_ARG_AT.get(name) == position:
             return f"is passed as `{name}`'s float bias or level"
-        others = [a for i, a in enumerate(args.children) if i != position]
+        others = [a for i, a in enumerate(items) if i != position]
         if name in INT_OVERLOADS and any(is_float_like(typed.type_of(a)) for a in others):
             return f"is passed to `{name}` beside a float argument"
         return None

@@ -4,8 +4,15 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lark import Token, Tree
+from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    Call,
+    FullySpecifiedType,
+    FunctionPrototype,
+    Variable,
+    VariableDeclaration,
+)
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 from ...context import LintContext, walk
@@ -16,10 +23,7 @@ from ._common import function_prototypes
 
 def _qualifier_words(spec: Tree) -> set[str]:
     """The qualifiers of a `fully_specified_type` (`const`, `uniform`, `highp`, ...)."""
-    first = spec.children[0]
-    if isinstance(first, Tree) and first.data == "type_qualifier":
-        return {str(t) for t in first.children if isinstance(t, Token)}
-    return set()
+    return set(FullySpecifiedType(spec).qualifiers)
 
 
 _NOT_CONSTANT_CALLS = ("texture", "texel", "dFd", "fwidth")
@@ -63,46 +67,43 @@ class NonConstantGlobal(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        functions = {str(p.children[1]) for p in function_prototypes(ctx.tree)}
+        functions = {FunctionPrototype(p).name for p in function_prototypes(ctx.tree)}
         variables: set[str] = set()  # non-const globals declared so far
         for node in ctx.tree.children:
-            if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+            declaration = VariableDeclaration.cast(node)
+            if declaration is None:
                 continue
-            words = _qualifier_words(node.children[0])  # type: ignore[arg-type]
+            words = _qualifier_words(declaration.type.syntax)
             if words & {"uniform", "in", "out"}:
                 continue
-            for decl in node.children[1:]:
-                if not isinstance(decl, Tree):
-                    continue
-                init = [c for c in decl.children[1:] if isinstance(c, Tree)
-                        and c.data != "array_specifier"]  # fmt: skip
-                if init:
-                    reason = _not_constant(init[0], variables, functions)
+            for decl in declaration.declarators:
+                init = decl.initializer
+                if isinstance(init, Tree):
+                    reason = _not_constant(init, variables, functions)
                     if reason is not None:
-                        name = decl.children[0]
-                        message = (f"global `{name}` is initialised with {reason}, which is "
-                                   "not a constant expression in GLSL ES 3.00; declare it "
+                        message = (f"global `{decl.name}` is initialised with {reason}, which "
+                                   "is not a constant expression in GLSL ES 3.00; declare it "
                                    "without a value and assign it in mainImage")  # fmt: skip
-                        yield self.report(ctx, init[0], message)
+                        yield self.report(ctx, init, message)
                 if "const" not in words:
-                    variables.add(str(decl.children[0]))
+                    variables.add(decl.name)
 
 
 def _not_constant(init: Tree, variables: set[str], functions: set[str]) -> str | None:
     """What makes an initialiser non-constant, or None (also when unsure)."""
     callees: set[int] = set()
     for node in walk(init):
-        if node.data == "call" and isinstance(node.children[0], Tree):
-            callee = node.children[0]
-            callees.add(id(callee))
-            if callee.data == "variable":
-                name = str(callee.children[0])
+        if node.data == "call":
+            call = Call(node)
+            callees.add(id(call.callee))
+            name = call.callee_name  # type: ignore[assignment]
+            if name is not None:
                 if name in functions:
                     return f"a call to `{name}` (functions cannot run at global scope)"
                 if name.startswith(_NOT_CONSTANT_CALLS):
                     return f"`{name}(...)`"
         elif node.data == "variable" and id(node) not in callees:
-            name = str(node.children[0])
+            name = Variable(node).name
             if name in UNIFORM_NAMES or name in ("gl_FragCoord", "gl_FrontFacing"):
                 return f"the uniform `{name}`"
             if name in variables:
