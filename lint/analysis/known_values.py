@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from lark import Tree
+from lark import Token, Tree
 
 from ..context import Node
 from .ranges import Interval, fract_range
@@ -223,9 +223,8 @@ def _called(node: Tree) -> str | None:
     if node.data == "call":
         return callee_name(node)
     spec = node.children[0]
-    if isinstance(spec, Tree) and len(spec.children) == 1 and not isinstance(spec.children[0], Tree):
-        return str(spec.children[0])
-    return None
+    head = spec.children[0] if isinstance(spec, Tree) and len(spec.children) == 1 else None
+    return str(head) if isinstance(head, Token) else None
 
 
 def _literal(node: Tree) -> Comps | None:
