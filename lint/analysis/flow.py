@@ -665,6 +665,8 @@ class _Analyzer:
                 self.counters.append((start[0], first, False))
         self.forget(node)
         end = self.nested(body, dict(enter)) if enter is not None else None
+        # what the body stored does not hold where a `continue` or `break` left it, nor after
+        self.forget(node)
         if peel:
             self.peels -= 1
             if counted:
@@ -748,6 +750,7 @@ class _Analyzer:
         # writes in the body only strengthen later tests: the first test's state is the exit's,
         # unless the first test surely passes: then the loop leaves by a later one
         end = self.nested(body, dict(enter)) if enter is not None else None
+        self.forget(node)
         self.targets.pop()
         again: State | None = None
         looped = _join([end, *target.continues])
@@ -762,6 +765,7 @@ class _Analyzer:
         self.targets.append(target)
         self.forget(node)
         end = self.nested(body, dict(state))
+        self.forget(node)
         self.targets.pop()
         looped = _join([end, *target.continues])
         leave = self.condition(cond, looped)[1] if looped is not None else None

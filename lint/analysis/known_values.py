@@ -62,8 +62,11 @@ class KnownValues:
 
     def store(self, name: str, value: Node) -> None:
         self.drop(name)
+        reads = names_in(value)
+        if name in reads:
+            return  # `t = t + h`: the expression means the old t, which no longer holds
         self.values[name] = value
-        for read in names_in(value):
+        for read in reads:
             self.readers.setdefault(read, set()).add(name)
         self.log.append(name)
 
