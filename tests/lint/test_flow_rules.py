@@ -441,9 +441,7 @@ _MARCH_HEAD = (
         "for (;;) { if (h < 0.0001 || t > 10.0) break; h = scene(vec3(t), tmp); t += h; }\n"
         "fragColor = tmp;",
         # a while loop whose first test passes
-        "vec4 tmp; float t = 0.0;\n"
-        "while (t < FAR) { t += scene(vec3(t), tmp); }\n"
-        "fragColor = tmp;",
+        "vec4 tmp; float t = 0.0;\nwhile (t < FAR) { t += scene(vec3(t), tmp); }\nfragColor = tmp;",
     ],
 )
 def test_c103_first_iteration_of_a_march_does_not_break(march: str) -> None:
