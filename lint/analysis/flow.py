@@ -341,6 +341,9 @@ class _Analyzer:
         # the values of locals where the analysis stands (known_values.py)
         self.known = KnownValues(self.comps, self.structs)
         self.peels = 0  # loops being analysed in two passes around the statement
+        # inside the first pass of a peeled loop, or at a loop's first test: where the values
+        # set before a loop decide what the model's ranges (widened over the loop) cannot
+        self.asking = 0
         self.loop_names: dict[int, frozenset[str]] = {}  # id of a loop -> names it may write
 
     def comps(self, node: Node) -> Comps | None:
@@ -632,7 +635,9 @@ class _Analyzer:
         surely = cond is None
         if cond is not None:
             # the first test, with the values set before the loop (`i = 0`, `t = 0.0`)
+            self.asking += 1
             enter, leave = self.condition(cond, after)
+            self.asking -= 1
             surely = enter is not None and (leave is None or self.runs_once(init, cond))
             if surely:
                 leave = None
@@ -651,7 +656,9 @@ class _Analyzer:
             if counted and start is not None:
                 self.counters.append((start[0], first, True))
             self.peels += 1  # until the second pass ends: nested peels cost at most 4 times
+            self.asking += 1
             end = self.nested(body, dict(enter))
+            self.asking -= 1
             if counted:
                 self.counters.pop()
             enter = _join([end, *target.continues])
@@ -743,7 +750,9 @@ class _Analyzer:
             enter, leave = state, dict(state)
         else:
             # the first test, with the values set before the loop
+            self.asking += 1
             enter, leave = self.condition(cond, state)
+            self.asking -= 1
         target = _Target(loop=True)
         self.targets.append(target)
         self.forget(node)
@@ -884,7 +893,7 @@ class _Analyzer:
     ) -> tuple[State | None, State | None]:
         """Drop the side of a condition that the value ranges say cannot happen."""
         truth = self.counter_truth(node)
-        if truth is None:
+        if truth is None and self.asking:
             truth = self.known.truth(node)
         if truth is None and self.model is not None:
             truth = self.model.truth(node)

@@ -53,8 +53,10 @@ class KnownValues:
     ) -> None:
         self.fallback = fallback  # the model's ranges of a node (on every run)
         self.structs = structs  # struct name -> its members, for `Ray(o, d, 0.0).len`
-        self.values: dict[str, Node] = {}
-        self.readers: dict[str, set[str]] = {}  # name -> names whose stored value reads it
+        # name -> (its expression, when it was stored); `when` counts writes
+        self.values: dict[str, tuple[Node, int]] = {}
+        self.written: dict[str, int] = {}  # name -> when it was last written
+        self.clock = 0
         self.log: list[str] = []  # names stored, in order: a branch drops its own at its end
         self.memo: dict[str, Comps | None] = {}  # the stored values evaluated for a question
 
@@ -62,19 +64,29 @@ class KnownValues:
 
     def store(self, name: str, value: Node) -> None:
         self.drop(name)
-        reads = names_in(value)
-        if name in reads:
-            return  # `t = t + h`: the expression means the old t, which no longer holds
-        self.values[name] = value
-        for read in reads:
-            self.readers.setdefault(read, set()).add(name)
+        self.values[name] = (value, self.clock)
         self.log.append(name)
 
     def drop(self, name: str) -> None:
-        """`name` is written: its value, and the values computed from it, no longer hold."""
+        """`name` is written: its value no longer holds, nor do the values computed from it
+        (checked when one is asked for: see `value`)."""
         self.values.pop(name, None)
-        for reader in self.readers.pop(name, ()):
-            self.values.pop(reader, None)
+        self.clock += 1
+        self.written[name] = self.clock
+
+    def value(self, name: str) -> Node | None:
+        """The stored expression of `name`, if every name it reads still holds the value it
+        had when it was stored (and it does not read `name` itself: `t = t + h` means the old
+        t, which no longer holds)."""
+        entry = self.values.get(name)
+        if entry is None:
+            return None
+        node, when = entry
+        reads = names_in(node)
+        if name in reads or any(self.written.get(read, -1) > when for read in reads):
+            del self.values[name]
+            return None
+        return node
 
     def mark(self) -> int:
         return len(self.log)
@@ -87,7 +99,7 @@ class KnownValues:
 
     def clear(self) -> None:
         self.values.clear()
-        self.readers.clear()
+        self.written.clear()
         self.log.clear()
 
     # --- asking -------------------------------------------------------------------------------
@@ -98,7 +110,7 @@ class KnownValues:
         if not (isinstance(cond, Tree) and cond.data == "binary"):
             return None
         op = str(cond.children[1])
-        if op not in _COMPARE or not (names_in(cond) & self.values.keys()):
+        if op not in _COMPARE or not self.values:
             return None
         self.memo: dict[str, Comps | None] = {}
         budget = [_BUDGET]
@@ -125,11 +137,12 @@ class KnownValues:
             return _literal(node)
         if kind == "variable":
             name = str(node.children[0])
-            stored = self.values.get(name)
-            if stored is not None:
-                if name not in self.memo:  # `r.x` and `r.y` evaluate r once
-                    self.memo[name] = self.eval(stored, depth + 1, budget)
-                return self.memo[name]
+            if name not in self.memo:  # `r.x` and `r.y` evaluate r once
+                stored = self.value(name)
+                if stored is None:
+                    return self.fallback(node)
+                self.memo[name] = self.eval(stored, depth + 1, budget)
+            return self.memo[name]
         elif kind == "field":
             got = self.member(node, depth, budget)
             if got is not None:
@@ -152,7 +165,7 @@ class KnownValues:
         """`s.m` of a struct built by its constructor, or a swizzle of a vector."""
         base, name = node.children[0], str(node.children[1])
         if isinstance(base, Tree) and base.data == "variable":
-            stored = self.values.get(str(base.children[0]))
+            stored = self.value(str(base.children[0]))
             if isinstance(stored, Tree) and stored.data == "constructor":
                 members = self.structs.get(_called(stored) or "")
                 args = call_args(stored)
