@@ -6,7 +6,10 @@ A small forward analysis over the statement tree of each function (no control-fl
 if/else join, loops may run zero times (unless their bounds say otherwise), `switch` falls
 through, `return`/`break`/`continue`/`discard` end a path. A condition leaves two states, where
 it is true and where it is false: inside `if (a && f(x))` the call ran; and a condition that the
-semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has one side only.
+semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has one side only. A
+loop that surely runs is analysed in two passes, its first iteration and the later ones; in the
+first, and at a loop's first test, the values its locals were given before it
+(known_values.py) decide conditions too (`if (h < EPS) break;` with h = 1.0 does not break).
 A state maps each tracked variable to a bit mask of its written components (vectors are tracked
 per component, through swizzles; everything else as a whole). Joins intersect the masks. Since
 masks only grow, a loop body is analysed once, with the state on entry, and no fixed point is

@@ -15,12 +15,14 @@ loop holds exactly on its first iteration:
 (with the counters at their start, d is below 8, so the first iteration writes `mr`).
 
 A value is the expression node itself, stored at a declaration or a statement-level `x = e;`
-and evaluated when a condition asks. It is dropped when the variable is written again, when a
-variable its expression reads is written, when its scope ends, and, for a value stored inside
-a branch, when the branch ends; the flow analysis drops everything a loop assigns before it
-analyses the iterations after the first. An expression or variable without a stored value is
-the model's range of that node, which holds on every run. Each question walks the stored
-expressions to a fixed depth, so the cost stays linear in the code.
+and evaluated when a condition asks. It is dropped when the variable is written again, when its
+scope ends, and, for a value stored inside a branch, when the branch ends; the flow analysis
+drops everything a loop may write before it analyses the iterations after the first, and after
+the body. A value whose expression reads a variable written since it was stored no longer holds
+(a clock of writes, checked when it is asked for). An expression or variable without a stored
+value is the model's range of that node, which holds on every run. Each question walks the
+stored expressions to a fixed depth and a fixed number of nodes, and the flow analysis asks only
+at a loop's first test and inside the first pass of a loop, so the cost stays linear.
 """
 
 from __future__ import annotations
