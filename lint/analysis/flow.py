@@ -6,7 +6,10 @@ A small forward analysis over the statement tree of each function (no control-fl
 if/else join, loops may run zero times (unless their bounds say otherwise), `switch` falls
 through, `return`/`break`/`continue`/`discard` end a path. A condition leaves two states, where
 it is true and where it is false: inside `if (a && f(x))` the call ran; and a condition that the
-semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has one side only.
+semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has one side only. A
+loop that surely runs is analysed in two passes, its first iteration and the later ones; in the
+first, and at a loop's first test, the values its locals were given before it
+(known_values.py) decide conditions too (`if (h < EPS) break;` with h = 1.0 does not break).
 A state maps each tracked variable to a bit mask of its written components (vectors are tracked
 per component, through swizzles; everything else as a whole). Joins intersect the masks. Since
 masks only grow, a loop body is analysed once, with the state on entry, and no fixed point is
@@ -38,6 +41,7 @@ from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 from ..context import LintContext, Node, walk_kind
 from ..context import tokens as tokens_of
 from .declarations import struct_members
+from .known_values import Comps, KnownValues
 from .model import Model, condition_truth, semantic_model
 from .syntax import (
     names_in,
@@ -286,6 +290,20 @@ class _Facts:
             return None
         return None if got is None or got.is_unknown or got.lo > got.hi else (got.lo, got.hi)
 
+    def comps(self, node: Node) -> Comps | None:
+        """Ranges per component of an expression (on every run), for KnownValues."""
+        model = self.get()
+        try:
+            got = model.value_of(node) if model is not None else None
+        except RecursionError:
+            return None
+        if got is None:
+            return None
+        if got.comps:
+            return tuple(got.comps)
+        width = vector_width(got.type or "")
+        return (got.range,) * width if got.type else None
+
 
 @dataclass
 class _Target:
@@ -324,6 +342,16 @@ class _Analyzer:
         self.targets: list[_Target] = []
         self.flow: FunctionFlow | None = None
         self.reported: set[int] = set()  # ids of nodes already reported
+        # the values of locals where the analysis stands (known_values.py)
+        self.known = KnownValues(self.comps, self.structs)
+        self.peels = 0  # loops being analysed in two passes around the statement
+        # inside the first pass of a peeled loop, or at a loop's first test: where the values
+        # set before a loop decide what the model's ranges (widened over the loop) cannot
+        self.asking = 0
+        self.loop_names: dict[int, frozenset[str]] = {}  # id of a loop -> names it may write
+
+    def comps(self, node: Node) -> Comps | None:
+        return self.model.comps(node) if self.model is not None else None
 
     # --- functions and statements -----------------------------------------------------------
 
@@ -333,6 +361,8 @@ class _Analyzer:
         flow = FunctionFlow(str(name), node, [], returns)
         self.flow = flow
         self.scopes = [{}]
+        self.known.clear()
+        self.known.structs = self.structs
         state: State = {}
         parts = [parameter_parts(param) for param in params]
         if len(parts) == 1 and parts[0][:2] == ("in", "void") and parts[0][3] is None:
@@ -438,10 +468,12 @@ class _Analyzer:
     def guarded(self, cond: Node, branch: Node, state: State) -> State | None:
         """A branch under a condition: its writes and reads remember the condition."""
         self.guards.append(self.guard(cond, branch))
+        mark = self.known.mark()
         try:
             return self.nested(branch, state)
         finally:
             self.guards.pop()
+            self.known.drop_since(mark)
 
     def block(self, items: list[Node], state: State | None) -> State | None:
         """A statement list in a scope of its own; iterative, so long bodies are fine."""
@@ -457,8 +489,14 @@ class _Analyzer:
                 continue
             state = self.statement(items[index], state)
             index += 1
-        self.scopes.pop()
+        self.pop_scope()
         return state
+
+    def pop_scope(self) -> None:
+        """The end of a scope: the values of the names it declared go with it (an outer
+        variable of the same name is not known again, which is only quieter)."""
+        for name in self.scopes.pop():
+            self.known.drop(name)
 
     def cases(self, ifs: list[Node], state: State) -> State | None:
         """`if (n == 0) ...; if (n == 1) ...; if (n == 2) ...;`: a case analysis, as a switch
@@ -488,7 +526,15 @@ class _Analyzer:
                 self.declaration(decl, state)
             return state
         if kind == "expression_statement":
-            self.expr(node.children[0], state)
+            expr = node.children[0]
+            self.expr(expr, state)
+            if isinstance(expr, Tree) and expr.data == "assignment" and expr.children[1] == "=":
+                target = expr.children[0]
+                if isinstance(target, Tree) and target.data == "variable":
+                    name = str(target.children[0])
+                    # a local or parameter: a global may change in any call
+                    if any(name in scope for scope in self.scopes):
+                        self.known.store(name, expr.children[2])
             return state
         if kind == "if_statement":
             cond = node.children[0]
@@ -553,7 +599,12 @@ class _Analyzer:
             if init:
                 self.expr(init[0], state)  # the name's scope starts after its initialiser
                 self.scopes[-1][str(name)] = None
+                if is_array:
+                    self.known.drop(str(name))
+                else:
+                    self.known.store(str(name), init[0])
                 continue
+            self.known.drop(str(name))
             width, fields = self.shape(type_name, is_array)
             var = Var(str(name), name, width, "local", fields, len(self.guards))  # type: ignore[arg-type]
             self.scopes[-1][var.name] = var
@@ -581,39 +632,56 @@ class _Analyzer:
         self.scopes.append({})
         after: State | None = self.statement(init, state)
         if after is None:
-            self.scopes.pop()
+            self.pop_scope()
             return None
         enter: State | None = after
         leave: State | None = None  # no condition: only `break` leaves
-        surely = False
+        surely = cond is None
         if cond is not None:
+            # the first test, with the values set before the loop (`i = 0`, `t = 0.0`)
+            self.asking += 1
             enter, leave = self.condition(cond, after)
-            surely = self.runs_once(init, cond)
+            self.asking -= 1
+            surely = enter is not None and (leave is None or self.runs_once(init, cond))
             if surely:
                 leave = None
         target = _Target(loop=True)
         self.targets.append(target)
         start = _loop_start(init)
-        peel = (surely and enter is not None and start is not None and len(self.counters) < 2
-                and not _assigns(body, start[0]))  # fmt: skip
-        if peel and enter is not None and start is not None:
+        counted = start is not None and not _assigns(body, start[0])
+        peel = surely and enter is not None and self.peels < _PEELS
+        if peel and enter is not None:
             # A loop that surely runs, in two passes: the first iteration, where the counter
-            # is its start (`if (i == 0) first = q; else use(prev);`), then the later ones
-            # from the state the first leaves (`prev = q` at its end), where it is not.
-            first = self.number(start[1])
-            self.counters.append((start[0], first, True))
+            # is its start (`if (i == 0) first = q; else use(prev);`) and the values set
+            # before the loop hold until the body changes them (`if (h < eps) break;` with
+            # h = 1.0 does not break), then the later ones from the state the first leaves
+            # (`prev = q` at its end), where they do not.
+            first = self.number(start[1]) if counted and start is not None else None
+            if counted and start is not None:
+                self.counters.append((start[0], first, True))
+            self.peels += 1  # until the second pass ends: nested peels cost at most 4 times
+            self.asking += 1
             end = self.nested(body, dict(enter))
-            self.counters.pop()
+            self.asking -= 1
+            if counted:
+                self.counters.pop()
             enter = _join([end, *target.continues])
             target.continues.clear()
             if enter is not None and step is not None:
                 self.expr(step, enter)
+            self.forget(node)
             if enter is not None and cond is not None:
                 enter = self.condition(cond, enter)[0]
-            self.counters.append((start[0], first, False))
+            if counted and start is not None:
+                self.counters.append((start[0], first, False))
+        self.forget(node)
         end = self.nested(body, dict(enter)) if enter is not None else None
+        # what the body stored does not hold where a `continue` or `break` left it, nor after
+        self.forget(node)
         if peel:
-            self.counters.pop()
+            self.peels -= 1
+            if counted:
+                self.counters.pop()
         self.targets.pop()
         looped = _join([end, *target.continues])
         if looped is not None and step is not None:
@@ -621,8 +689,16 @@ class _Analyzer:
         again: State | None = None  # leaving after some iterations: looped ⊇ after, but a
         if looped is not None and cond is not None:  # loop that surely runs has no `after`
             _, again = self.condition(cond, looped)
-        self.scopes.pop()
+        self.pop_scope()
         return _join([leave, again, *target.breaks])
+
+    def forget(self, loop: Tree) -> None:
+        """The iterations after the first: the values the loop may change are not known."""
+        names = self.loop_names.get(id(loop))
+        if names is None:
+            names = self.loop_names[id(loop)] = _written_names(loop)
+        for name in names:
+            self.known.drop(name)
 
     def for_parts(self, node: Tree) -> tuple[Node | None, Node | None]:
         """The condition and the step of a for loop; either may be absent."""
@@ -667,21 +743,32 @@ class _Analyzer:
             self.scopes[-1][str(cond.children[1])] = None
             enter, leave = state, dict(state)
         else:
+            # the first test, with the values set before the loop
+            self.asking += 1
             enter, leave = self.condition(cond, state)
+            self.asking -= 1
         target = _Target(loop=True)
         self.targets.append(target)
-        # writes in the body only strengthen later tests: the first test's state is the exit's
-        if enter is not None:
-            self.nested(body, dict(enter))
+        self.forget(node)
+        # writes in the body only strengthen later tests: the first test's state is the exit's,
+        # unless the first test surely passes: then the loop leaves by a later one
+        end = self.nested(body, dict(enter)) if enter is not None else None
+        self.forget(node)
         self.targets.pop()
-        self.scopes.pop()
-        return _join([leave, *target.breaks])
+        again: State | None = None
+        looped = _join([end, *target.continues])
+        if leave is None and looped is not None:
+            again = self.condition(cond, looped)[1]
+        self.pop_scope()
+        return _join([leave, again, *target.breaks])
 
     def do_loop(self, node: Tree, state: State) -> State | None:
         body, cond = node.children
         target = _Target(loop=True)
         self.targets.append(target)
+        self.forget(node)
         end = self.nested(body, dict(state))
+        self.forget(node)
         self.targets.pop()
         looped = _join([end, *target.continues])
         leave = self.condition(cond, looped)[1] if looped is not None else None
@@ -694,14 +781,17 @@ class _Analyzer:
         self.scopes.append({})
         current: State | None = None
         has_default = False
+        mark = self.known.mark()
         for item in node.children[1:]:
             if isinstance(item, Tree) and item.data in ("case_label", "default_label"):
                 has_default = has_default or item.data == "default_label"
                 current = _join([current, state])  # entered from the switch, or fallen into
+                self.known.drop_since(mark)  # what one case stored does not hold in the next
                 continue
             if current is not None:
                 current = self.statement(item, current)
-        self.scopes.pop()
+        self.known.drop_since(mark)
+        self.pop_scope()
         self.targets.pop()
         return _join([current, *target.breaks, None if has_default else state])
 
@@ -797,6 +887,8 @@ class _Analyzer:
     ) -> tuple[State | None, State | None]:
         """Drop the side of a condition that the value ranges say cannot happen."""
         truth = self.counter_truth(node)
+        if truth is None and self.asking:
+            truth = self.known.truth(node)
         if truth is None and self.model is not None:
             truth = self.model.truth(node)
         if truth is None and _is_true(node):
@@ -970,6 +1062,9 @@ class _Analyzer:
             state[id(var)] |= mask  # report a variable once per path, not at every later read
 
     def write(self, node: Node, state: State) -> None:
+        root = _root(node)
+        if root is not None:
+            self.known.drop(str(root.children[0]))
         var, comps = self.access(node)
         if var is not None and id(var) in state and var.kind in ("local", "out"):
             guards = tuple(self.guards[var.depth :])
@@ -1118,6 +1213,28 @@ _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}
 
 
 _WRITERS = ("assignment", "prefix", "postfix", "call")
+_PEELS = 2  # loops nested in one another analysed in two passes (each doubles its body's work)
+
+
+def _written_names(node: Tree) -> frozenset[str]:
+    """The names that `node` may write: assigned, incremented, or passed to a call (which may
+    take it as `out`)."""
+    names: set[str] = set()
+    for kind in _WRITERS:
+        for sub in walk_kind(node, kind):
+            if sub.data == "assignment":
+                targets = [sub.children[0]]
+            elif sub.data in ("prefix", "postfix"):
+                targets = [sub.children[1] if sub.data == "prefix" else sub.children[0]]
+            elif len(sub.children) > 1 and isinstance(sub.children[1], Tree):
+                targets = list(sub.children[1].children)
+            else:
+                continue
+            for target in targets:
+                root = _root(target)
+                if root is not None:
+                    names.add(str(root.children[0]))
+    return frozenset(names)
 
 
 def _assigns(node: Node, name: str) -> bool:

@@ -408,3 +408,140 @@ def test_c105_missing_return(head: str, reported: bool) -> None:
     assert found(src) == ([("C105", 1)] if reported else [])
     # a function nobody calls is not reported
     assert found(image("fragColor = vec4(1.);", head)) == []
+
+
+# --- values known on the first iteration (known_values.py) ----------------------------------
+
+_MARCH_HEAD = (
+    "struct Ray { vec3 o; vec3 d; float len; };\n"
+    "struct Model { float dist; int id; };\n"
+    "Model map(vec3 p) { return Model(length(p) - 1.0, 1); }\n"
+    "float scene(vec3 p, out vec4 m) { m = vec4(p, 1.0); return length(p) - 1.0; }\n"
+    "const float EPS = 0.001;\nconst float FAR = 20.0;\nconst int STEPS = 64;\n"
+)
+
+
+@pytest.mark.parametrize(
+    "march",
+    [
+        # the break's condition is false with the values set before the loop
+        "float d = EPS * 2.0; float t = 0.0; Model m;\n"
+        "for (int i = 0; i < STEPS; i++) {\n"
+        "  if (d < EPS || t > FAR) break;\n"
+        "  m = map(vec3(t)); d = m.dist; t += d; }\n"
+        "fragColor = vec4(m.dist);",
+        # through a member of a struct built by its constructor
+        "float d = 2.0 * EPS; Model m; Ray ray = Ray(vec3(0), vec3(1), 0.);\n"
+        "for (int i = 0; i < STEPS; i++) {\n"
+        "  if (d < EPS || ray.len > FAR) { break; }\n"
+        "  m = map(ray.o + ray.d * ray.len); d = m.dist; ray.len += d; }\n"
+        "fragColor = vec4(m.dist);",
+        # an out argument, and a loop without a condition
+        "vec4 tmp; float h = 1.0; float t = 0.0;\n"
+        "for (;;) { if (h < 0.0001 || t > 10.0) break; h = scene(vec3(t), tmp); t += h; }\n"
+        "fragColor = tmp;",
+        # a while loop whose first test passes
+        "vec4 tmp; float t = 0.0;\nwhile (t < FAR) { t += scene(vec3(t), tmp); }\nfragColor = tmp;",
+    ],
+)
+def test_c103_first_iteration_of_a_march_does_not_break(march: str) -> None:
+    assert found(image(march, _MARCH_HEAD)) == []
+
+
+@pytest.mark.parametrize(
+    "march",
+    [
+        # the first iteration may break: the starting distance is not above the threshold
+        "float d = EPS * 0.5; Model m;\n"
+        "for (int i = 0; i < STEPS; i++) { if (d < EPS) break; m = map(vec3(1)); d = m.dist; }\n"
+        "fragColor = vec4(m.dist);",
+        # the value the break tests is unknown (a parameter of the frame)
+        "float t = iTime; Model m;\n"
+        "for (int i = 0; i < STEPS; i++) { if (t > FAR) break; m = map(vec3(t)); t += m.dist; }\n"
+        "fragColor = vec4(m.dist);",
+        # changed in the body before the test: the value before the loop no longer holds
+        "float t = 0.0; Model m;\n"
+        "for (int i = 0; i < STEPS; i++) { t = iTime; if (t > FAR) break; m = map(vec3(t)); }\n"
+        "fragColor = vec4(m.dist);",
+        # changed in a branch before the loop: either value may hold
+        "float t = 0.0; Model m;\nif (fragCoord.x > 9.0) t = 100.0;\n"
+        "for (int i = 0; i < STEPS; i++) { if (t > FAR) break; m = map(vec3(t)); }\n"
+        "fragColor = vec4(m.dist);",
+        # `t = t + 30.`: the new value, not the old one, is tested at the break
+        "float t = 0.0; Model m;\nt = t + 30.0;\n"
+        "for (int i = 0; i < STEPS; i++) { if (t > FAR) break; m = map(vec3(t)); }\n"
+        "fragColor = vec4(m.dist);",
+        # the loop may not run at all: the while test is decided by nothing known
+        "vec4 tmp; float t = iTime;\nwhile (t < FAR) { t += scene(vec3(t), tmp); }\n"
+        "fragColor = tmp;",
+    ],
+)
+def test_c103_march_that_may_break_at_once_is_still_reported(march: str) -> None:
+    assert [c for c, _ in found(image(march, _MARCH_HEAD))] == ["C103"]
+
+
+def test_c103_value_known_in_an_outer_loop_holds_only_on_its_first_iteration() -> None:
+    # t changes at the end of each outer iteration: on the second, the inner loop may break
+    # at once and leave that iteration's r unset; t = 0.0 decides only the first
+    src = image(
+        "float t = 0.0;\n"
+        "for (int k = 0; k < 3; k++) {\n"
+        "  float r;\n"
+        "  for (int i = 0; i < 4; i++) { if (t > 5.0) break; r = float(i); }\n"
+        "  fragColor = vec4(r);\n"
+        "  t = iTime; }",
+    )
+    assert [c for c, _ in found(src)] == ["C103"]
+    assert found(src.replace("t = iTime;", "")) == []
+
+
+_VORONOI_HEAD = "vec2 hash(vec2 p) { return fract(sin(p * 591.32) * 43758.5); }\n"
+
+
+def test_c103_nearest_point_loop_writes_on_its_first_iteration() -> None:
+    # the Chebyshev distance to the first cell's point is below 2, under the starting 8.0
+    src = image(
+        "vec2 x = fragCoord / 40.0; vec2 n = floor(x); vec2 f = fract(x);\n"
+        "vec2 mr; float md = 8.0;\n"
+        "for (int j = -1; j <= 1; j++)\n"
+        "for (int i = -1; i <= 1; i++) {\n"
+        "  vec2 g = vec2(float(i), float(j)); vec2 o = hash(n + g); vec2 r = g + o - f;\n"
+        "  float d = max(abs(r.x), abs(r.y));\n"
+        "  if (d < md) { md = d; mr = r; } }\n"
+        "fragColor = vec4(mr, md, 1.0);",
+        _VORONOI_HEAD,
+    )
+    assert found(src) == []
+
+
+@pytest.mark.parametrize(
+    "start",
+    [
+        "1.0",  # the first cell's point may be farther than 1.0
+        "iTime",  # nothing known of the starting bound
+    ],
+)
+def test_c103_nearest_point_loop_with_a_bound_it_may_not_beat(start: str) -> None:
+    src = image(
+        "vec2 x = fragCoord / 40.0; vec2 n = floor(x); vec2 f = fract(x);\n"
+        f"vec2 mr; float md = {start};\n"
+        "for (int j = -1; j <= 1; j++)\n"
+        "for (int i = -1; i <= 1; i++) {\n"
+        "  vec2 g = vec2(float(i), float(j)); vec2 o = hash(n + g); vec2 r = g + o - f;\n"
+        "  float d = max(abs(r.x), abs(r.y));\n"
+        "  if (d < md) { md = d; mr = r; } }\n"
+        "fragColor = vec4(mr, md, 1.0);",
+        _VORONOI_HEAD,
+    )
+    assert [c for c, _ in found(src)] == ["C103"]
+
+
+def test_c103_value_stored_in_one_branch_is_not_known_in_the_other() -> None:
+    src = image(
+        "float t = 0.0; float r;\n"
+        "if (fragCoord.x > 9.0) { t = 100.0; } else {\n"
+        "  for (int i = 0; i < 4; i++) { if (t > 5.0) break; r = 1.0; } }\n"
+        "if (fragCoord.x > 9.0) { for (int i = 0; i < 4; i++) { if (t > 5.0) break; r = 2.0; } }\n"
+        "fragColor = vec4(r);",
+    )
+    assert [c for c, _ in found(src)] == ["C103"]

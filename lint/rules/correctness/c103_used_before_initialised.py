@@ -24,10 +24,14 @@ class UsedBeforeInitialised(Rule):
 
     The analysis follows if/else, loops that may run zero times (or surely run, from their
     bounds), `return`, `break`, `discard`, calls that write `out` arguments, and vector components
-    through swizzles. It stays quiet where the author ruled the path out: a read under a condition
-    tied to the write's (`if (hit) n = ...;` then `if (hit) use(n)`, or a flag set together with
-    the value), and a case analysis of one value (`if (n == 0) ... if (n == 1) ... if (n == 2)`,
-    or an else-if chain of comparisons of one value) taken as exhaustive.
+    through swizzles. A loop that surely runs is followed through its first iteration with the
+    values set before it: a march whose first step cannot stop (`d = 2.0 * EPS`, `t = 0.0`) runs
+    its body, and a nearest-point search whose starting bound the first candidate beats
+    (`md = 8.0` against a distance below 2) writes what it keeps. It stays quiet where the
+    author ruled the path out: a read under a condition tied to the write's (`if (hit) n = ...;`
+    then `if (hit) use(n)`, or a flag set together with the value), and a case analysis of one
+    value (`if (n == 0) ... if (n == 1) ... if (n == 2)`, or an else-if chain of comparisons of
+    one value) taken as exhaustive.
 
     Why is this bad?
         GLSL does not zero local variables. An uninitialised value is whatever the register held, so
