@@ -44,7 +44,9 @@ def glint(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 
 
 def lint_json(*args: str, cwd: Path) -> list[dict]:
-    result = glint("lint", "--no-cache", "--format", "json", *args, cwd=cwd)
+    # the default rules and N008 (an opt-in rule), which sees the Common tab's constants
+    select = [] if "--select" in args else ["--select", "DEFAULT,N008"]
+    result = glint("lint", "--no-cache", "--format", "json", *select, *args, cwd=cwd)
     assert result.returncode in (0, 1), result.stderr
     return json.loads(result.stdout)
 
@@ -124,10 +126,12 @@ def test_common_tab_content_is_part_of_the_cache_key(tmp_path: Path) -> None:
     (tmp_path / "pyproject.toml").write_text("[project]\nname = 'x'\n")
     (tmp_path / "x.glsl").write_text(IMAGE)
     (tmp_path / "x.common.glsl").write_text(COMMON)
-    first = glint("lint", "x.glsl", "--format", "concise", cwd=tmp_path)
+    first = glint("lint", "x.glsl", "--select", "DEFAULT,N008", "--format", "concise", cwd=tmp_path)
     assert first.stdout.startswith("x.glsl:3:")
     (tmp_path / "x.common.glsl").write_text(COMMON.replace("fade", "fadeOut"))
-    second = glint("lint", "x.glsl", "--format", "concise", cwd=tmp_path)
+    second = glint(
+        "lint", "x.glsl", "--select", "DEFAULT,N008", "--format", "concise", cwd=tmp_path
+    )
     assert "'fade': no matching overloaded function" in second.stdout
 
 
@@ -188,10 +192,10 @@ def test_compose_split_common_lints_and_validates_clean(tmp_path: Path) -> None:
 def test_lint_shader_takes_a_common_tab_and_channels(tmp_path: Path) -> None:
     import glint as api
 
-    found = api.lint_shader(IMAGE, common=COMMON)
+    found = api.lint_shader(IMAGE, common=COMMON, select="DEFAULT,N008")
     assert [(f.file, f.line, f.code) for f in found] == [("<input>", 3, "N008")]
     (tmp_path / "lib.glsl").write_text(COMMON.replace("t * t", "t * undefinedT"))
-    found = api.lint_shader(IMAGE, common=tmp_path / "lib.glsl")
+    found = api.lint_shader(IMAGE, common=tmp_path / "lib.glsl", select="DEFAULT,N008")
     assert [(Path(f.file).name, f.code) for f in found] == [
         ("lib.glsl", "C001"),
         ("<input>", "N008"),
@@ -208,7 +212,7 @@ def test_lint_shader_takes_a_common_tab_and_channels(tmp_path: Path) -> None:
 def test_common_code_is_analysed_but_not_reported_with_the_file() -> None:
     common = "float f(float x) {\n    return clamp(x, 1.0, 0.0);\n}\n"
     image = MAIN.format(body="    fragColor = vec4(f(fragCoord.x));")
-    options = Options(glslang=False)
+    options = Options(select=["DEFAULT", "N008"], glslang=False)
     assert lint_source(image, "x.glsl", options, tab=Tab(common=common, common_file="c")) == []
     alone = lint_source(common, "c", options, tab=Tab(is_common=True))
     assert [(f.line, f.code) for f in alone] == [(2, "N008")]

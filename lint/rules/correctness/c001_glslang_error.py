@@ -35,6 +35,7 @@ class GlslangError(GlslangRule):
 
     code = "C001"
     name = "glslang-error"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "correctness"
     severity = "error"

@@ -32,6 +32,7 @@ class GlslangWarning(GlslangRule):
 
     code = "C002"
     name = "glslang-warning"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "correctness"
     severity = "warning"

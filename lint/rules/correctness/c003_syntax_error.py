@@ -38,6 +38,7 @@ class SyntaxError_(Rule):
 
     code = "C003"
     name = "syntax-error"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "correctness"
     severity = "error"

@@ -38,6 +38,7 @@ class PreprocessorProblem(Rule):
 
     code = "C004"
     name = "preprocessor-error"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "correctness"
     severity = "error"

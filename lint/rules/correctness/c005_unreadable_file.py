@@ -33,6 +33,7 @@ class Unreadable(Rule):
 
     code = "C005"
     name = "unreadable-file"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "correctness"
     severity = "error"

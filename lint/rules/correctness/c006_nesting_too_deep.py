@@ -37,6 +37,7 @@ class TooDeep(Rule):
 
     code = "C006"
     name = "nesting-too-deep"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "correctness"
     severity = "error"

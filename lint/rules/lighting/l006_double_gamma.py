@@ -46,6 +46,7 @@ class DoubleGamma(Rule):
 
     code = "L006"
     name = "double-gamma"
+    default = False  # opt-in: no finding on the corpus, so no measured precision
     category = "lighting"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

@@ -37,6 +37,7 @@ class TanPole(NumericalRule):
 
     code = "N004"
     name = "tan-pole"
+    default = False  # opt-in: no finding on the corpus, so no measured precision
     certainty = "possible"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

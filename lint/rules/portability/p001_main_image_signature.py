@@ -43,6 +43,7 @@ class MainImageSignature(Rule):
 
     code = "P001"
     name = "main-image-signature"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

@@ -61,6 +61,7 @@ class FragColor(Rule):
 
     code = "P002"
     name = "gl-fragcolor"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

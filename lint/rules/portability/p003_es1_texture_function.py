@@ -57,6 +57,7 @@ class Es1Texture(Rule):
 
     code = "P003"
     name = "es1-texture-function"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

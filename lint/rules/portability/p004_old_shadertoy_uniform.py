@@ -41,6 +41,7 @@ class OldShadertoyUniform(Rule):
 
     code = "P004"
     name = "old-shadertoy-uniform"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

@@ -82,6 +82,7 @@ class IntWhereFloat(Rule):
 
     code = "P005"
     name = "int-where-float"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

@@ -61,6 +61,7 @@ class NonConstantGlobal(Rule):
 
     code = "P006"
     name = "non-constant-global-initialiser"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

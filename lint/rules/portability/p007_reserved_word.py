@@ -56,6 +56,7 @@ class ReservedWord(Rule):
 
     code = "P007"
     name = "reserved-word"
+    judged = False  # it reports what the compiler or the target rejects
     certainty = "certain"
     category = "portability"
     severity = "error"

@@ -38,6 +38,7 @@ class UnusedSuppression(Rule):
     code = UNUSED_SUPPRESSION
     certainty = "certain"
     name = "unused-suppression"
+    judged = False  # housekeeping of the user's own suppressions
     category = "style"
     needs_tree = False
 
