@@ -12,6 +12,7 @@ import pytest
 from glint.lint.precision import (
     CORPUS,
     DEFAULT_PRECISION,
+    MIN_JUDGED,
     DEFAULT_SAMPLE,
     DEFAULT_SET_PRECISION,
     Label,
@@ -29,9 +30,6 @@ pytestmark = pytest.mark.skipif(
     reason=f"the real-shader corpus is not at {CORPUS} (../shared/corpus beside the checkout)",
 )
 
-# Below this many labelled findings a rule's sampled precision says too little to decide: such a
-# rule stays opt-in whatever it scores (issue 26: default only with 15 or more judged findings).
-MIN_SAMPLE = 15
 
 
 @pytest.fixture(scope="module")
@@ -74,7 +72,7 @@ def test_findings_worth_acting_on_are_still_reported(findings: list[dict[str, An
 
 
 def test_the_default_rules_are_the_precise_ones(findings: list[dict[str, Any]]) -> None:
-    """A judged rule runs by default exactly when at least MIN_SAMPLE of its findings on the
+    """A judged rule runs by default exactly when at least MIN_JUDGED of its findings on the
     corpus are labelled and DEFAULT_PRECISION of them are worth acting on: one that fires
     rarely or never has no measured precision and stays opt-in, whatever it scores."""
     stats = measure(load_labels(), findings)
@@ -83,7 +81,7 @@ def test_the_default_rules_are_the_precise_ones(findings: list[dict[str, Any]]) 
             continue
         s = stats[code]
         precise = (
-            s.labelled >= MIN_SAMPLE
+            s.labelled >= MIN_JUDGED
             and s.precision is not None
             and s.precision >= DEFAULT_PRECISION
         )
