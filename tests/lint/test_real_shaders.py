@@ -12,9 +12,9 @@ import pytest
 from glint.lint.precision import (
     CORPUS,
     DEFAULT_PRECISION,
-    MIN_JUDGED,
     DEFAULT_SAMPLE,
     DEFAULT_SET_PRECISION,
+    MIN_JUDGED,
     Label,
     corpus_findings,
     default_sample,
