@@ -8,7 +8,7 @@ import pytest
 from lark import Tree
 
 from glint.compiler.compose.catalog_cross import entry_main
-from glint.compiler.evaluator import evaluate
+from glint.compiler.evaluator import UnsupportedError, evaluate, values
 from glint.compiler.glsl import types as T
 from glint.compiler.glsl.ast import Field, Index, token_text, variable_name
 from glint.compiler.glsl.keywords import BUILTIN_TYPES
@@ -210,13 +210,23 @@ def test_was_a_swizzle_mixing_two_sets_followed_by_the_moments() -> None:
     assert _moment(MOMENT_SRC, "V.x") == "float"
 
 
-def test_was_a_struct_named_like_a_matrix_a_matrix_in_the_evaluator() -> None:
-    # the evaluator's is_matrix was `startswith("mat")`: a struct `material` crashed it
+def test_was_a_name_starting_mat_a_matrix_in_the_evaluator() -> None:
+    # the evaluator's is_matrix was `startswith("mat")`: an unknown type `matrix` crashed it
+    # (int("rix")) instead of being reported as unsupported; a struct `material` still works
+    with pytest.raises(UnsupportedError, match="type 'matrix' is not supported"):
+        evaluate("float f(float x) { matrix m; return x; }", "f", [np.array([1.0])])
     src = """
     struct material { float rough; };
     float f(float x) { material m = material(x); return m.rough * 2.0; }"""
     out = evaluate(src, "f", [np.array([1.0, 2.0])])
     np.testing.assert_allclose(np.asarray(out), [2.0, 4.0])
+
+
+def test_was_a_uvec_a_float_scalar_to_the_evaluator() -> None:
+    # the evaluator's own copy knew no uvec: base_of("uvec3") was float, vec_size 1
+    assert values.base_of("uvec3") == "uint" and values.vec_size("uvec3") == 3
+    assert not values.is_value_type("uvec3")  # it computes with no unsigned values (yet)
+    assert values.component_dims("mat2x3") == 2 and values.mat_shape("mat4x2") == (4, 2)
 
 
 def test_was_matrix_comp_mult_a_free_constructor_in_the_cost_model() -> None:
