@@ -98,6 +98,7 @@ def is_value(t: Type) -> bool:
     return components(t) is not None or matrix_shape(t) is not None
 
 
+@lru_cache(maxsize=4096)
 def element_type(t: Type) -> str | None:
     """The component type: "uint" for uvec3, "float" for mat3 and float; None otherwise."""
     c = components(t)
@@ -134,6 +135,7 @@ def array_base(t: str) -> str:
 # --- access: indexing and swizzles --------------------------------------------------------
 
 
+@lru_cache(maxsize=4096)
 def element(t: Type) -> Type:
     """The type `x[i]` has: an array's element, a vector's component, a matrix's column."""
     if t is None:
@@ -166,6 +168,7 @@ def swizzle_index(letter: str) -> int:
     return _SWIZZLE_SLOT.get(letter, 0)
 
 
+@lru_cache(maxsize=4096)
 def swizzle_indices(name: str, n: int = 4) -> tuple[int, ...] | None:
     """The components `v.name` selects from a scalar or vector of n components, or None when
     it is no swizzle of one: more than 4 letters, letters of two sets (`xg`), or a component
@@ -178,6 +181,7 @@ def swizzle_indices(name: str, n: int = 4) -> tuple[int, ...] | None:
     return tuple(letters.index(c) for c in name)
 
 
+@lru_cache(maxsize=4096)
 def swizzle(t: Type, name: str) -> Type:
     """The type of `v.name` for a vector or scalar `v`, None if it is no swizzle of `t`. (A
     scalar's swizzle, `f.xx`, is desktop GLSL's; ES 3.00 rejects it, glslang says so.)"""
