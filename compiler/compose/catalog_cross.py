@@ -9,19 +9,15 @@ the functions keep their GLSL names and parameters.
 
 from __future__ import annotations
 
-import re
-
 from glint.compiler.catalog.loader import Catalog, load_catalog
 from glint.compiler.catalog.slots import SCENE_FUNCTIONS
 from glint.compiler.compose.catalog_show import show_source
 from glint.compiler.errors import UsageError
 from glint.compiler.glsl.symbols import FunctionDef, analyze
+from glint.compiler.glsl.types import is_scalar_constructible, size
 from glint.compiler.target import cross
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
-# Types a constructor builds from one float (matrices: the diagonal).
-_CONSTRUCTIBLE = re.compile(r"^(float|int|uint|bool|[biu]?vec[234]|mat[234])$")
-_VECTOR = re.compile(r"^([biu]?)vec([234])$")
 _NAMES = {"hlsl": "HLSL (shader model 5.0)", "msl": "Metal Shading Language"}
 
 
@@ -62,7 +58,7 @@ def entry_main(functions: list[FunctionDef]) -> str:
         for index, param in enumerate(function.params):
             name = f"arg{index}"
             writes = "out" in param.qualifier.split()
-            if _CONSTRUCTIBLE.match(param.type) and not writes:
+            if is_scalar_constructible(param.type) and not writes:
                 lines.append(f"        {param.type} {name} = {param.type}(x);")
             else:
                 lines.append(f"        {param.type} {name};")
@@ -75,13 +71,12 @@ def entry_main(functions: list[FunctionDef]) -> str:
 
 
 def _use(return_type: str, call: str) -> str:
-    if return_type in ("float", "int", "uint", "bool"):
+    n = size(return_type)
+    if n == 1:
         return f"sum.x += float({call});"
-    vector = _VECTOR.match(return_type)
-    if vector:
-        size = int(vector.group(2))
-        return f"sum.{'xyzw'[:size]} += vec{size}({call});"
-    return f"{call};"  # a struct or void: the call alone keeps the function
+    if n:
+        return f"sum.{'xyzw'[:n]} += vec{n}({call});"
+    return f"{call};"  # a matrix, a struct or void: the call alone keeps the function
 
 
 def _stand_ins(names: list[str]) -> str:

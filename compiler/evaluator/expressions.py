@@ -28,10 +28,10 @@ from glint.compiler.evaluator.values import (
     np_dtype,
     select,
     stack,
-    swizzle_indices,
     vec_size,
     vector_type,
 )
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.ast import (
     BoolLiteral,
     Constructor,
@@ -320,7 +320,7 @@ class ExpressionEvaluator:
                 return value.fields[key]
             raise self.error(node, f"{value.type} has no field '{key}'")
         if kind == "field":
-            idx = swizzle_indices(key, vec_size(value.type)) if not is_matrix(value.type) else None
+            idx = T.swizzle_indices(key, T.size(value.type))  # None for a matrix (size 0)
             if idx is None or vec_size(value.type) == 1 and key not in ("x", "r", "s"):
                 raise self.error(node, f"no field '{key}' on {value.type}")
             data = value.data if vec_size(value.type) > 1 else value.data[..., None]
@@ -398,7 +398,7 @@ class ExpressionEvaluator:
         lane_shape = np.broadcast_shapes(value.data.shape[:-dims], lanes(sub_new))
         data = np.broadcast_to(value.data, lane_shape + value.data.shape[-dims:]).copy()
         if kind == "field":
-            idx = swizzle_indices(key, vec_size(value.type)) or []
+            idx = list(T.swizzle_indices(key, vec_size(value.type)) or ())
             if len(set(idx)) != len(idx):
                 raise self.error(node, f"cannot assign to '{key}': a component repeats")
             for j, k in enumerate(idx):

@@ -7,15 +7,13 @@ Typing values explicitly is what tells a float over 3 lanes from a uniform vec3.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from typing import Any, Union
 
 import numpy as np
 
-SWIZZLE_SETS = ("xyzw", "rgba", "stpq")
-SCALARS = ("float", "int", "bool")
-_PREFIX = {"float": "", "int": "i", "bool": "b"}
+from glint.compiler.glsl import types as T
+
 _NP_DTYPE = {"int": np.int32, "bool": np.bool_}
 
 
@@ -36,52 +34,47 @@ class StructValue:
 AnyValue = Union[Value, StructValue]  # noqa: UP007 (used at runtime in isinstance-free code)
 
 
+# The evaluator's names for the type algebra's answers (compiler/glsl/types.py), as its
+# modules ask them: a scalar counts as a vector of 1, and a type is taken to be valid.
+
+
 def base_of(type_: str) -> str:
     """`vec3` -> float, `ivec2` -> int, `bvec4` -> bool, `mat3` -> float."""
-    if type_ in SCALARS:
-        return type_
-    if type_.startswith("ivec"):
-        return "int"
-    if type_.startswith("bvec"):
-        return "bool"
-    return "float"
+    return T.element_type(type_) or "float"
 
 
 def is_vector(type_: str) -> bool:
-    return re.fullmatch(r"[ib]?vec[234]", type_) is not None
+    return T.is_vector(type_)
 
 
 def is_matrix(type_: str) -> bool:
-    return type_.startswith("mat")
+    return T.is_matrix(type_)
 
 
 def vec_size(type_: str) -> int:
-    """Components of a scalar (1) or vector (K)."""
-    return int(type_[-1]) if is_vector(type_) else 1
+    """Components of a scalar (1) or vector (K); 1 for anything else."""
+    return T.size(type_) or 1
 
 
 def mat_shape(type_: str) -> tuple[int, int]:
     """(columns, rows) of matN or matCxR."""
-    dims = type_[3:]
-    if "x" in dims:
-        c, r = dims.split("x")
-        return int(c), int(r)
-    return int(dims), int(dims)
+    shape = T.matrix_shape(type_)
+    if shape is None:
+        raise ValueError(f"{type_} is no matrix")
+    return shape
 
 
-def vector_type(base: str, size: int) -> str:
-    return base if size == 1 else f"{_PREFIX[base]}vec{size}"
+vector_type = T.vector
 
 
 def component_dims(type_: str) -> int:
     """Trailing axes that are components rather than lanes."""
-    if is_matrix(type_):
-        return 2
-    return 1 if is_vector(type_) else 0
+    return len(T.shape(type_) or ())
 
 
 def is_value_type(type_: str) -> bool:
-    return type_ in SCALARS or is_vector(type_) or is_matrix(type_)
+    """A scalar, vector or matrix the evaluator computes with: not (yet) an unsigned one."""
+    return T.is_value(type_) and T.element_type(type_) != "uint"
 
 
 def np_dtype(base: str, ft: Any) -> Any:
@@ -133,14 +126,6 @@ def stack(parts: list[np.ndarray], dtype: Any) -> np.ndarray:
     """Components back into one array with a trailing axis."""
     arrays = np.broadcast_arrays(*[np.asarray(p) for p in parts])
     return np.stack(arrays, axis=-1).astype(dtype, copy=False)
-
-
-def swizzle_indices(name: str, size: int) -> list[int] | None:
-    """Component indices of `.xyz`-style selectors, or None when `name` is not one."""
-    for letters in SWIZZLE_SETS:
-        if all(c in letters[:size] for c in name) and 1 <= len(name) <= 4:
-            return [letters.index(c) for c in name]
-    return None
 
 
 def to_numpy(value: AnyValue, shape: tuple[int, ...] | None = None) -> Any:

@@ -2,29 +2,14 @@
 
 from __future__ import annotations
 
+# Every type named by a keyword (the lexer's TYPE_NAME) is the type algebra's to say.
+from glint.compiler.glsl.types import BUILTIN_TYPES as BUILTIN_TYPES
+
 
 def words(text: str) -> frozenset[str]:
     """A set of whitespace-separated words (long keyword lists read better as text)."""
     return frozenset(text.split())
 
-
-def _vectors() -> set[str]:
-    names = {f"{p}vec{n}" for p in ("", "b", "i", "u") for n in (2, 3, 4)}
-    names |= {f"mat{n}" for n in (2, 3, 4)}
-    names |= {f"mat{c}x{r}" for c in (2, 3, 4) for r in (2, 3, 4)}
-    return names
-
-
-def _samplers() -> set[str]:
-    names: set[str] = set()
-    for prefix in ("", "i", "u"):
-        names |= {f"{prefix}sampler{kind}" for kind in ("2D", "3D", "Cube", "2DArray")}
-    return names | {"sampler2DShadow", "samplerCubeShadow", "sampler2DArrayShadow"}
-
-
-BUILTIN_TYPES: frozenset[str] = frozenset(
-    {"void", "bool", "int", "uint", "float"} | _vectors() | _samplers()
-)
 
 # Qualifiers that the grammar takes as one terminal per group (see glsl.lark).
 QUALIFIER_GROUPS: dict[str, str] = {

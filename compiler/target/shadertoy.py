@@ -7,6 +7,7 @@ validates and renders user code with exactly this prelude so that what passes he
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -71,6 +72,26 @@ def prelude_lines(target: str) -> int:
 # What `--channel N=KIND` binds to iChannelN, and the sampler type ShaderToy then declares.
 CHANNEL_KINDS: dict[str, str] = {"2d": "sampler2D", "cube": "samplerCube", "3d": "sampler3D"}
 CHANNELS = 4
+
+# The type of every name ShaderToy provides: its uniforms (an array declarator's size goes with
+# the type: iChannelTime is a float[4]) and the fragment stage's variables.
+SHADERTOY_TYPES: dict[str, str] = {
+    decl.partition("[")[0]: ty + "".join(f"[{rest}" for rest in decl.split("[")[1:])
+    for ty, decl in UNIFORMS
+}
+SHADERTOY_TYPES.update(
+    {"gl_FragCoord": "vec4", "gl_FrontFacing": "bool", "gl_PointCoord": "vec2",
+     "gl_FragDepth": "float"}
+)  # fmt: skip
+
+
+def shadertoy_types(channels: Sequence[str] = ()) -> dict[str, str]:
+    """SHADERTOY_TYPES with iChannelN typed for what it is bound to ("2d", "cube", "3d")."""
+    types = dict(SHADERTOY_TYPES)
+    for index, kind in enumerate(channels):
+        types[f"iChannel{index}"] = CHANNEL_KINDS[kind]
+    return types
+
 
 # ShaderToy's prelude defines HW_PERFORMANCE before the code: 1 on desktops, 0 on phones.
 # glint checks the desktop's value. Code that defines it itself (written for a runner that

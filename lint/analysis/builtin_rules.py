@@ -8,10 +8,10 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable
 
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.keywords import words
 
 from ..context import Node
-from . import types as T
 from . import witness as W
 from .ranges import (
     HALF_PI,

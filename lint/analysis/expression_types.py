@@ -17,6 +17,7 @@ from collections.abc import Callable, Sequence
 
 from lark import Tree
 
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.ast import (
     Assignment,
     Constructor,
@@ -39,9 +40,9 @@ from glint.compiler.glsl.ast import (
     Sequence as CommaExpression,
 )
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+from glint.compiler.target.shadertoy import shadertoy_types
 
 from ..context import LintContext, Node, walk, walk_kind
-from . import types as T
 from .declarations import declared_variables, signature, struct_members
 from .syntax import call_args, callee_name, is_tree, spec_text
 
@@ -63,7 +64,7 @@ class ExpressionTypes:
         self._scope_of: dict[int, Scope] = {}
         self._types: dict[int, str | None] = {}
         self._position = 0
-        shadertoy: Frame = {name: [(-1, ty)] for name, ty in T.shadertoy_types(channels).items()}
+        shadertoy: Frame = {name: [(-1, ty)] for name, ty in shadertoy_types(channels).items()}
         self._globals: list[Frame] = [shadertoy]
         for node in tree.children:
             if not isinstance(node, Tree):
@@ -187,7 +188,7 @@ class ExpressionTypes:
 
     def _unary(self, node: Tree) -> str | None:
         unary = Unary(node)
-        return "bool" if unary.op == "!" else self.type_of(unary.operand)
+        return T.unary(unary.op, self.type_of(unary.operand))
 
     def _binary(self, node: Tree) -> str | None:
         left, op, right = binary_parts(node)

@@ -12,10 +12,10 @@ from typing import Protocol
 
 from lark import Tree
 
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
-from . import types as T
 from . import witness as W
 from .builtin_rules import (
     REACH_ZERO,

@@ -17,6 +17,8 @@ from dataclasses import dataclass, field
 
 from lark import Tree
 
+from glint.compiler.glsl.types import CONSTRUCTIBLE
+
 from ..context import LintContext, Node, walk
 from .functions import Function
 from .syntax import call_args, call_name, names_in, root_var
@@ -132,7 +134,7 @@ class Program:
                 name = call_name(item)
                 if name in self.defined:
                     total += times * self.function_cost(name)
-                elif name is not None and name[:1].islower() and not _is_constructor(name):
+                elif name is not None and name[:1].islower() and name not in CONSTRUCTIBLE:
                     total += times * (_builtin_cost(name) if _is_builtin(name)
                                       else _UNKNOWN_CALL_COST)  # fmt: skip
                 stack += [(c, times) for c in item.children[1:]]
@@ -175,13 +177,6 @@ class Program:
                     if self.global_writes(name):  # type: ignore[arg-type]
                         found.add(IMPURE)
         return found
-
-
-_CONSTRUCTORS = {"float", "int", "uint", "bool"}
-
-
-def _is_constructor(name: str) -> bool:
-    return name in _CONSTRUCTORS or name[:3] in ("vec", "mat") or name[1:4] in ("vec", "mat")
 
 
 def _is_builtin(name: str) -> bool:

@@ -25,10 +25,11 @@ from dataclasses import dataclass, field
 
 from lark import Tree
 
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+from glint.compiler.target.shadertoy import shadertoy_types
 
 from ..context import LintContext, Node, subtree_count, tokens, walk
-from . import types as T
 from .declarations import declared_variables, signature, struct_members
 from .expressions import Evaluator, RecordedEvaluator, as_polynomial
 from .ranges import INF, NONNEG, UNKNOWN, Interval
@@ -521,7 +522,7 @@ _FIRST_FRAME = {
 def _shadertoy_values(channels: Sequence[str] = ()) -> dict[str, Value]:
     return {
         name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN), wit=_FIRST_FRAME.get(name))
-        for name, ty in T.shadertoy_types(channels).items()
+        for name, ty in shadertoy_types(channels).items()
     }
 
 

@@ -35,12 +35,13 @@ from dataclasses import dataclass, field
 
 from lark import Token, Tree
 
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.ast import for_parts
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk
 from .declarations import declared_variables, signature
-from .syntax import call_args, callee_name, int_value, is_tree, root_variable, swizzle_index
+from .syntax import call_args, callee_name, int_value, is_tree, root_variable
 
 # A tag: ("frame", name) the first frame; ("mouse",) before the first click; ("loop", line,
 # name, value text) the first iteration of the loop at line; ("uniform", name, line) a uniform
@@ -148,27 +149,16 @@ class Event:
 
 def size_of(type_: str | None) -> int | None:
     """Components of a scalar or vector type; None for anything not followed."""
-    if type_ in ("float", "int", "uint", "bool"):
-        return 1
-    if type_ and type_[-1] in "234" and type_[:-1] in ("vec", "ivec", "uvec", "bvec"):
-        return int(type_[-1])
-    return None
+    return T.size(type_) or None
 
 
 def base_of(type_: str | None) -> str:
-    if not type_:
-        return "float"
-    if type_ in ("int", "uint") or type_.startswith(("ivec", "uvec")):
-        return "int"
-    if type_ == "bool" or type_.startswith("bvec"):
-        return "bool"
-    return "float"
+    """How a value's components are held: a uint's as a Python int, like an int's."""
+    element = T.element_type(type_) or "float"
+    return "int" if element == "uint" else element
 
 
-def vector_type(base: str, n: int) -> str:
-    if n == 1:
-        return base
-    return {"float": "vec", "int": "ivec", "bool": "bvec"}[base] + str(n)
+vector_type = T.vector
 
 
 def unknown(type_: str | None, tags: frozenset = NO_TAGS) -> MV:
@@ -872,7 +862,7 @@ class Moments:
             slots: list[int] | None = None
             if is_tree(target, "field"):
                 letters = str(target.children[1])  # type: ignore[union-attr]
-                slots = [swizzle_index(ch) for ch in letters]
+                slots = list(T.swizzle_indices(letters) or [-1])
             elif is_tree(target, "index"):
                 i = self.expr(target.children[1], state)  # type: ignore[union-attr]
                 if i.comps and known(i.comps[0]) and isinstance(i.comps[0], int):
@@ -901,11 +891,11 @@ class Moments:
         letters = str(node.children[1])
         if v.comps is None or size_of(v.type) is None:
             return MV(None)
-        slots = [swizzle_index(ch) for ch in letters]
+        slots = list(T.swizzle_indices(letters) or [-1])  # -1: no swizzle
         if not all(0 <= s < len(v.comps) for s in slots) or len(slots) > 4:
             return MV(None)
         comps = tuple(v.comps[s] for s in slots)
-        return MV(vector_type(base_of(v.type), len(comps)), comps, v.tags)
+        return MV(T.swizzle(v.type, letters), comps, v.tags)
 
     def _index(self, node: Tree, state: State) -> MV:
         v = self.expr(node.children[0], state)
@@ -913,14 +903,8 @@ class Moments:
         if v.comps is not None and size_of(v.type) and i.comps and known(i.comps[0]):
             k = i.comps[0]
             if isinstance(k, int) and 0 <= k < len(v.comps):
-                return MV(base_of(v.type), (v.comps[k],), union(v.tags, i.tags))
-        if v.type and v.type.startswith(("vec", "ivec", "bvec", "uvec")):
-            return unknown(base_of(v.type))
-        if v.type and v.type.startswith("mat") and len(v.type) >= 4:
-            return unknown("vec" + v.type[-1])
-        if v.type and "[" in v.type:
-            return unknown(v.type[: v.type.index("[")])
-        return MV(None)
+                return MV(T.element(v.type), (v.comps[k],), union(v.tags, i.tags))
+        return unknown(T.element(v.type)) if T.element(v.type) else MV(None)
 
     def _constructor(self, node: Tree, state: State) -> MV:
         spec = node.children[0]
@@ -1062,7 +1046,7 @@ def _result_type(a: MV, b: MV) -> str | None:
     na, nb = size_of(ta), size_of(tb)
     if na is None or nb is None:
         return None
-    base = "float" if "float" in (base_of(ta), base_of(tb)) else base_of(ta)
+    base = "float" if "float" in (T.element_type(ta), T.element_type(tb)) else T.element_type(ta)
     return vector_type(base, max(na, nb))
 
 

@@ -11,11 +11,11 @@ from typing import Protocol
 
 from lark import Tree
 
+from glint.compiler.glsl import types as T
 from glint.compiler.glsl.ast import for_parts
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
-from . import types as T
 from .expressions import ASSIGN_OPS, Evaluator, ModelView
 from .ranges import Interval
 from .scopes import Scopes, join_scopes, widen

@@ -24,6 +24,7 @@ from glint.compiler.glsl.ast import (
 )
 from glint.compiler.glsl.ast import int_value as int_value  # re-exported
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
+from glint.compiler.glsl.types import swizzle_index as swizzle_index  # re-exported
 
 from ..context import Node, variable_names, walk, walk_kind
 
@@ -90,13 +91,6 @@ def var_key(node: Node) -> tuple[str, str] | None:
             letter = field.name
             return (f"{base}.{letter}", base) if len(letter) == 1 else None
     return None
-
-
-def swizzle_index(letter: str) -> int:
-    for names in ("xyzw", "rgba", "stpq"):
-        if letter in names:
-            return names.index(letter)
-    return 0
 
 
 # --- declarations -------------------------------------------------------------------------

@@ -6,7 +6,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from ...analysis import types as T
+from glint.compiler.glsl import types as T
+
 from ...analysis import witness as W
 from ...analysis.model import semantic_model
 from ...analysis.ranges import _num

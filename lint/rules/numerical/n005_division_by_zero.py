@@ -6,8 +6,9 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.types import components
+
 from ...analysis.model import semantic_model
-from ...analysis.types import components
 from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import register

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from glint.compiler.glsl.types import size
+
 from ...analysis.model import semantic_model
 from ...analysis.ranges import Interval
 from ...analysis.syntax import call_args
-from ...analysis.types import size
 from ...context import LintContext
 from ...finding import Finding
 from .. import register

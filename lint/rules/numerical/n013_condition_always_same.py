@@ -6,12 +6,13 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.target.shadertoy import SHADERTOY_TYPES
+
 from ...analysis.constants import is_compile_time
 from ...analysis.functions import Function, functions
 from ...analysis.model import Model, condition_truth, semantic_model
 from ...analysis.ranges import Interval
 from ...analysis.syntax import binary_op, call_args, callee_name, is_tree
-from ...analysis.types import SHADERTOY_TYPES
 from ...context import LintContext, Node, walk_kind
 from ...finding import Finding
 from .. import register

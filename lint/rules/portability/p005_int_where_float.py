@@ -22,10 +22,10 @@ from glint.compiler.glsl.ast import (
     token_text,
 )
 from glint.compiler.glsl.keywords import words
+from glint.compiler.glsl.types import is_float_like
 
 from ...analysis.expression_types import ExpressionTypes, expression_types
 from ...analysis.syntax import prototype_parts, type_of_declaration
-from ...analysis.types import is_float_like
 from ...context import LintContext, walk_kind
 from ...finding import Finding, Fix
 from .. import Rule, register

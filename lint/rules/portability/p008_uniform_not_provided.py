@@ -9,8 +9,9 @@ from typing import Any
 
 from lark import Token, Tree
 
+from glint.compiler.target.shadertoy import SHADERTOY_TYPES
+
 from ...analysis.syntax import int_value, spec_text
-from ...analysis.types import SHADERTOY_TYPES
 from ...context import LintContext, Node
 from ...finding import Finding
 from .. import Rule, register
