@@ -345,7 +345,6 @@ NOT_YET_CONVERTED = {
     "lint/analysis/builtin_rules.py",
     "lint/analysis/expressions.py",
     "lint/analysis/invariance.py",
-    "lint/analysis/known_values.py",
     "lint/analysis/model.py",
     "lint/analysis/moments.py",
     "lint/analysis/statements.py",
