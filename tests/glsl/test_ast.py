@@ -348,8 +348,6 @@ NOT_YET_CONVERTED = {
     "lint/analysis/model.py",
     "lint/analysis/moments.py",
     "lint/analysis/statements.py",
-    "lint/rules/correctness/_data_flow.py",
-    "lint/rules/correctness/c105_missing_return.py",
     "lint/rules/numerical/_common.py",
     "lint/rules/numerical/n005_division_by_zero.py",
     "lint/rules/numerical/n011_division_by_zero_at_moment.py",
