@@ -1079,3 +1079,28 @@ def cast_any(node: object, *views: type[_V]) -> _V | None:
         if found is not None:
             return found
     return None
+
+
+# --- more accessors without a view (the data-flow analysis) ---------------------------------
+
+
+def assigned_target(node: Tree) -> Node:
+    """The lvalue an assignment, prefix or postfix node writes (`x` of `x += 1.`, `++x`)."""
+    kids = node.children
+    return kids[1] if node.data == "prefix" else kids[0]
+
+
+def field_name(node: Tree) -> str:
+    """`xyz` of a field node `v.xyz`."""
+    return str(node.children[1])
+
+
+def index_expression(node: Tree) -> Node:
+    """`i + 1` of an index node `a[i + 1]`."""
+    return node.children[1]
+
+
+def if_parts(node: Tree) -> tuple[Node, Node, Node | None]:
+    """(condition, then branch, else branch or None) of an if statement."""
+    kids = node.children
+    return kids[0], kids[1], kids[2] if len(kids) > 2 else None

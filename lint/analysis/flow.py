@@ -35,11 +35,34 @@ from typing import Literal
 
 from lark import Token, Tree
 
-from glint.compiler.glsl.ast import for_parts
+from glint.compiler.glsl.ast import (
+    Call,
+    DeclarationStatement,
+    DoStatement,
+    FunctionDefinition,
+    JumpStatement,
+    Sequence,
+    SwitchStatement,
+    Ternary,
+    VariableDeclaration,
+    WhileStatement,
+    assigned_target,
+    binary_parts,
+    call_arguments,
+    field_name,
+    first_child,
+    for_parts,
+    if_parts,
+    index_expression,
+    int_value,
+    operand,
+    operator,
+    token_text,
+    variable_name,
+)
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk_kind
-from ..context import tokens as tokens_of
 from .declarations import struct_members
 from .known_values import Comps, KnownValues
 from .model import Model, condition_truth, semantic_model
@@ -196,7 +219,8 @@ def _signatures(tree: Tree) -> dict[str, list[tuple[str, ...]]]:
     for node in tree.children:
         if not isinstance(node, Tree):
             continue
-        proto = node.children[0] if node.data == "function_definition" else node
+        definition = FunctionDefinition.cast(node)
+        proto = definition.prototype.syntax if definition is not None else node
         if isinstance(proto, Tree) and proto.data == "function_prototype":
             _, name, params = prototype_parts(proto)
             qualifiers = tuple(parameter_parts(p)[0] for p in params)
@@ -210,28 +234,23 @@ def _const_ints(tree: Tree) -> dict[str, int]:
     """Global `const int N = <literal>;` values, to see that `for (i = 0; i < N; ...)` runs."""
     found: dict[str, int] = {}
     for node in tree.children:
-        if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+        decl = VariableDeclaration.cast(node)
+        if decl is None or not decl.type.is_const:
             continue
-        spec = node.children[0]
-        words = [str(t) for t in tokens_of(spec) if isinstance(t, Token)]
-        if "const" not in words:
-            continue
-        for decl in node.children[1:]:
-            if isinstance(decl, Tree) and len(decl.children) == 2:
-                value = _int_value(decl.children[1])
+        for declarator in decl.declarators:
+            init = declarator.initializer
+            if declarator.array is None and init is not None:
+                value = _int_value(init)
                 if value is not None:
-                    found[str(decl.children[0])] = value
+                    found[declarator.name] = value
     return found
 
 
 def _int_value(node: Node) -> int | None:
     if isinstance(node, Tree) and node.data == "int_literal":
-        text = str(node.children[0]).rstrip("uU")
-        if text[:2].lower() == "0x":
-            return int(text, 16)
-        return int(text, 8) if text.startswith("0") and len(text) > 1 else int(text)
-    if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "-":
-        inner = _int_value(node.children[1])
+        return int_value(token_text(node))  # type: ignore[arg-type]
+    if isinstance(node, Tree) and node.data == "unary" and operator(node) == "-":
+        inner = _int_value(operand(node))
         return None if inner is None else -inner
     return None
 
@@ -356,8 +375,9 @@ class _Analyzer:
     # --- functions and statements -----------------------------------------------------------
 
     def function(self, node: Tree) -> FunctionFlow:
-        proto, body = node.children[0], node.children[1]
-        returns, name, params = prototype_parts(proto)  # type: ignore[arg-type]
+        definition = FunctionDefinition(node)
+        body = definition.body
+        returns, name, params = prototype_parts(definition.prototype.syntax)
         flow = FunctionFlow(str(name), node, [], returns)
         self.flow = flow
         self.scopes = [{}]
@@ -388,7 +408,7 @@ class _Analyzer:
                 state[id(var)] = 0
             else:
                 self.scopes[-1][str(pname)] = None
-        end = self.block(body.children, state)  # type: ignore[union-attr]
+        end = self.block(body.children, state)  # the compound statement's statements
         if end is not None:
             flow.exits.append(Exit(None, end))
         for read in flow.reads:
@@ -428,10 +448,9 @@ class _Analyzer:
         if key not in self.assigned_cache:
             names: set[str] = set()
             for sub in walk_kind(branch, "assignment", "prefix", "postfix"):
-                target = sub.children[1] if sub.data == "prefix" else sub.children[0]
-                root = _root(target)
+                root = _root(assigned_target(sub))
                 if root is not None:
-                    names.add(str(root.children[0]))
+                    names.add(variable_name(root))  # type: ignore[arg-type]
             self.assigned_cache[key] = frozenset(names)
         return self.assigned_cache[key]
 
@@ -444,14 +463,14 @@ class _Analyzer:
         stack = [cond]
         while stack:
             node = stack.pop()
-            if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "!":
-                stack.append(node.children[1])
+            if isinstance(node, Tree) and node.data == "unary" and operator(node) == "!":
+                stack.append(operand(node))
             elif isinstance(node, Tree) and node.data == "binary":
-                op = str(node.children[1])
+                left, op, right = binary_parts(node)
                 if op in ("&&", "||", "^^"):
-                    stack += [node.children[0], node.children[2]]
+                    stack += [left, right]
                 elif op in _COMPARISONS or op == "!=":
-                    sides = (node.children[0], node.children[2])
+                    sides = (left, right)
                     yield from (self.source(side) for side in sides if not _is_literal(side))
                 else:
                     yield self.source(node)
@@ -504,10 +523,11 @@ class _Analyzer:
         ends: list[State | None] = []
         for node in ifs:
             assert isinstance(node, Tree)
-            self.expr(node.children[0], state)
+            self.expr(first_child(node), state)  # every condition runs
         for node in ifs:
             assert isinstance(node, Tree)
-            ends.append(self.guarded(node.children[0], node.children[1], dict(state)))
+            cond, then, _ = if_parts(node)
+            ends.append(self.guarded(cond, then, dict(state)))
         return _join(ends)
 
     def nested(self, node: Node, state: State) -> State | None:
@@ -519,32 +539,30 @@ class _Analyzer:
             return state
         kind = node.data
         if kind == "compound_statement":
-            return self.block(node.children, state)
+            return self.block(node.children, state)  # its statements
         if kind == "declaration_statement":
-            decl = node.children[0]
+            decl = first_child(node)
             if isinstance(decl, Tree) and decl.data == "variable_declaration":
                 self.declaration(decl, state)
             return state
         if kind == "expression_statement":
-            expr = node.children[0]
+            expr = first_child(node)
             self.expr(expr, state)
-            if isinstance(expr, Tree) and expr.data == "assignment" and expr.children[1] == "=":
-                target = expr.children[0]
-                if isinstance(target, Tree) and target.data == "variable":
-                    name = str(target.children[0])
-                    # a local or parameter: a global may change in any call
-                    if any(name in scope for scope in self.scopes):
-                        self.known.store(name, expr.children[2])
+            if isinstance(expr, Tree) and expr.data == "assignment":
+                target, op, value = binary_parts(expr)
+                name = variable_name(target)
+                # a local or parameter: a global may change in any call
+                if op == "=" and name is not None and any(name in s for s in self.scopes):
+                    self.known.store(name, value)
             return state
         if kind == "if_statement":
-            cond = node.children[0]
+            cond, then_branch, otherwise = if_parts(node)
             if id(node) not in self.chains:
                 self.mark_chain(node)
             yes, no = self.condition(cond, state)
-            then = self.guarded(cond, node.children[1], yes) if yes is not None else None
+            then = self.guarded(cond, then_branch, yes) if yes is not None else None
             other = no
-            if len(node.children) > 2 and no is not None:
-                otherwise = node.children[2]
+            if otherwise is not None and no is not None:
                 if isinstance(otherwise, Tree) and otherwise.data == "if_statement":
                     # `else if`: an if declares nothing, so it needs no scope of its own; one
                     # per link made a long else-if chain as deep in scopes as it is long, and
@@ -575,34 +593,28 @@ class _Analyzer:
         """Note each link of an else-if chain, and whether the chain is a case analysis: at
         least `_CASES` comparisons of one value and no final else."""
         links = [head]
-        while len(links[-1].children) > 2:
-            last = links[-1].children[2]
+        while (last := if_parts(links[-1])[2]) is not None:
             if not (isinstance(last, Tree) and last.data == "if_statement"):
                 break
             links.append(last)
-        exhaustive = len(links[-1].children) == 2 and _one_value([c.children[0] for c in links])
+        exhaustive = if_parts(links[-1])[2] is None and _one_value([first_child(c) for c in links])
         for link in links:
             self.chains[id(link)] = exhaustive and link is links[-1]
 
     def declaration(self, decl: Tree, state: State) -> None:
-        spec = decl.children[0]
-        type_name, type_array = type_of_declaration(spec)  # type: ignore[arg-type]
-        for declarator in decl.children[1:]:
-            if not isinstance(declarator, Tree):
-                continue
-            name = declarator.children[0]
-            rest = declarator.children[1:]
-            is_array = type_array or any(
-                isinstance(c, Tree) and c.data == "array_specifier" for c in rest
-            )
-            init = [c for c in rest if not (isinstance(c, Tree) and c.data == "array_specifier")]
-            if init:
-                self.expr(init[0], state)  # the name's scope starts after its initialiser
+        view = VariableDeclaration(decl)
+        type_name, type_array = type_of_declaration(view.type.syntax)
+        for declarator in view.declarators:
+            name = declarator.name_token
+            is_array = type_array or declarator.array is not None
+            init = declarator.initializer
+            if init is not None:
+                self.expr(init, state)  # the name's scope starts after its initialiser
                 self.scopes[-1][str(name)] = None
                 if is_array:
                     self.known.drop(str(name))
                 else:
-                    self.known.store(str(name), init[0])
+                    self.known.store(str(name), init)
                 continue
             self.known.drop(str(name))
             width, fields = self.shape(type_name, is_array)
@@ -611,10 +623,12 @@ class _Analyzer:
             state[id(var)] = 0
 
     def jump(self, node: Tree, state: State) -> State | None:
-        word = node.children[0]
+        jump = JumpStatement(node)
+        word = jump.keyword
         if word == "return":
-            if len(node.children) > 1:
-                self.expr(node.children[1], state)
+            value = jump.value
+            if value is not None:
+                self.expr(value, state)
             assert self.flow is not None
             self.flow.exits.append(Exit(node, dict(state)))
         elif word in ("break", "continue"):
@@ -627,8 +641,7 @@ class _Analyzer:
         return None
 
     def for_loop(self, node: Tree, state: State) -> State | None:
-        init, body = node.children[0], node.children[-1]
-        cond, step = self.for_parts(node)
+        init, cond, step, body = for_parts(node)
         self.scopes.append({})
         after: State | None = self.statement(init, state)
         if after is None:
@@ -700,11 +713,6 @@ class _Analyzer:
         for name in names:
             self.known.drop(name)
 
-    def for_parts(self, node: Tree) -> tuple[Node | None, Node | None]:
-        """The condition and the step of a for loop; either may be absent."""
-        _, cond, step, _ = for_parts(node)
-        return cond, step
-
     def runs_once(self, init: Node, cond: Node) -> bool:
         """Whether a counted loop certainly runs its body: `for (int i = A; i < B; ...)`, with
         A and B int or float constants, const variables or anything else whose value ranges
@@ -712,8 +720,7 @@ class _Analyzer:
         start = _loop_start(init)
         if start is None or not (isinstance(cond, Tree) and cond.data == "binary"):
             return False
-        left, op, right = cond.children
-        op = str(op)
+        left, op, right = binary_parts(cond)
         if _is_variable(right, start[0]) and op in _FLIP:
             left, op, right = right, _FLIP[op], left
         if not _is_variable(left, start[0]) or op not in _FLIP:
@@ -729,18 +736,21 @@ class _Analyzer:
     def number(self, node: Node) -> tuple[float, float] | None:
         """The range of a loop bound: an int constant of this file, else the value ranges."""
         value = _int_value(node)
-        if value is None and isinstance(node, Tree) and node.data == "variable":
-            value = self.consts.get(str(node.children[0]))
+        name = variable_name(node) if value is None else None
+        if name is not None:
+            value = self.consts.get(name)
         if value is not None:
             return value, value
         return self.model.range(node) if self.model is not None else None
 
     def while_loop(self, node: Tree, state: State) -> State | None:
-        cond, body = node.children
+        loop = WhileStatement(node)
+        cond, body = loop.condition, loop.body
         self.scopes.append({})
-        if isinstance(cond, Tree) and cond.data == "condition_declaration":
-            self.expr(cond.children[-1], state)
-            self.scopes[-1][str(cond.children[1])] = None
+        declared = loop.declaration
+        if declared is not None:
+            self.expr(declared.initializer, state)
+            self.scopes[-1][declared.name] = None
             enter, leave = state, dict(state)
         else:
             # the first test, with the values set before the loop
@@ -763,7 +773,8 @@ class _Analyzer:
         return _join([leave, again, *target.breaks])
 
     def do_loop(self, node: Tree, state: State) -> State | None:
-        body, cond = node.children
+        loop = DoStatement(node)
+        body, cond = loop.body, loop.condition
         target = _Target(loop=True)
         self.targets.append(target)
         self.forget(node)
@@ -775,14 +786,15 @@ class _Analyzer:
         return _join([leave, *target.breaks])
 
     def switch(self, node: Tree, state: State) -> State | None:
-        self.expr(node.children[0], state)
+        switch = SwitchStatement(node)
+        self.expr(switch.selector, state)
         target = _Target(loop=False)
         self.targets.append(target)
         self.scopes.append({})
         current: State | None = None
         has_default = False
         mark = self.known.mark()
-        for item in node.children[1:]:
+        for item in switch.body:
             if isinstance(item, Tree) and item.data in ("case_label", "default_label"):
                 has_default = has_default or item.data == "default_label"
                 current = _join([current, state])  # entered from the switch, or fallen into
@@ -813,9 +825,9 @@ class _Analyzer:
         elif kind in ("variable", "field", "index"):
             self.read(node, state)
         elif kind == "assignment":
-            target, op, value = node.children
+            target, op, value = binary_parts(node)
             self.indices(target, state)
-            rest = _clearing(target, str(op), value)
+            rest = _clearing(target, op, value)
             if rest is not None:  # `O -= O`, `o = o*0. - d`: the old value does not matter
                 if not isinstance(rest, bool):
                     self.expr(rest, state)
@@ -826,11 +838,12 @@ class _Analyzer:
             self.expr(value, state)
             self.write(target, state)
         elif kind in ("prefix", "postfix"):
-            target = node.children[1] if kind == "prefix" else node.children[0]
+            target = operand(node)
             self.read(target, state)
             self.write(target, state)
         elif kind == "ternary":
-            cond, yes, no = node.children
+            ternary = Ternary(node)
+            cond, yes, no = ternary.condition, ternary.if_true, ternary.if_false
             on_true, on_false = self.condition(cond, state)
             a = dict(on_true) if on_true is not None else None
             b = dict(on_false) if on_false is not None else None
@@ -855,27 +868,27 @@ class _Analyzer:
         cannot be). Inside `a && b` being true, b ran; `a || b` false ran both; a comparison
         the value ranges decide leaves one side only. Mutates `state` (its first operand runs
         on every path); the true state may be `state` itself."""
-        if isinstance(node, Tree) and node.data == "unary" and str(node.children[0]) == "!":
-            no, yes = self.condition(node.children[1], state)
+        if isinstance(node, Tree) and node.data == "unary" and operator(node) == "!":
+            no, yes = self.condition(operand(node), state)
             return self.decided(node, yes, no)
         if not (isinstance(node, Tree) and node.data == "binary"
-                and str(node.children[1]) in ("&&", "||")):  # fmt: skip
+                and operator(node) in ("&&", "||")):  # fmt: skip
             self.expr(node, state)
             return self.decided(node, state, dict(state))
-        op = str(node.children[1])
+        op = operator(node)
         spine = [node]  # `a && b && c` parses ((a && b) && c): walk the left spine iteratively
-        first: Node = node.children[0]
+        first: Node = first_child(node)
         while (isinstance(first, Tree) and first.data == "binary"
-               and str(first.children[1]) == op):  # fmt: skip
+               and operator(first) == op):  # fmt: skip
             spine.append(first)
-            first = first.children[0]
-        operands = [first, *(link.children[2] for link in reversed(spine))]
+            first = first_child(first)
+        operands = [first, *(binary_parts(link)[2] for link in reversed(spine))]
         current: State | None = state
         others: list[State | None] = []  # the states that decide the chain early
-        for operand in operands:
+        for part in operands:
             if current is None:
                 break  # decided before this operand: it does not run
-            yes, no = self.condition(operand, current)
+            yes, no = self.condition(part, current)
             current, other = (yes, no) if op == "&&" else (no, yes)
             others.append(other)
         decided = _join(others)
@@ -904,8 +917,7 @@ class _Analyzer:
         iteration (the counter is the start) and for `==`/`!=` in the later ones (it is not)."""
         if not (self.counters and isinstance(node, Tree) and node.data == "binary"):
             return None
-        left, op, right = node.children
-        op = str(op)
+        left, op, right = binary_parts(node)
         for name, first, is_first in reversed(self.counters):
             if _is_variable(right, name) and op in _FLIP:
                 left, op, right = right, _FLIP[op], left
@@ -929,24 +941,26 @@ class _Analyzer:
         iteratively. The right side of && and || may not run, so its writes are dropped."""
         rights: list[tuple[Node, bool]] = []
         while isinstance(node, Tree) and node.data in ("binary", "sequence"):
-            maybe = node.data == "binary" and str(node.children[1]) in _SHORT_CIRCUIT
-            rights.append((node.children[-1], maybe))
-            node = node.children[0]
+            if node.data == "binary":
+                left, op, right = binary_parts(node)
+                rights.append((right, op in _SHORT_CIRCUIT))
+            else:
+                sequence = Sequence(node)
+                left = sequence.left
+                rights.append((sequence.right, False))
+            node = left
         self.expr(node, state)
         for right, maybe in reversed(rights):
             self.expr(right, dict(state) if maybe else state)
 
     def call(self, node: Tree, state: State) -> None:
-        callee = node.children[0]
-        args: list[Node] = []
-        if len(node.children) > 1 and isinstance(node.children[1], Tree):
-            args = list(node.children[1].children)
+        callee = Call(node).callee
+        args = call_arguments(node)
         if isinstance(callee, Tree) and callee.data == "field":
-            if str(callee.children[1]) == "length":
+            if field_name(callee) == "length":
                 return  # `a.length()` reads no element of `a`
             self.expr(callee, state)
-        is_name = isinstance(callee, Tree) and callee.data == "variable"
-        name = str(callee.children[0]) if is_name else ""  # type: ignore[union-attr]
+        name = variable_name(callee) or ""
         qualifiers = self.qualifiers(name, len(args))
         callee = self.summaries.get((name, len(args))) if name in self.signatures else None
         summary = None if callee is None else callee.inout_reads
@@ -993,10 +1007,11 @@ class _Analyzer:
         path: list[Tree] = []
         while isinstance(node, Tree) and node.data in ("field", "index"):
             path.append(node)
-            node = node.children[0]
-        if not (isinstance(node, Tree) and node.data == "variable"):
+            node = first_child(node)
+        name = variable_name(node)
+        if name is None:
             return None, None
-        var = self.lookup(str(node.children[0]))
+        var = self.lookup(name)
         if var is None:
             return None, None
         comps: tuple[int, ...] | None = tuple(range(var.width)) if var.width > 1 else None
@@ -1005,15 +1020,15 @@ class _Analyzer:
                 break
             if var.fields:
                 # a member, whatever is picked of it after (`s.pos.x` is part of `s.pos`)
-                member = str(step.children[1]) if step.data == "field" else ""
+                member = field_name(step) if step.data == "field" else ""
                 in_whole = len(comps) == var.width and member in var.fields
                 comps = (var.fields.index(member),) if in_whole else None
                 break
             if step.data == "field":
-                picked = swizzle(str(step.children[1]), len(comps))
+                picked = swizzle(field_name(step), len(comps))
                 comps = None if picked is None else tuple(comps[i] for i in picked)
             else:
-                index = _int_value(step.children[1])
+                index = _int_value(index_expression(step))
                 in_range = index is not None and 0 <= index < len(comps) and len(comps) > 1
                 comps = (comps[index],) if in_range else None  # type: ignore[index]
         return var, comps
@@ -1064,7 +1079,7 @@ class _Analyzer:
     def write(self, node: Node, state: State) -> None:
         root = _root(node)
         if root is not None:
-            self.known.drop(str(root.children[0]))
+            self.known.drop(variable_name(root))  # type: ignore[arg-type]
         var, comps = self.access(node)
         if var is not None and id(var) in state and var.kind in ("local", "out"):
             guards = tuple(self.guards[var.depth :])
@@ -1077,8 +1092,8 @@ class _Analyzer:
         """Evaluate the index expressions inside an lvalue (`a[i + 1].x`): they are reads."""
         while isinstance(node, Tree) and node.data in ("field", "index"):
             if node.data == "index":
-                self.expr(node.children[1], state)
-            node = node.children[0]
+                self.expr(index_expression(node), state)
+            node = first_child(node)
         if isinstance(node, Tree) and node.data not in ("variable",):
             self.expr(node, state)
 
@@ -1088,12 +1103,12 @@ def _compared(cond: Node) -> tuple[Node, ...]:
     `||`/`&&` of comparisons shares (`id == 1 || id == 2` -> id); none for anything else."""
     if not (isinstance(cond, Tree) and cond.data == "binary"):
         return ()
-    op = str(cond.children[1])
+    left, op, right = binary_parts(cond)
     if op in _COMPARISONS:
-        return cond.children[0], cond.children[2]
+        return left, right
     if op in ("||", "&&"):
-        left, right = _compared(cond.children[0]), _compared(cond.children[2])
-        return tuple(a for a in left if any(same_expression(a, b) for b in right))
+        lefts, rights = _compared(left), _compared(right)
+        return tuple(a for a in lefts if any(same_expression(a, b) for b in rights))
     return ()
 
 
@@ -1101,9 +1116,9 @@ def _equalities(cond: Node) -> bool:
     """Whether a condition is `==` tests joined by `||` (`id == 1 || id == 2`)."""
     if not (isinstance(cond, Tree) and cond.data == "binary"):
         return False
-    op = str(cond.children[1])
+    left, op, right = binary_parts(cond)
     if op == "||":
-        return _equalities(cond.children[0]) and _equalities(cond.children[2])
+        return _equalities(left) and _equalities(right)
     return op == "=="
 
 
@@ -1129,9 +1144,11 @@ def _case_run(items: list[Node], start: int) -> int:
     (and each c a literal or a name): a case analysis of ids when there are at least two."""
     conds: list[Node] = []
     for item in items[start:]:
-        if not (isinstance(item, Tree) and item.data == "if_statement" and len(item.children) == 2):
+        if not (isinstance(item, Tree) and item.data == "if_statement"):
             break
-        cond = item.children[0]
+        cond, _, otherwise = if_parts(item)
+        if otherwise is not None:
+            break
         if not (_compared(cond) and _equalities(cond)):
             break
         if conds and not _one_value([conds[0], cond]):
@@ -1141,7 +1158,7 @@ def _case_run(items: list[Node], start: int) -> int:
         return 0
     # the value must stay the same through the cases
     values = [side for side in _compared(conds[0]) if not _is_literal(side)]
-    roots = {str(r.children[0]) for r in map(_root, values) if r is not None}
+    roots = {variable_name(r) for r in map(_root, values) if r is not None}
     bodies = items[start : start + len(conds)]
     if any(_assigns(body, name) for body in bodies for name in roots):
         return 0
@@ -1151,13 +1168,13 @@ def _case_run(items: list[Node], start: int) -> int:
 def _root(node: Node) -> Tree | None:
     """The variable at the root of an lvalue chain, or None if it is not an lvalue."""
     while isinstance(node, Tree) and node.data in ("field", "index"):
-        node = node.children[0]
+        node = first_child(node)
     return node if isinstance(node, Tree) and node.data == "variable" else None
 
 
 def _is_zero(node: Node) -> bool:
     if isinstance(node, Tree) and node.data in ("float_literal", "int_literal"):
-        text = str(node.children[0]).rstrip("fFuU").lower()
+        text = token_text(node).rstrip("fFuU").lower()  # type: ignore[union-attr]
         try:
             return float(text) == 0.0 if not text.startswith("0x") else int(text, 16) == 0
         except ValueError:
@@ -1169,10 +1186,10 @@ def _cleared(expr: Node, target: Node) -> bool:
     """Whether `expr` is the target times zero or minus itself (`x*0.`, `0.*x`, `x - x`)."""
     if not (isinstance(expr, Tree) and expr.data == "binary"):
         return False
-    left, op, right = expr.children
-    if str(op) == "-":
+    left, op, right = binary_parts(expr)
+    if op == "-":
         return same_expression(left, target) and same_expression(right, target)
-    if str(op) == "*":
+    if op == "*":
         return (same_expression(left, target) and _is_zero(right)) or (
             _is_zero(left) and same_expression(right, target)
         )
@@ -1195,18 +1212,18 @@ def _clearing(target: Node, op: str, value: Node) -> Node | bool | None:
     if _cleared(value, target):
         return True
     if isinstance(value, Tree) and value.data == "binary":
-        left, op_token, right = value.children
-        if str(op_token) not in ("+", "-"):
+        left, plus_minus, right = binary_parts(value)
+        if plus_minus not in ("+", "-"):
             return None
         if _cleared(left, target):
             return right
-        if str(op_token) == "+" and _cleared(right, target):
+        if plus_minus == "+" and _cleared(right, target):
             return left
     return None
 
 
 def _is_true(node: Node) -> bool:
-    return isinstance(node, Tree) and node.data == "bool_literal" and node.children[0] == "true"
+    return isinstance(node, Tree) and node.data == "bool_literal" and token_text(node) == "true"
 
 
 _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}
@@ -1222,18 +1239,12 @@ def _written_names(node: Tree) -> frozenset[str]:
     names: set[str] = set()
     for kind in _WRITERS:
         for sub in walk_kind(node, kind):
-            if sub.data == "assignment":
-                targets = [sub.children[0]]
-            elif sub.data in ("prefix", "postfix"):
-                targets = [sub.children[1] if sub.data == "prefix" else sub.children[0]]
-            elif len(sub.children) > 1 and isinstance(sub.children[1], Tree):
-                targets = list(sub.children[1].children)
-            else:
-                continue
+            # a call may take its arguments as `out`
+            targets = call_arguments(sub) if sub.data == "call" else [assigned_target(sub)]
             for target in targets:
                 root = _root(target)
                 if root is not None:
-                    names.add(str(root.children[0]))
+                    names.add(variable_name(root))  # type: ignore[arg-type]
     return frozenset(names)
 
 
@@ -1247,12 +1258,10 @@ def _assigns(node: Node, name: str) -> bool:
     # loops' nesting.
     writers = (sub for kind in _WRITERS for sub in walk_kind(node, kind))
     for sub in writers:
-        if sub.data == "assignment" and _root(sub.children[0]) is not None:
-            targets = [sub.children[0]]
-        elif sub.data in ("prefix", "postfix"):
-            targets = [sub.children[1] if sub.data == "prefix" else sub.children[0]]
-        elif sub.data == "call" and len(sub.children) > 1 and isinstance(sub.children[1], Tree):
-            targets = list(sub.children[1].children)
+        if sub.data == "call":
+            targets = call_arguments(sub)
+        elif sub.data != "assignment" or _root(assigned_target(sub)) is not None:
+            targets = [assigned_target(sub)]
         else:
             continue
         if any(_is_variable(_root(t) or t, name) for t in targets):
@@ -1261,7 +1270,7 @@ def _assigns(node: Node, name: str) -> bool:
 
 
 def _is_variable(node: Node, name: str) -> bool:
-    return isinstance(node, Tree) and node.data == "variable" and str(node.children[0]) == name
+    return variable_name(node) == name
 
 
 def _loop_start(init: Node) -> tuple[str, Node] | None:
@@ -1269,16 +1278,18 @@ def _loop_start(init: Node) -> tuple[str, Node] | None:
     if not isinstance(init, Tree):
         return None
     if init.data == "declaration_statement":
-        decl = init.children[0]
-        single = isinstance(decl, Tree) and len(decl.children) == 2
-        if single and decl.data == "variable_declaration":  # type: ignore[union-attr]
-            declarator = decl.children[1]  # type: ignore[union-attr]
-            if isinstance(declarator, Tree) and len(declarator.children) == 2:
-                return str(declarator.children[0]), declarator.children[1]
+        decl = DeclarationStatement(init).variables
+        declarators = decl.declarators if decl is not None else []
+        if len(declarators) == 1:  # `int i = 0, j = 1;` has no one counter
+            (declarator,) = declarators
+            value = declarator.initializer
+            if value is not None and declarator.array is None:
+                return declarator.name, value
     if init.data == "expression_statement":
-        expr = init.children[0]
-        if isinstance(expr, Tree) and expr.data == "assignment" and expr.children[1] == "=":
-            target = expr.children[0]
-            if isinstance(target, Tree) and target.data == "variable":
-                return str(target.children[0]), expr.children[2]
+        expr = first_child(init)
+        if isinstance(expr, Tree) and expr.data == "assignment":
+            target, op, value = binary_parts(expr)
+            name = variable_name(target)
+            if op == "=" and name is not None:
+                return name, value
     return None

@@ -32,6 +32,17 @@ from collections.abc import Callable
 
 from lark import Token, Tree
 
+from glint.compiler.glsl.ast import (
+    Constructor,
+    binary_parts,
+    field_name,
+    first_child,
+    operand,
+    operator,
+    token_text,
+    variable_name,
+)
+
 from ..context import Node
 from .ranges import Interval, fract_range
 from .syntax import call_args, callee_name, int_value, names_in
@@ -111,13 +122,13 @@ class KnownValues:
         None when they do not decide it (or it reads none)."""
         if not (isinstance(cond, Tree) and cond.data == "binary"):
             return None
-        op = str(cond.children[1])
+        left, op, right = binary_parts(cond)
         if op not in _COMPARE or not self.values:
             return None
         self.memo: dict[str, Comps | None] = {}
         budget = [_BUDGET]
-        a = self.eval(cond.children[0], 0, budget)
-        b = self.eval(cond.children[2], 0, budget)
+        a = self.eval(left, 0, budget)
+        b = self.eval(right, 0, budget)
         if a is None or b is None or len(a) != 1 or len(b) != 1:
             return None
         x, y = a[0], b[0]
@@ -138,7 +149,7 @@ class KnownValues:
         if kind in ("float_literal", "int_literal"):
             return _literal(node)
         if kind == "variable":
-            name = str(node.children[0])
+            name = variable_name(node)
             if name not in self.memo:  # `r.x` and `r.y` evaluate r once
                 stored = self.value(name)
                 if stored is None:
@@ -149,11 +160,11 @@ class KnownValues:
             got = self.member(node, depth, budget)
             if got is not None:
                 return got
-        elif kind == "unary" and str(node.children[0]) == "-":
-            inner = self.eval(node.children[1], depth, budget)
+        elif kind == "unary" and operator(node) == "-":
+            inner = self.eval(operand(node), depth, budget)
             if inner is not None:
                 return tuple(-c for c in inner)
-        elif kind == "binary" and str(node.children[1]) in ("+", "-", "*"):
+        elif kind == "binary" and operator(node) in ("+", "-", "*"):
             got = self.arithmetic(node, depth, budget)
             if got is not None:
                 return got
@@ -165,9 +176,10 @@ class KnownValues:
 
     def member(self, node: Tree, depth: int, budget: list[int]) -> Comps | None:
         """`s.m` of a struct built by its constructor, or a swizzle of a vector."""
-        base, name = node.children[0], str(node.children[1])
-        if isinstance(base, Tree) and base.data == "variable":
-            stored = self.value(str(base.children[0]))
+        base, name = first_child(node), field_name(node)
+        base_name = variable_name(base)
+        if base_name is not None:
+            stored = self.value(base_name)
             if isinstance(stored, Tree) and stored.data == "constructor":
                 members = self.structs.get(_called(stored) or "")
                 args = call_args(stored)
@@ -184,16 +196,16 @@ class KnownValues:
         return None
 
     def arithmetic(self, node: Tree, depth: int, budget: list[int]) -> Comps | None:
-        left, op, right = node.children
+        left, op, right = binary_parts(node)
         a = self.eval(left, depth, budget)
         b = self.eval(right, depth, budget)
         if a is None or b is None or (len(a) != len(b) and 1 not in (len(a), len(b))):
             return None
         n = max(len(a), len(b))
         a, b = a * n if len(a) == 1 else a, b * n if len(b) == 1 else b
-        if str(op) == "+":
+        if op == "+":
             return tuple(x + y for x, y in zip(a, b, strict=True))
-        if str(op) == "-":
+        if op == "-":
             return tuple(x - y for x, y in zip(a, b, strict=True))
         if _same(left, right):  # x * x is never negative
             return tuple(x.square() for x in a)
@@ -240,13 +252,13 @@ def _called(node: Tree) -> str | None:
     """The function a call names, or the type a constructor builds (`vec2`, a struct)."""
     if node.data == "call":
         return callee_name(node)
-    spec = node.children[0]
-    head = spec.children[0] if isinstance(spec, Tree) and len(spec.children) == 1 else None
+    spec = Constructor(node).type
+    head = spec.head if spec.array is None else None  # `float[2](...)` builds an array
     return str(head) if isinstance(head, Token) else None
 
 
 def _literal(node: Tree) -> Comps | None:
-    text = str(node.children[0]).rstrip("fFuU")
+    text = token_text(node).rstrip("fFuU")  # type: ignore[union-attr]
     try:
         value = float(text) if node.data == "float_literal" else int_value(text)
     except ValueError:
@@ -259,12 +271,8 @@ def _literal(node: Tree) -> Comps | None:
 def _same(a: Node, b: Node) -> bool:
     """The same variable (or swizzle of one) on both sides: `r*r`, `dot(r, r)`."""
     while isinstance(a, Tree) and isinstance(b, Tree) and a.data == b.data == "field":
-        if str(a.children[1]) != str(b.children[1]):
+        if field_name(a) != field_name(b):
             return False
-        a, b = a.children[0], b.children[0]
-    return (
-        isinstance(a, Tree)
-        and isinstance(b, Tree)
-        and a.data == b.data == "variable"
-        and str(a.children[0]) == str(b.children[0])
-    )
+        a, b = first_child(a), first_child(b)
+    name = variable_name(a)
+    return name is not None and name == variable_name(b)

@@ -344,14 +344,10 @@ def test_the_evaluator_runs_a_for_loop_without_condition_or_update() -> None:
 NOT_YET_CONVERTED = {
     "lint/analysis/builtin_rules.py",
     "lint/analysis/expressions.py",
-    "lint/analysis/flow.py",
     "lint/analysis/invariance.py",
-    "lint/analysis/known_values.py",
     "lint/analysis/model.py",
     "lint/analysis/moments.py",
     "lint/analysis/statements.py",
-    "lint/rules/correctness/_data_flow.py",
-    "lint/rules/correctness/c105_missing_return.py",
     "lint/rules/numerical/_common.py",
     "lint/rules/numerical/n005_division_by_zero.py",
     "lint/rules/numerical/n011_division_by_zero_at_moment.py",
@@ -384,3 +380,17 @@ def test_only_the_modules_not_yet_converted_index_children() -> None:
 def test_ast_is_the_front_end_module() -> None:
     assert ast.__name__ == "glint.compiler.glsl.ast"
     assert Declarator.cast(_in_main("float x;", "declarator")) is not None
+
+
+# --- accessors for the data-flow analysis --------------------------------------------------------
+
+
+def test_data_flow_accessors() -> None:
+    targets = [_in_main(s, k) for s, k in (("x.y += 1.0;", "assignment"), ("++i;", "prefix"),
+                                           ("a[k]--;", "postfix"))]  # fmt: skip
+    assert [_text(ast.assigned_target(n)) for n in targets] == ["x y", "i", "a k"]
+    assert ast.field_name(_in_main("y = s.xyz;", "field")) == "xyz"
+    assert _text(ast.index_expression(_in_main("y = a[i + 1];", "index"))) == "i + 1"
+    cond, then, other = ast.if_parts(_in_main("if (a) x = 1.0; else x = 2.0;", "if_statement"))
+    assert (_text(cond), _text(then), _text(other)) == ("a", "x = 1.0", "x = 2.0")
+    assert ast.if_parts(_in_main("if (a) x = 1.0;", "if_statement"))[2] is None

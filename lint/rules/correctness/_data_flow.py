@@ -3,7 +3,7 @@ variable gathered into one finding."""
 
 from __future__ import annotations
 
-from lark import Tree
+from glint.compiler.glsl.ast import FunctionDefinition, assigned_target
 
 from ...analysis.flow import FunctionFlow, Read, Var
 from ...analysis.syntax import call_args, root_variable
@@ -14,10 +14,9 @@ def main_colour(flow: FunctionFlow) -> Var | None:
     """mainImage's `out` colour: its first parameter, when that is an `out`."""
     if flow.name != "mainImage" or not flow.outs:
         return None
-    params = flow.definition.children[0].children  # type: ignore[union-attr]
-    first = params[2].children[0] if len(params) > 2 else None  # type: ignore[union-attr]
+    params = FunctionDefinition(flow.definition).prototype.parameters
     out = flow.outs[0]
-    return out if isinstance(first, Tree) and out.token in first.children else None
+    return out if params and params[0].name_token == out.token else None
 
 
 def by_variable(reads: list[Read]) -> dict[int, list[Read]]:
@@ -36,10 +35,8 @@ def write_lines(ctx: LintContext, flow: FunctionFlow, var: Var) -> list[int]:
     for node in walk_kind(flow.definition, "assignment", "prefix", "postfix", "call"):
         if node.meta.empty or node.meta.start_pos < start:
             continue
-        if node.data == "call":
-            targets = call_args(node)
-        else:
-            targets = [node.children[1] if node.data == "prefix" else node.children[0]]
+        targets = call_args(node) if node.data == "call" else [assigned_target(node)]
+
         if any(root_variable(t) == var.name for t in targets):
             lines.add(ctx.span(node)[0])
     return sorted(lines)

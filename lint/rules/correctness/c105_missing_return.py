@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import CompoundStatement, FunctionDefinition
+
 from ...analysis.flow import function_flows
 from ...analysis.syntax import call_name
 from ...context import LintContext, walk_kind
@@ -63,9 +65,12 @@ class MissingReturn(Rule):
         for flow in flows:
             if flow.name not in called or not any(e.node is None for e in flow.exits):
                 continue
-            name = flow.definition.children[0].children[1]  # type: ignore[union-attr]
-            body = flow.definition.children[1]
-            last = body.children[-1] if isinstance(body, Tree) and body.children else None
+            definition = FunctionDefinition(flow.definition)
+            name = definition.prototype.name_token
+            body = CompoundStatement.cast(definition.body)
+            statements = body.statements if body is not None else []
+            last = statements[-1] if statements else None
+
             if isinstance(last, Tree) and last.data in _LOOPS:
                 line = ctx.span(last)[0]
                 how = f"when the {_LOOPS[last.data]} loop on line {line} finishes without returning"
