@@ -1032,6 +1032,53 @@ def first_child(node: Tree) -> Node:
     return node.children[0]
 
 
+def leaf_text(node: Tree) -> str:
+    """The text of the one token of a variable or literal node, where the caller knows it is
+    one (`token_text` checks)."""
+    return str(node.children[0])
+
+
+def field_parts(node: Tree) -> tuple[Node, str]:
+    """(base, name) of a field node: `v.xy` -> (v, "xy")."""
+    base, name = node.children
+    return base, str(name)
+
+
+def index_parts(node: Tree) -> tuple[Node, Node]:
+    """(base, index) of an index node: `a[i]` -> (a, i)."""
+    base, index = node.children
+    return base, index
+
+
+def ternary_parts(node: Tree) -> tuple[Node, Node, Node]:
+    """(condition, if_true, if_false) of a ternary node."""
+    condition, if_true, if_false = node.children
+    return condition, if_true, if_false
+
+
+def if_parts(node: Tree) -> tuple[Node, Node, Node | None]:
+    """(condition, then_branch, else_branch or None) of an if statement."""
+    kids = node.children
+    return kids[0], kids[1], kids[2] if len(kids) > 2 else None
+
+
+def jump_parts(node: Tree) -> tuple[str, Node | None]:
+    """(keyword, returned expression or None) of a jump statement."""
+    kids = node.children
+    return str(kids[0]), kids[1] if len(kids) > 1 else None
+
+
+def declarators(node: Tree) -> list[Tree]:
+    """The declarator nodes of a variable declaration (none for a bare struct)."""
+    return node.children[1:]  # type: ignore[return-value]
+
+
+def definition_parts(node: Tree) -> tuple[Tree, Tree]:
+    """(prototype, body) of a function definition."""
+    prototype, body = node.children
+    return prototype, body  # type: ignore[return-value]
+
+
 def declarator_initializer(node: Tree) -> Node | None:
     """The initializer of a declarator, None when it has none."""
     kids = node.children
