@@ -368,7 +368,6 @@ def test_the_evaluator_runs_a_for_loop_without_condition_or_update() -> None:
 NOT_YET_CONVERTED = {
     "lint/analysis/flow.py",
     "lint/analysis/invariance.py",
-    "lint/analysis/moments.py",
     "lint/rules/correctness/_data_flow.py",
     "lint/rules/correctness/c105_missing_return.py",
     "lint/rules/numerical/_common.py",
