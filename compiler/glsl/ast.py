@@ -1106,6 +1106,24 @@ def for_parts(node: Tree) -> tuple[Tree, Node | None, Node | None, Node]:
     return init, None, kids[1], body  # type: ignore[return-value]
 
 
+def loop_condition(node: Tree) -> Node | None:
+    """The condition of a for, while or do statement: None for a for without one; a while's
+    may be a condition_declaration."""
+    if node.data == "for_statement":
+        return for_parts(node)[1]
+    kids = node.children
+    return kids[0] if node.data == "while_statement" else kids[1]
+
+
+def loop_parts(node: Tree) -> list[Node]:
+    """The parts of a for, while or do statement that run on every pass, in source order: the
+    condition, the update and the body that are there (a for's init runs once)."""
+    if node.data == "for_statement":
+        _, condition, update, body = for_parts(node)
+        return [p for p in (condition, update, body) if p is not None]
+    return list(node.children)
+
+
 def int_value(text: str) -> int | None:
     """The value of an int literal's text (decimal, octal, hex, `u` suffix)."""
     text = text.rstrip("uU")
