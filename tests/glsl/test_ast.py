@@ -388,10 +388,6 @@ NOT_YET_CONVERTED = {
     "lint/analysis/flow.py",
     "lint/rules/correctness/_data_flow.py",
     "lint/rules/correctness/c105_missing_return.py",
-    "lint/rules/performance/_common.py",
-    "lint/rules/performance/pf004_invariant_expensive_call.py",
-    "lint/rules/performance/pf002_loop_invariant_work.py",
-    "lint/rules/performance/pf003_redundant_normalize.py",
     "lint/rules/portability/p008_uniform_not_provided.py",
 }
 
