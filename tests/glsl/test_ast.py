@@ -388,7 +388,6 @@ NOT_YET_CONVERTED = {
     "lint/analysis/flow.py",
     "lint/rules/correctness/_data_flow.py",
     "lint/rules/correctness/c105_missing_return.py",
-    "lint/rules/portability/p008_uniform_not_provided.py",
 }
 
 
