@@ -1032,6 +1032,53 @@ def first_child(node: Tree) -> Node:
     return node.children[0]
 
 
+def leaf_text(node: Tree) -> str:
+    """The text of the one token of a variable or literal node, where the caller knows it is
+    one (`token_text` checks)."""
+    return str(node.children[0])
+
+
+def field_parts(node: Tree) -> tuple[Node, str]:
+    """(base, name) of a field node: `v.xy` -> (v, "xy")."""
+    base, name = node.children
+    return base, str(name)
+
+
+def index_parts(node: Tree) -> tuple[Node, Node]:
+    """(base, index) of an index node: `a[i]` -> (a, i)."""
+    base, index = node.children
+    return base, index
+
+
+def ternary_parts(node: Tree) -> tuple[Node, Node, Node]:
+    """(condition, if_true, if_false) of a ternary node."""
+    condition, if_true, if_false = node.children
+    return condition, if_true, if_false
+
+
+def if_parts(node: Tree) -> tuple[Node, Node, Node | None]:
+    """(condition, then_branch, else_branch or None) of an if statement."""
+    kids = node.children
+    return kids[0], kids[1], kids[2] if len(kids) > 2 else None
+
+
+def jump_parts(node: Tree) -> tuple[str, Node | None]:
+    """(keyword, returned expression or None) of a jump statement."""
+    kids = node.children
+    return str(kids[0]), kids[1] if len(kids) > 1 else None
+
+
+def declarators(node: Tree) -> list[Tree]:
+    """The declarator nodes of a variable declaration (none for a bare struct)."""
+    return node.children[1:]  # type: ignore[return-value]
+
+
+def definition_parts(node: Tree) -> tuple[Tree, Tree]:
+    """(prototype, body) of a function definition."""
+    prototype, body = node.children
+    return prototype, body  # type: ignore[return-value]
+
+
 def declarator_initializer(node: Tree) -> Node | None:
     """The initializer of a declarator, None when it has none."""
     kids = node.children
@@ -1057,6 +1104,24 @@ def for_parts(node: Tree) -> tuple[Tree, Node | None, Node | None, Node]:
     if parts[0]:
         return init, kids[1], None, body  # type: ignore[return-value]
     return init, None, kids[1], body  # type: ignore[return-value]
+
+
+def loop_condition(node: Tree) -> Node | None:
+    """The condition of a for, while or do statement: None for a for without one; a while's
+    may be a condition_declaration."""
+    if node.data == "for_statement":
+        return for_parts(node)[1]
+    kids = node.children
+    return kids[0] if node.data == "while_statement" else kids[1]
+
+
+def loop_parts(node: Tree) -> list[Node]:
+    """The parts of a for, while or do statement that run on every pass, in source order: the
+    condition, the update and the body that are there (a for's init runs once)."""
+    if node.data == "for_statement":
+        _, condition, update, body = for_parts(node)
+        return [p for p in (condition, update, body) if p is not None]
+    return list(node.children)
 
 
 def int_value(text: str) -> int | None:
@@ -1091,16 +1156,10 @@ def assigned_target(node: Tree) -> Node:
 
 
 def field_name(node: Tree) -> str:
-    """`xyz` of a field node `v.xyz`."""
-    return str(node.children[1])
+    """`xyz` of a field node `v.xyz` (field_parts' second half)."""
+    return field_parts(node)[1]
 
 
 def index_expression(node: Tree) -> Node:
-    """`i + 1` of an index node `a[i + 1]`."""
-    return node.children[1]
-
-
-def if_parts(node: Tree) -> tuple[Node, Node, Node | None]:
-    """(condition, then branch, else branch or None) of an if statement."""
-    kids = node.children
-    return kids[0], kids[1], kids[2] if len(kids) > 2 else None
+    """`i + 1` of an index node `a[i + 1]` (index_parts' second half)."""
+    return index_parts(node)[1]

@@ -9,6 +9,7 @@ import math
 from collections.abc import Callable, Iterable
 
 from glint.compiler.glsl import types as T
+from glint.compiler.glsl.ast import variable_name
 from glint.compiler.glsl.keywords import words
 
 from ..context import Node
@@ -38,7 +39,7 @@ from .ranges import (
     step_range,
     tan_range,
 )
-from .syntax import is_tree, same_expression
+from .syntax import same_expression
 from .values import Comps, Value
 
 # --- builtin ranges: a table of interval functions, by name and arity ------------------------
@@ -273,7 +274,7 @@ def cross_facts(
     origin = "cross"
     if any(all(c.is_point for c in v.parts(3)) or v.origin == "axis" for v in values):
         origin = "cross-axis"
-    keys = [str(n.children[0]) if is_tree(n, "variable") else None for n in nodes]  # type: ignore
+    keys = [variable_name(n) for n in nodes]
     ortho = tuple((k, v) for k, v in zip(keys, values, strict=True) if k is not None)
     for (x, _kx), (y, ky) in (((values[0], keys[0]), (values[1], keys[1])),
                              ((values[1], keys[1]), (values[0], keys[0]))):  # fmt: skip

@@ -13,6 +13,17 @@ from typing import Protocol
 from lark import Tree
 
 from glint.compiler.glsl import types as T
+from glint.compiler.glsl.ast import (
+    binary_parts,
+    field_parts,
+    first_child,
+    index_parts,
+    leaf_text,
+    operand,
+    operator,
+    ternary_parts,
+    variable_name,
+)
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
@@ -111,47 +122,46 @@ class Evaluator:
     # --- leaves ----------------------------------------------------------------------------
 
     def _float_literal(self, node: Tree) -> Value:
-        text = str(node.children[0]).rstrip("fF")
+        text = leaf_text(node).rstrip("fF")
         x = float(text)
         return Value("float", Interval.point(x), zero=x == 0)
 
     def _int_literal(self, node: Tree) -> Value:
-        text = str(node.children[0])
+        text = leaf_text(node)
         n = int_value(text)
         ty = "uint" if text[-1] in "uU" else "int"
         return Value(ty, Interval.point(float(n)) if n is not None else UNKNOWN, zero=n == 0)
 
     def _bool_literal(self, node: Tree) -> Value:
-        return Value("bool", Interval.point(1.0 if str(node.children[0]) == "true" else 0.0))
+        return Value("bool", Interval.point(1.0 if leaf_text(node) == "true" else 0.0))
 
     def _variable(self, node: Tree) -> Value:
-        return self.env.get(str(node.children[0])) or Value()
+        return self.env.get(leaf_text(node)) or Value()
 
     # --- operators -------------------------------------------------------------------------
 
     def _unary(self, node: Tree) -> Value:
-        op, operand = str(node.children[0]), self._sub(node.children[1])
+        op, value = operator(node), self._sub(operand(node))
         if op == "-":
-            comps = tuple(-c for c in operand.comps) if operand.comps is not None else None
-            wit = operand.wit
+            comps = tuple(-c for c in value.comps) if value.comps is not None else None
+            wit = value.wit
             if wit is not None:
                 wit = W.Witness(tuple(map(W.negate, wit.parts)), wit.why)
-            return operand.but(range=-operand.range, comps=comps, wit=wit)
+            return value.but(range=-value.range, comps=comps, wit=wit)
         if op == "+":
-            return operand
+            return value
         if op == "!":
             return Value("bool", BOOL)
-        return Value(operand.type)
+        return Value(value.type)
 
     def _prefix(self, node: Tree) -> Value:
-        return Value(self._sub(node.children[1]).type)
+        return Value(self._sub(operand(node)).type)
 
     def _postfix(self, node: Tree) -> Value:
-        return Value(self._sub(node.children[0]).type)
+        return Value(self._sub(operand(node)).type)
 
     def _binary(self, node: Tree) -> Value:
-        left, op_token, right = node.children
-        op = str(op_token)
+        left, op, right = binary_parts(node)
         a, b = self._sub(left), self._sub(right)
         ty = T.binary(op, a.type, b.type)
         if ty == "bool":
@@ -212,9 +222,9 @@ class Evaluator:
 
     def _square_root_node(self, node: Node) -> Node | None:
         """x for `x * x`."""
-        if not (is_tree(node, "binary") and str(node.children[1]) == "*"):  # type: ignore
+        if not (is_tree(node, "binary") and operator(node) == "*"):  # type: ignore[arg-type]
             return None
-        return node.children[0] if self.model.same_operands(node) else None  # type: ignore
+        return first_child(node) if self.model.same_operands(node) else None  # type: ignore
 
     def _polynomial(
         self, node: Tree, ty: str | None, rng: Interval, comps: Comps
@@ -238,7 +248,7 @@ class Evaluator:
         return rng, comps
 
     def _ternary(self, node: Tree) -> Value:
-        cond, then, other = node.children
+        cond, then, other = ternary_parts(node)
         if self.memo is not None:
             a, b = self._sub(then), self._sub(other)
         else:
@@ -248,8 +258,7 @@ class Evaluator:
         return value if value.type else value.but(type=a.type or b.type)
 
     def _assignment(self, node: Tree) -> Value:
-        target, op_token, rhs = node.children
-        op = str(op_token)
+        target, op, rhs = binary_parts(node)
         old, new = self._sub(target), self._sub(rhs)
         if op == "=":
             return new.but(type=old.type or new.type)
@@ -264,14 +273,16 @@ class Evaluator:
         return Value(old.type)
 
     def _sequence(self, node: Tree) -> Value:
-        for child in node.children[:-1]:
+        *before, last = node.children  # `a, b, c`: evaluated in order, the last one's value
+        for child in before:
             self._sub(child)
-        return self._sub(node.children[-1])
+        return self._sub(last)
 
     # --- access ----------------------------------------------------------------------------
 
     def _field(self, node: Tree) -> Value:
-        base, name = self._sub(node.children[0]), str(node.children[1])
+        base_node, name = field_parts(node)
+        base = self._sub(base_node)
         swizzled = T.swizzle(base.type, name)
         if swizzled is not None:
             unit = base.unit and len(name) == T.size(base.type) and len(set(name)) == len(name)
@@ -294,8 +305,9 @@ class Evaluator:
         return Value(member)
 
     def _index(self, node: Tree) -> Value:
-        base = self._sub(node.children[0])
-        index = self._sub(node.children[1]).range
+        base_node, index_node = index_parts(node)
+        base = self._sub(base_node)
+        index = self._sub(index_node).range
         element = T.element(base.type)
         # a struct array element's range says nothing; a vector's component is in its hull
         known = bool(T.components(element) or T.matrix_shape(element))
@@ -312,7 +324,7 @@ class Evaluator:
     # --- calls and constructors ------------------------------------------------------------
 
     def _constructor(self, node: Tree) -> Value:
-        ty = spec_text(node.children[0])  # type: ignore[arg-type]
+        ty = spec_text(first_child(node))  # type: ignore[arg-type]  # the type_specifier
         args = [self._sub(a) for a in call_args(node)]
         if not args:
             return Value(ty)
@@ -346,11 +358,11 @@ class Evaluator:
         return False
 
     def _call(self, node: Tree) -> Value:
-        head = node.children[0]
+        head = first_child(node)  # the callee
         args = call_args(node)
         values = [self._sub(a) for a in args]
-        if is_tree(head, "field") and str(head.children[1]) == "length":  # type: ignore
-            base = self._sub(head.children[0])  # type: ignore[union-attr]
+        if is_tree(head, "field") and field_parts(head)[1] == "length":  # type: ignore[arg-type]
+            base = self._sub(first_child(head))  # type: ignore[arg-type]
             n = T.size(base.type)
             return Value("int", Interval.point(float(n)) if n > 1 else NONNEG)
         name = callee_name(node)
@@ -457,19 +469,19 @@ def _poly(n: Node, atoms: list[Node], budget: list[int]) -> list[float] | None:
     if budget[0] < 0 or not isinstance(n, Tree):
         return None
     if n.data in ("float_literal", "int_literal"):
-        text = str(n.children[0]).rstrip("fFuU")
+        text = leaf_text(n).rstrip("fFuU")
         try:
             return [float(text) if n.data == "float_literal" else float(int_value(text) or 0)]
         except ValueError:
             return None
-    if n.data == "unary" and str(n.children[0]) in "+-":
-        inner = _poly(n.children[1], atoms, budget)
+    if n.data == "unary" and operator(n) in "+-":
+        inner = _poly(operand(n), atoms, budget)
         if inner is None:
             return None
-        return inner if str(n.children[0]) == "+" else [-c for c in inner]
-    if n.data == "binary" and str(n.children[1]) in ("+", "-", "*", "/"):
-        op = str(n.children[1])
-        a, b = _poly(n.children[0], atoms, budget), _poly(n.children[2], atoms, budget)
+        return inner if operator(n) == "+" else [-c for c in inner]
+    if n.data == "binary" and operator(n) in ("+", "-", "*", "/"):
+        left, op, right = binary_parts(n)
+        a, b = _poly(left, atoms, budget), _poly(right, atoms, budget)
         if a is None or b is None:
             return None
         if op == "/":
@@ -528,7 +540,7 @@ def _trig_axis(ty: str, nodes: list[Node]) -> bool:
     trig = {}
     for n in nodes:
         if is_tree(n, "float_literal", "int_literal"):
-            text = str(n.children[0]).rstrip("fF")  # type: ignore[union-attr]
+            text = leaf_text(n).rstrip("fF")  # type: ignore[arg-type]
             try:
                 if float(text) != 0:
                     return False
@@ -623,10 +635,10 @@ def _is_rotation(ty: str, args: list[Value], nodes: list[Node]) -> bool:
             return False
         if {origins[0], origins[1]} != {"sin", "cos"}:
             return False
-        negated = [is_tree(n, "unary") and str(n.children[0]) == "-" for n in nodes]  # type: ignore
+        negated = [is_tree(n, "unary") and operator(n) == "-" for n in nodes]  # type: ignore
         return negated in ([False, False, True, False], [False, True, False, False])
     if ty == "mat3" and len(args) == 3 and all(a.unit and a.type == "vec3" for a in args):
-        names = [str(n.children[0]) if is_tree(n, "variable") else None for n in nodes]  # type: ignore
+        names = [variable_name(n) for n in nodes]
         for i in range(3):
             for j in range(i + 1, 3):
                 if not (_orthogonal(args[i], names[j], args[j])

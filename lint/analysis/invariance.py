@@ -17,6 +17,21 @@ from dataclasses import dataclass, field
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    ConditionDeclaration,
+    Declarator,
+    ForStatement,
+    SwitchStatement,
+    binary_parts,
+    declarator_initializer,
+    if_parts,
+    jump_parts,
+    loop_condition,
+    loop_parts,
+    operand,
+    ternary_parts,
+    variable_name,
+)
 from glint.compiler.glsl.types import CONSTRUCTIBLE
 
 from ..context import LintContext, Node, walk
@@ -137,15 +152,13 @@ class Program:
                 elif name is not None and name[:1].islower() and name not in CONSTRUCTIBLE:
                     total += times * (_builtin_cost(name) if _is_builtin(name)
                                       else _UNKNOWN_CALL_COST)  # fmt: skip
-                stack += [(c, times) for c in item.children[1:]]
+                stack += [(c, times) for c in call_args(item)]
                 continue
             if kind in LOOPS:
                 trips = self.trips(item, fn) if fn is not None else UNKNOWN_TRIPS  # type: ignore[operator]
-                parts = item.children
                 if kind == "for_statement":
-                    stack.append((parts[0], times))
-                    parts = parts[1:]
-                stack += [(c, times * max(1, trips)) for c in parts]
+                    stack.append((ForStatement(item).init, times))  # runs once
+                stack += [(c, times * max(1, trips)) for c in loop_parts(item)]
                 continue
             if kind in ("binary", "unary", "prefix", "postfix", "assignment", "ternary"):
                 total += times
@@ -249,24 +262,24 @@ def flow_of(prog: Program, body: Tree) -> Flow:
             continue
         kind = item.data
         if kind in ("if_statement", "switch_statement", "ternary"):
-            g = guard(item, prog.reads(item.children[0]), ctl)
+            condition, branches = _branches(item)
+            g = guard(item, prog.reads(condition), ctl)
             inner = ifs + (g,) if kind == "if_statement" else ifs
-            stack += [(c, g, loop, inner) for c in reversed(item.children[1:])]
-            stack.append((item.children[0], ctl, loop, ifs))
+            stack += [(c, g, loop, inner) for c in reversed(branches)]
+            stack.append((condition, ctl, loop, ifs))
             continue
         if kind in LOOPS:
-            cond = {"for_statement": 1, "while_statement": 0, "do_statement": 1}[kind]
-            g = guard(item, prog.reads(item.children[cond]), ctl)
+            condition = loop_condition(item)
+            g = guard(item, prog.reads(condition) if condition is not None else set(), ctl)
             loop_guard[id(item)] = g
             loop_write[g] = len(writes) - 1
-            parts = list(item.children)
-            first = [parts.pop(0)] if kind == "for_statement" else []
-            stack += [(c, g, g, ()) for c in reversed(parts)]
-            stack += [(c, ctl, loop, ifs) for c in first]
+            stack += [(c, g, g, ()) for c in reversed(loop_parts(item))]
+            if kind == "for_statement":
+                stack.append((ForStatement(item).init, ctl, loop, ifs))
             continue
-        if kind == "jump_statement" and str(item.children[0]) in ("return", "discard"):
+        if kind == "jump_statement" and jump_parts(item)[0] in ("return", "discard"):
             exits.append(item.meta.start_pos)
-        elif kind == "jump_statement" and str(item.children[0]) in ("break", "continue"):
+        elif kind == "jump_statement" and jump_parts(item)[0] in ("break", "continue"):
             if loop and ifs:  # the loop's passes depend on the conditions of this exit
                 index = loop_write[loop]
                 old = writes[index]
@@ -275,24 +288,24 @@ def flow_of(prog: Program, body: Tree) -> Flow:
         pos = item.meta.start_pos if not item.meta.empty else 0
         guard_set = frozenset({ctl}) if ctl else frozenset()
         if kind == "declarator":
-            init = item.children[-1] if len(item.children) > 1 else None
+            init = declarator_initializer(item)
             reads = prog.reads(init) if isinstance(init, Tree) else set()
-            writes.append(Write(str(item.children[0]), frozenset(reads) | guard_set, pos, True))
+            writes.append(Write(Declarator(item).name, frozenset(reads) | guard_set, pos, True))
         elif kind == "condition_declaration":
-            reads = prog.reads(item.children[-1])
-            writes.append(Write(str(item.children[1]), frozenset(reads) | guard_set, pos, True))
+            declared = ConditionDeclaration(item)
+            reads = prog.reads(declared.initializer)
+            writes.append(Write(declared.name, frozenset(reads) | guard_set, pos, True))
         elif kind == "assignment":
-            target = root_var(item.children[0])
+            lvalue, op, value = binary_parts(item)
+            target = root_var(lvalue)
             if target:
-                reads = prog.reads(item.children[2]) | (names_in(item.children[0]) - {target})
-                partial = not (isinstance(item.children[0], Tree)
-                               and item.children[0].data == "variable")  # fmt: skip
-                if str(item.children[1]) != "=" or partial:
+                reads = prog.reads(value) | (names_in(lvalue) - {target})
+                partial = variable_name(lvalue) is None  # a component or an element
+                if op != "=" or partial:
                     reads.add(target)
                 writes.append(Write(target, frozenset(reads) | guard_set, pos))
         elif kind in ("prefix", "postfix"):
-            operand = item.children[1] if kind == "prefix" else item.children[0]
-            target = root_var(operand)
+            target = root_var(operand(item))
             if target:
                 writes.append(Write(target, frozenset({target}) | guard_set, pos))
         elif kind == "call" and (name := call_name(item)) in prog.defined:
@@ -309,6 +322,18 @@ def flow_of(prog: Program, body: Tree) -> Flow:
     ordered = [writes[i] for i in order]
     call_writes.sort(key=lambda item: item[0])
     return Flow(ordered, [w.pos for w in ordered], call_writes, loop_guard, sorted(exits))
+
+
+def _branches(node: Tree) -> tuple[Node, list[Node]]:
+    """(condition, the parts it chooses between) of an if, a switch or a ternary."""
+    if node.data == "if_statement":
+        condition, then, other = if_parts(node)
+        return condition, [then] if other is None else [then, other]
+    if node.data == "ternary":
+        condition, if_true, if_false = ternary_parts(node)
+        return condition, [if_true, if_false]
+    switch = SwitchStatement(node)
+    return switch.selector, switch.body
 
 
 def varying(seed: Iterable[str], writes: list[Write]) -> set[str]:
@@ -336,7 +361,7 @@ def varying(seed: Iterable[str], writes: list[Write]) -> set[str]:
 
 def region_parts(loop: Tree) -> list[Node]:
     """The parts of a loop that run on every pass: all but a for's init."""
-    return list(loop.children[1:] if loop.data == "for_statement" else loop.children)
+    return loop_parts(loop)
 
 
 def declared_in(node: Node) -> set[str]:
@@ -344,7 +369,7 @@ def declared_in(node: Node) -> set[str]:
     found: set[str] = set()
     for sub in walk(node):
         if sub.data == "declarator":
-            found.add(str(sub.children[0]))
+            found.add(Declarator(sub).name)
         elif sub.data == "condition_declaration":
-            found.add(str(sub.children[1]))
+            found.add(ConditionDeclaration(sub).name)
     return found

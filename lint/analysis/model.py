@@ -26,6 +26,17 @@ from dataclasses import dataclass, field
 from lark import Tree
 
 from glint.compiler.glsl import types as T
+from glint.compiler.glsl.ast import (
+    FunctionDefinition,
+    binary_parts,
+    definition_parts,
+    field_parts,
+    leaf_text,
+    operand,
+    operator,
+    ternary_parts,
+    variable_name,
+)
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 from glint.compiler.target.shadertoy import shadertoy_types
 
@@ -172,7 +183,7 @@ class Model:
         # shade() and passed on to a visibility term needs two). The last round only reads.
         called = {callee_name(c) for c in self._nodes if c.data == "call"}
         deep = sum(1 for n in self.tree.children if is_tree(n, "function_definition")
-                   and str(n.children[0].children[1]) in called) > 1  # type: ignore  # fmt: skip
+                   and FunctionDefinition(n).name in called) > 1  # type: ignore  # fmt: skip
         rounds = _ROUNDS if deep else 2
         for rnd in range(rounds):
             self._globals = Scopes([_shadertoy_values(self._channels)])
@@ -244,7 +255,7 @@ class Model:
         self.functions.setdefault(name, []).append(fn)
         self._calls = []
         flow = ForwardPass(self, fn)
-        flow.statement(node.children[1], scopes)
+        flow.statement(definition_parts(node)[1], scopes)  # the body
         fn.result = flow.result()
         self._analysed[id(node)] = _Analysed(inputs, fn, self._calls, self._collecting)
 
@@ -303,9 +314,8 @@ class Model:
         """Whether a binary node's operands are the same expression (syntax.same_expression)."""
         same = self._same_operands.get(id(node))
         if same is None:
-            same = self._same_operands[id(node)] = same_expression(
-                node.children[0], node.children[2]
-            )
+            left, _, right = binary_parts(node)
+            same = self._same_operands[id(node)] = same_expression(left, right)
         return same
 
     # --- remembering where each expression is evaluated ------------------------------------
@@ -369,12 +379,11 @@ class Model:
     def refine(self, env: Env, cond: Node, truth: bool) -> Env:
         """The environment where `cond` is `truth`: comparisons of a scalar variable with
         anything narrow that variable."""
-        if is_tree(cond, "unary") and str(cond.children[0]) == "!":  # type: ignore[union-attr]
-            return self.refine(env, cond.children[1], not truth)  # type: ignore[union-attr]
+        if is_tree(cond, "unary") and operator(cond) == "!":  # type: ignore[arg-type]
+            return self.refine(env, operand(cond), not truth)  # type: ignore[arg-type]
         if not is_tree(cond, "binary"):
             return env
-        left, op_token, right = cond.children  # type: ignore[union-attr]
-        op = str(op_token)
+        left, op, right = binary_parts(cond)  # type: ignore[arg-type]
         if (op == "&&" and truth) or (op == "||" and not truth):
             return self.refine(self.refine(env, left, truth), right, truth)
         if op not in _COMPARE:
@@ -387,15 +396,16 @@ class Model:
     def _bound(self, env: Env, target: Node, op: str, other: Node) -> Env:
         """Narrow a scalar variable `x`, or one component `v.y` of a vector variable."""
         component, target_field = None, ""
-        if is_tree(target, "field") and is_tree(target.children[0], "variable"):  # type: ignore
-            letter = str(target.children[1])  # type: ignore[union-attr]
-            if len(letter) != 1:
-                return env
-            component, target = swizzle_index(letter), target.children[0]  # type: ignore
-            target_field = letter
-        if not is_tree(target, "variable"):
+        if is_tree(target, "field"):
+            base, letter = field_parts(target)  # type: ignore[arg-type]
+            if variable_name(base) is not None:
+                if len(letter) != 1:
+                    return env
+                component, target = swizzle_index(letter), base
+                target_field = letter
+        name = variable_name(target)
+        if name is None:
             return env
-        name = str(target.children[0])  # type: ignore[union-attr]
         old = env.get(name)
         if old is None or (component is None and not T.is_scalar(old.type)):
             return env
@@ -462,20 +472,20 @@ def _plan(expr: Node) -> _Region:
         region.ids.append(id(node))
         kids = node.children
         if node.data == "ternary":
-            branches = _Branches("?:", kids[:3], [_Region(), _Region(), _Region()])
-            stack += zip(kids, branches.regions, strict=True)
+            parts = list(ternary_parts(node))
+            branches = _Branches("?:", parts, [_Region(), _Region(), _Region()])
+            stack += zip(parts, branches.regions, strict=True)
             region.events.append(branches)
             continue
-        if node.data == "binary" and str(kids[1]) in ("&&", "||"):
+        if node.data == "binary" and (op := operator(node)) in ("&&", "||"):
             # The chain parses left-nested, `((a && b) && c)`: its inner links share the
             # environment of the whole; the operands are the right sides and the innermost left.
-            op = str(kids[1])
-            operands = [kids[2]]
-            first = kids[0]
-            while is_tree(first, "binary") and str(first.children[1]) == op:  # type: ignore
+            first, _, right = binary_parts(node)
+            operands = [right]
+            while is_tree(first, "binary") and operator(first) == op:  # type: ignore[arg-type]
                 region.ids.append(id(first))
-                operands.append(first.children[2])  # type: ignore[union-attr]
-                first = first.children[0]  # type: ignore[union-attr]
+                first, _, right = binary_parts(first)  # type: ignore[arg-type]
+                operands.append(right)
             operands.append(first)
             operands.reverse()
             branches = _Branches(op, operands, [_Region() for _ in operands])
@@ -543,11 +553,10 @@ def condition_truth(model: Model, cond: Node) -> bool | None:
     `uv` in [0, 1]); None when it may be either. The data-flow analysis (flow.py) follows only
     the side of a branch that can be taken."""
     if is_tree(cond, "bool_literal"):
-        return str(cond.children[0]) == "true"  # type: ignore[union-attr]
+        return leaf_text(cond) == "true"  # type: ignore[arg-type]
     if not is_tree(cond, "binary"):
         return None
-    left, op_token, right = cond.children  # type: ignore[union-attr]
-    op = str(op_token)
+    left, op, right = binary_parts(cond)  # type: ignore[arg-type]
     if op not in ("<", "<=", ">", ">=", "==", "!="):
         return None
     a, b = model.value_of(left), model.value_of(right)

@@ -36,7 +36,26 @@ from dataclasses import dataclass, field
 from lark import Token, Tree
 
 from glint.compiler.glsl import types as T
-from glint.compiler.glsl.ast import for_parts
+from glint.compiler.glsl.ast import (
+    DoStatement,
+    FullySpecifiedType,
+    SwitchStatement,
+    TypeSpecifier,
+    WhileStatement,
+    binary_parts,
+    declarators,
+    definition_parts,
+    field_parts,
+    first_child,
+    for_parts,
+    if_parts,
+    index_parts,
+    jump_parts,
+    leaf_text,
+    operand,
+    operator,
+    ternary_parts,
+)
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import LintContext, Node, walk
@@ -377,22 +396,16 @@ class Moments:
         self._stack.pop()
         for fns in self.functions.values():
             for fn in fns:
-                self.mutable_globals |= self.writes(fn.node.children[1]) & self.globals.keys()
+                body = definition_parts(fn.node)[1]
+                self.mutable_globals |= self.writes(body) & self.globals.keys()
         entry = self.functions.get("mainImage") or self.functions.get("main") or []
         for fn in entry[:1]:
             args = [unknown(t) for _, t, _ in fn.params]
             self._evaluate(fn, args, entry=True)
 
     def _global_declaration(self, node: Tree, state: State) -> None:
-        full_type = node.children[0]
-        words = {
-            str(t)
-            for q in full_type.children  # type: ignore[union-attr]
-            if is_tree(q, "type_qualifier")
-            for t in q.children  # type: ignore[union-attr]
-            if isinstance(t, Token)
-        }
-        if not is_tree(node.children[-1], "declarator"):
+        words = set(FullySpecifiedType(first_child(node)).qualifiers)  # type: ignore[arg-type]
+        if not declarators(node):  # a bare struct declaration
             return
         _, declared = declared_variables(node)
         for name, type_, init in declared:
@@ -444,8 +457,8 @@ class Moments:
         self._stack.append(frame)
         self._active.add(id(fn.node))
         try:
-            body = fn.node.children[1]
-            self.block(body.children, state)  # type: ignore[union-attr]
+            body = definition_parts(fn.node)[1]
+            self.block(body.children, state)
         finally:
             self._active.discard(id(fn.node))
             self._stack.pop()
@@ -493,7 +506,7 @@ class Moments:
         if key in self._fn_globals:
             return self._fn_globals[key]
         self._fn_globals[key] = frozenset()  # a cycle (invalid GLSL) ends here
-        body = fn.node.children[1]
+        body = definition_parts(fn.node)[1]
         names = set(self.writes(body) & self.mutable_globals)
         for call in self._calls_in(body):
             name = callee_name(call)
@@ -531,32 +544,29 @@ class Moments:
             self.block(stmt.children, state)
             state.pop()
         elif kind == "declaration_statement":
-            decl = stmt.children[0]
-            if is_tree(decl, "variable_declaration") and is_tree(decl.children[-1], "declarator"):  # type: ignore[union-attr]
+            decl = first_child(stmt)  # the declaration
+            if is_tree(decl, "variable_declaration") and declarators(decl):  # type: ignore[arg-type]
                 for name, type_, init in declared_variables(decl)[1]:  # type: ignore[arg-type]
                     value = self._init_value(type_, init, state) if init is not None else None
                     state.declare(name, value or unknown(type_))
         elif kind == "expression_statement":
-            self.expr(stmt.children[0], state)
+            self.expr(first_child(stmt), state)
         elif kind == "if_statement":
             self._if(stmt, state)
         elif kind == "for_statement":
             self._for(stmt, state)
         elif kind == "while_statement":
-            cond, body = stmt.children
-            if is_tree(cond, "condition_declaration"):
-                self._loop(stmt, state, None, None, body)
-            else:
-                self._loop(stmt, state, cond, None, body)
+            loop = WhileStatement(stmt)
+            cond = None if loop.declaration is not None else loop.condition
+            self._loop(stmt, state, cond, None, loop.body)
         elif kind == "do_statement":
-            body, cond = stmt.children
-            self._loop(stmt, state, None, None, body)
+            self._loop(stmt, state, None, None, DoStatement(stmt).body)
         elif kind == "switch_statement":
             self._switch(stmt, state)
         elif kind == "jump_statement":
-            word = str(stmt.children[0])
-            if word == "return" and len(stmt.children) > 1:
-                value = self.expr(stmt.children[1], state)
+            word, returned = jump_parts(stmt)
+            if word == "return" and returned is not None:
+                value = self.expr(returned, state)
                 self._stack[-1].returns.append(value.but(union(value.tags, state.control)))
             state.dead = True
 
@@ -575,9 +585,8 @@ class Moments:
         return MV(type_, comps, union(value.tags, state.control))
 
     def _if(self, node: Tree, state: State) -> None:
-        cond = self.expr(node.children[0], state)
-        then = node.children[1]
-        other = node.children[2] if len(node.children) > 2 else None
+        cond_node, then, other = if_parts(node)
+        cond = self.expr(cond_node, state)
         truth = _truth(cond)
         if truth is not None:
             saved = state.control
@@ -624,17 +633,19 @@ class Moments:
                 state.assign(name, unknown(value.type))
 
     def _switch(self, node: Tree, state: State) -> None:
-        selector, *body = node.children
-        value = self.expr(selector, state)
+        switch = SwitchStatement(node)
+        value = self.expr(switch.selector, state)
         written = self.writes(node)
         exact = value.comps[0] if value.comps and known(value.comps[0]) else None
         running: State | None = None
-        for stmt in body:
+        for stmt in switch.body:
             if is_tree(stmt, "case_label", "default_label"):
                 if running is None or running.dead:
                     label = (
-                        self.expr(stmt.children[0], state) if stmt.data == "case_label" else None
-                    )  # type: ignore[union-attr]
+                        self.expr(first_child(stmt), state)  # type: ignore[arg-type]
+                        if stmt.data == "case_label"  # type: ignore[union-attr]
+                        else None
+                    )
                     hit = label is None or exact is None or (
                         label.comps is not None and label.comps[0] == exact)  # fmt: skip
                     if hit:
@@ -642,7 +653,7 @@ class Moments:
                         running.push()
                 continue
             if running is not None and not running.dead:
-                if is_tree(stmt, "jump_statement") and str(stmt.children[0]) == "break":  # type: ignore[union-attr]
+                if is_tree(stmt, "jump_statement") and jump_parts(stmt)[0] == "break":  # type: ignore[arg-type]
                     running.dead = True
                     continue
                 self.statement(stmt, running)
@@ -658,10 +669,10 @@ class Moments:
             names: set[str] = set()
             if isinstance(node, Tree):
                 for sub in walk(node):
-                    if sub.data in ("assignment", "postfix"):
-                        names.add(root_variable(sub.children[0]) or "")
-                    elif sub.data == "prefix":
-                        names.add(root_variable(sub.children[1]) or "")
+                    if sub.data == "assignment":
+                        names.add(root_variable(first_child(sub)) or "")  # the target
+                    elif sub.data in ("postfix", "prefix"):
+                        names.add(root_variable(operand(sub)) or "")
                     elif sub.data == "call":
                         names.update(self._out_names(sub))
             names.discard("")
@@ -695,7 +706,7 @@ class Moments:
         return handler(self, node, state)
 
     def _float_literal(self, node: Tree, state: State) -> MV:
-        text = str(node.children[0]).rstrip("fF")
+        text = leaf_text(node).rstrip("fF")
         try:
             value = f32(float(text))
         except ValueError:
@@ -703,16 +714,16 @@ class Moments:
         return MV("float", (Sym() if value is None else value,))
 
     def _int_literal(self, node: Tree, state: State) -> MV:
-        text = str(node.children[0])
+        text = leaf_text(node)
         value = int_value(text)
         type_ = "uint" if text[-1:] in "uU" else "int"
         return MV(type_, (Sym() if value is None else value,))
 
     def _bool_literal(self, node: Tree, state: State) -> MV:
-        return MV("bool", (str(node.children[0]) == "true",))
+        return MV("bool", (leaf_text(node) == "true",))
 
     def _variable(self, node: Tree, state: State) -> MV:
-        name = str(node.children[0])
+        name = leaf_text(node)
         value = state.lookup(name)
         if value is not None:
             return value
@@ -732,22 +743,23 @@ class Moments:
         return value
 
     def _ternary(self, node: Tree, state: State) -> MV:
-        cond = self.expr(node.children[0], state)
+        cond_node, if_true, if_false = ternary_parts(node)
+        cond = self.expr(cond_node, state)
         truth = _truth(cond)
         if truth is not None:
-            value = self.expr(node.children[1 if truth else 2], state)
+            value = self.expr(if_true if truth else if_false, state)
             return value.but(union(value.tags, cond.tags))
         a, b = state.copy(), state.copy()
-        va = self.expr(node.children[1], a)
-        vb = self.expr(node.children[2], b)
+        va = self.expr(if_true, a)
+        vb = self.expr(if_false, b)
         state.become(join_states(state, [a, b]))
         if va.type != vb.type and va.type and vb.type:
             return MV(va.type)
         return join_values([va, vb])
 
     def _unary(self, node: Tree, state: State) -> MV:
-        op = str(node.children[0])
-        v = self.expr(node.children[1], state)
+        op = operator(node)
+        v = self.expr(operand(node), state)
         if v.comps is None:
             return MV(v.type)
         if op == "-":
@@ -761,7 +773,7 @@ class Moments:
         return v
 
     def _prefix(self, node: Tree, state: State) -> MV:
-        op, target = str(node.children[0]), node.children[1]
+        op, target = operator(node), operand(node)
         old = self.expr(target, state)
         new = _arith("+" if op == "++" else "-", old, MV("int", (1,)))
         new = self._convert(old.type, new, state) if old.type else new  # type: ignore[arg-type]
@@ -769,7 +781,7 @@ class Moments:
         return new
 
     def _postfix(self, node: Tree, state: State) -> MV:
-        target, op = node.children[0], str(node.children[1])
+        target, op = operand(node), operator(node)
         old = self.expr(target, state)
         new = _arith("+" if op == "++" else "-", old, MV("int", (1,)))
         new = self._convert(old.type, new, state) if old.type else new  # type: ignore[arg-type]
@@ -777,8 +789,7 @@ class Moments:
         return old
 
     def _binary(self, node: Tree, state: State) -> MV:
-        left, op_token, right = node.children
-        op = str(op_token)
+        left, op, right = binary_parts(node)
         a = self.expr(left, state)
         if op in ("&&", "||"):
             ta = _truth(a)
@@ -826,8 +837,7 @@ class Moments:
             self.emit(Event("divide", divisor, value, numerator, union(value.tags, state.control)))
 
     def _assignment(self, node: Tree, state: State) -> MV:
-        target, op_token, rhs = node.children
-        op = str(op_token)
+        target, op, rhs = binary_parts(node)
         value = self.expr(rhs, state)
         if op != "=":
             old = self.expr(target, state)
@@ -857,14 +867,14 @@ class Moments:
                     value = unknown(old.type)
             state.assign(name, value)
             return
-        base = target.children[0]  # type: ignore[union-attr]
+        base = first_child(target)  # type: ignore[arg-type]  # of a field or an index
         if is_tree(base, "variable") and old.comps is not None:
             slots: list[int] | None = None
             if is_tree(target, "field"):
-                letters = str(target.children[1])  # type: ignore[union-attr]
+                letters = field_parts(target)[1]  # type: ignore[arg-type]
                 slots = list(T.swizzle_indices(letters) or [-1])
             elif is_tree(target, "index"):
-                i = self.expr(target.children[1], state)  # type: ignore[union-attr]
+                i = self.expr(index_parts(target)[1], state)  # type: ignore[arg-type]
                 if i.comps and known(i.comps[0]) and isinstance(i.comps[0], int):
                     slots = [int(i.comps[0])]
             if slots and all(0 <= s < len(old.comps) for s in slots):
@@ -887,8 +897,8 @@ class Moments:
             state.assign(name, unknown(old.type))
 
     def _field(self, node: Tree, state: State) -> MV:
-        v = self.expr(node.children[0], state)
-        letters = str(node.children[1])
+        base, letters = field_parts(node)
+        v = self.expr(base, state)
         if v.comps is None or size_of(v.type) is None:
             return MV(None)
         slots = list(T.swizzle_indices(letters) or [-1])  # -1: no swizzle
@@ -898,8 +908,9 @@ class Moments:
         return MV(T.swizzle(v.type, letters), comps, v.tags)
 
     def _index(self, node: Tree, state: State) -> MV:
-        v = self.expr(node.children[0], state)
-        i = self.expr(node.children[1], state)
+        base, index = index_parts(node)
+        v = self.expr(base, state)
+        i = self.expr(index, state)
         if v.comps is not None and size_of(v.type) and i.comps and known(i.comps[0]):
             k = i.comps[0]
             if isinstance(k, int) and 0 <= k < len(v.comps):
@@ -907,11 +918,9 @@ class Moments:
         return unknown(T.element(v.type)) if T.element(v.type) else MV(None)
 
     def _constructor(self, node: Tree, state: State) -> MV:
-        spec = node.children[0]
-        type_ = str(spec.children[0]) if isinstance(spec, Tree) else str(spec)  # type: ignore[union-attr]
-        is_array = isinstance(spec, Tree) and any(
-            is_tree(c, "array_specifier") for c in spec.children
-        )
+        spec = TypeSpecifier(first_child(node))  # type: ignore[arg-type]
+        type_ = str(spec.head)
+        is_array = spec.array is not None
         args = [self.expr(a, state) for a in call_args(node)]
         n = size_of(type_)
         if is_array or n is None:
@@ -922,9 +931,11 @@ class Moments:
         name = callee_name(node)
         arg_nodes = call_args(node)
         if name is None:  # a method: v.length()
-            head = node.children[0]
-            if is_tree(head, "field") and str(head.children[1]) == "length":  # type: ignore[union-attr]
-                self.expr(head.children[0], state)  # type: ignore[union-attr]
+            head = first_child(node)  # the callee
+            if is_tree(head, "field"):
+                base, method = field_parts(head)  # type: ignore[arg-type]
+                if method == "length":
+                    self.expr(base, state)
             return unknown("int")
         args = [self.expr(a, state) for a in arg_nodes]
         if name in self.functions:

@@ -12,7 +12,22 @@ from typing import Protocol
 from lark import Tree
 
 from glint.compiler.glsl import types as T
-from glint.compiler.glsl.ast import for_parts
+from glint.compiler.glsl.ast import (
+    ConditionDeclaration,
+    DoStatement,
+    SwitchStatement,
+    WhileStatement,
+    binary_parts,
+    declarator_initializer,
+    declarators,
+    field_parts,
+    first_child,
+    for_parts,
+    if_parts,
+    jump_parts,
+    operand,
+    variable_name,
+)
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
@@ -53,10 +68,10 @@ WRITING = frozenset({"assignment", "postfix", "prefix", "call"})
 
 def written_targets(node: Tree, model: ModelForPass | None) -> Iterable[Node]:
     """Lvalues one node writes: an assignment's target, `x++`, out arguments of a call."""
-    if node.data == "assignment" or node.data == "postfix":
-        yield node.children[0]
-    elif node.data == "prefix":
-        yield node.children[1]
+    if node.data == "assignment":
+        yield first_child(node)  # the target
+    elif node.data == "postfix" or node.data == "prefix":
+        yield operand(node)
     elif node.data == "call":
         yield from _out_arguments(node, model)
 
@@ -121,20 +136,20 @@ class ForwardPass:
         scopes.pop()
 
     def _declaration_statement(self, node: Tree, scopes: Scopes) -> None:
-        decl = node.children[0]
+        decl = first_child(node)  # the declaration
         if is_tree(decl, "variable_declaration"):
             self.model.declaration(decl, scopes)  # type: ignore[arg-type]
-            for d in decl.children[1:]:  # type: ignore[union-attr]
-                for init in d.children[1:] if is_tree(d, "declarator") else ():  # type: ignore
+            for d in declarators(decl):  # type: ignore[arg-type]
+                init = declarator_initializer(d)
+                if init is not None:
                     self.effects(init, scopes, nested_only=True)
 
     def _expression_statement(self, node: Tree, scopes: Scopes) -> None:
-        self.expression(node.children[0], scopes)
+        self.expression(first_child(node), scopes)
 
     def _jump_statement(self, node: Tree, scopes: Scopes) -> None:
-        kind = str(node.children[0])
-        if kind == "return" and len(node.children) > 1:
-            expr = node.children[1]
+        kind, expr = jump_parts(node)
+        if kind == "return" and expr is not None:
             recorded = self.expression(expr, scopes)
             if not scopes.dead:
                 env = scopes.env_for(expr, self.model.names_of(expr))
@@ -156,8 +171,7 @@ class ForwardPass:
         branches = []
         current = scopes
         while True:
-            cond, then = node.children[0], node.children[1]
-            other = node.children[2] if len(node.children) > 2 else None
+            cond, then, other = if_parts(node)
             self.expression(cond, current)
             state = self.narrowed(current, cond, True)
             self.statement(then, state)
@@ -180,21 +194,23 @@ class ForwardPass:
         scopes.pop()
 
     def _while_statement(self, node: Tree, scopes: Scopes) -> None:
-        cond, body = node.children
+        loop = WhileStatement(node)
+        cond, body = loop.condition, loop.body
         scopes.push()
-        if is_tree(cond, "condition_declaration"):
-            spec = next(c for c in cond.children[0].children if is_tree(c, "type_specifier"))
-            scopes.declare(str(cond.children[1]), Value(spec_text(spec)))
+        declared = ConditionDeclaration.cast(cond)
+        if declared is not None:
+            scopes.declare(declared.name, Value(spec_text(declared.type.type.syntax)))
             cond = None
         self.loop(scopes, cond, None, body)
         scopes.pop()
 
     def _do_statement(self, node: Tree, scopes: Scopes) -> None:
-        body, cond = node.children
-        self.loop(scopes, cond, None, body, test_first=False)
+        loop = DoStatement(node)
+        self.loop(scopes, loop.condition, None, loop.body, test_first=False)
 
     def _switch_statement(self, node: Tree, scopes: Scopes) -> None:
-        selector, *body = node.children
+        switch = SwitchStatement(node)
+        selector, body = switch.selector, switch.body
         self.expression(selector, scopes)
         entry = scopes.copy()
         entry.push()
@@ -308,9 +324,9 @@ class ForwardPass:
                 value = self.effects(part, scopes)
             return value
         if not nested_only and expr.data == "assignment":
-            target, op, rhs = expr.children
+            target, op, rhs = binary_parts(expr)
             value = self.effects(rhs, scopes)
-            return self._assign(target, str(op), expr, scopes, recorded, value)
+            return self._assign(target, op, expr, scopes, recorded, value)
         for node in self.model.writers(expr):
             for target in written_targets(node, self.model):
                 name = root_variable(target)
@@ -328,7 +344,7 @@ class ForwardPass:
             # The right side is an assignment applied just before: its value is known, and only
             # the target is left to read.
             env = scopes.env_for(target, self.model.names_of(target))
-            seen = {id(expr.children[2]): rhs_value}
+            seen = {id(binary_parts(expr)[2]): rhs_value}
         elif name is None or old is None:
             return None
         else:
@@ -358,9 +374,11 @@ def _same_env(a: Env, b: Env) -> bool:
 def _rotated_part(target: Node, old: Value, got: Value) -> Value | None:
     """`v.xy *= rot`: the rotated components take the new ranges, and the length of v is kept
     (a unit vector stays one: a camera turned by a rotation matrix)."""
-    if not (is_tree(target, "field") and is_tree(target.children[0], "variable")):  # type: ignore
+    if not is_tree(target, "field"):
         return None
-    letters = str(target.children[1])  # type: ignore[union-attr]
+    base, letters = field_parts(target)  # type: ignore[arg-type]
+    if variable_name(base) is None:
+        return None
     n = T.size(old.type)
     indices = [swizzle_index(c) for c in letters]
     if n < 2 or len(set(indices)) != len(indices) or max(indices) >= n:

@@ -284,6 +284,30 @@ def test_expressions() -> None:
     assert BoolLiteral(_in_main("y = false;", "bool_literal")).value is False
 
 
+def test_accessors_without_a_view() -> None:
+    field = _in_main("y = s.xyz;", "field")
+    base, name = ast.field_parts(field)
+    assert _text(base) == "s" and name == "xyz"
+    index = _in_main("y = a[i + 1];", "index")
+    assert [_text(p) for p in ast.index_parts(index)] == ["a", "i + 1"]
+    ternary = _in_main("y = c ? a : b;", "ternary")
+    assert [_text(p) for p in ast.ternary_parts(ternary)] == ["c", "a", "b"]
+    branch = _in_main("if (a) x = 1.0; else x = 2.0;", "if_statement")
+    assert [_text(p) for p in ast.if_parts(branch)] == ["a", "x = 1.0", "x = 2.0"]
+    assert ast.if_parts(_in_main("if (a) x = 1.0;", "if_statement"))[2] is None
+    keyword, value = ast.jump_parts(_in_main("return x * 2.0;", "jump_statement"))
+    assert keyword == "return" and _text(value) == "x * 2.0"
+    assert ast.jump_parts(_in_main("for (;;) break;", "jump_statement")) == ("break", None)
+    decl = _first("float a = 1.0, b[3];", "variable_declaration")
+    assert [Declarator(d).name for d in ast.declarators(decl)] == ["a", "b"]
+    assert ast.declarators(_first("struct S { float x; };", "variable_declaration")) == []
+    definition = _first("float f(float x) { return x; }", "function_definition")
+    prototype, body = ast.definition_parts(definition)
+    assert FunctionPrototype(prototype).name == "f" and body.data == "compound_statement"
+    assert ast.leaf_text(_in_main("y = 2.5f;", "float_literal")) == "2.5f"
+    assert ast.leaf_text(_in_main("y = abc;", "variable")) == "y"
+
+
 # --- the for statement: which optional part is there -------------------------------------------
 
 _FORS = {
@@ -310,6 +334,25 @@ def test_for_statement_parts(source: str) -> None:
         assert _text(loop.update) == update
     assert _text(loop.body) == ""
     assert for_parts(loop.syntax)[1:3] == (loop.condition, loop.update)
+
+
+@pytest.mark.parametrize("source", list(_FORS))
+def test_loop_condition_and_parts_of_a_for(source: str) -> None:
+    _, cond, update = _FORS[source]
+    node = _in_main(source, "for_statement")
+    found = ast.loop_condition(node)
+    assert (found is None) == (cond is None) and (cond is None or _text(found) == cond)
+    parts = [_text(p) for p in ast.loop_parts(node)]
+    assert parts == [p for p in (cond, update) if p is not None] + [""]  # the empty body
+
+
+def test_loop_condition_and_parts_of_while_and_do() -> None:
+    loop = _in_main("while (i < 3) i++;", "while_statement")
+    assert _text(ast.loop_condition(loop)) == "i < 3"
+    assert [_text(p) for p in ast.loop_parts(loop)] == ["i < 3", "i ++"]
+    do = _in_main("do i++; while (i < 3);", "do_statement")
+    assert _text(ast.loop_condition(do)) == "i < 3"
+    assert [_text(p) for p in ast.loop_parts(do)] == ["i ++", "i < 3"]
 
 
 def test_lark_and_the_fast_parser_note_the_same_for_parts() -> None:
@@ -339,26 +382,6 @@ def test_the_evaluator_runs_a_for_loop_without_condition_or_update() -> None:
 
 # --- no positional children[i] outside the front end ---------------------------------------
 
-# Modules that still index `children[...]`: others are editing them. Convert one, then take
-# it off this list; the list may only shrink.
-NOT_YET_CONVERTED = {
-    "lint/analysis/builtin_rules.py",
-    "lint/analysis/expressions.py",
-    "lint/analysis/invariance.py",
-    "lint/analysis/model.py",
-    "lint/analysis/moments.py",
-    "lint/analysis/statements.py",
-    "lint/rules/numerical/_common.py",
-    "lint/rules/numerical/n005_division_by_zero.py",
-    "lint/rules/numerical/n011_division_by_zero_at_moment.py",
-    "lint/rules/numerical/n013_condition_always_same.py",
-    "lint/rules/performance/_common.py",
-    "lint/rules/performance/pf004_invariant_expensive_call.py",
-    "lint/rules/performance/pf002_loop_invariant_work.py",
-    "lint/rules/performance/pf003_redundant_normalize.py",
-    "lint/rules/portability/p008_uniform_not_provided.py",
-}
-
 
 def _indexing_modules() -> set[str]:
     found = set()
@@ -371,10 +394,8 @@ def _indexing_modules() -> set[str]:
     return found
 
 
-def test_only_the_modules_not_yet_converted_index_children() -> None:
-    found = _indexing_modules()
-    assert sorted(found - NOT_YET_CONVERTED) == [], "read the tree through glsl/ast.py"
-    assert sorted(NOT_YET_CONVERTED - found) == [], "converted: take it off NOT_YET_CONVERTED"
+def test_no_module_outside_the_front_end_indexes_children() -> None:
+    assert sorted(_indexing_modules()) == [], "read the tree through glsl/ast.py"
 
 
 def test_ast_is_the_front_end_module() -> None:

@@ -484,3 +484,26 @@ def test_pf003_fixed_shader_validates() -> None:
 @pytest.mark.parametrize("path", CORPUS, ids=lambda p: f"{p.parent.name}/{p.stem}")
 def test_valid_corpus_has_no_performance_findings(path: Path) -> None:
     assert lint_source(path.read_text(encoding="utf-8"), str(path), FAST) == []
+
+
+def test_a_loop_guard_reads_the_loop_condition_not_its_update_or_body() -> None:
+    """`for (;; x += 1.0)` has no condition: its update is not one (nor, in `for (;;)`, its
+    body); a while reads its condition and a do loop its trailing one."""
+    from glint.compiler.glsl import parse, preprocess
+    from glint.compiler.glsl.ast import SourceFile
+    from glint.lint.analysis.invariance import Program, flow_of
+
+    src = (
+        "void f(float a, float b, float c, float d) {\n"
+        "    float x = 0.0;\n"
+        "    for (;; x += a) { break; }\n"
+        "    for (;;) { x = b; break; }\n"
+        "    for (; x < c;) { break; }\n"
+        "    while (x < d) { break; }\n"
+        "    do { break; } while (x < a);\n"
+        "}\n"
+    )
+    body = SourceFile(parse(preprocess(src, "x.glsl").text)).functions[0].body
+    flow = flow_of(Program(None, {}, set(), None), body)  # type: ignore[arg-type]
+    guards = [set(w.reads) for w in flow.writes if w.target.startswith("#")]
+    assert guards == [set(), set(), {"x", "c"}, {"x", "d"}, {"x", "a"}]

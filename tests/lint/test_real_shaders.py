@@ -31,7 +31,6 @@ pytestmark = pytest.mark.skipif(
 )
 
 
-
 @pytest.fixture(scope="module")
 def findings() -> list[dict[str, Any]]:
     """Every rule on every glslang-valid corpus file, glslang off (one run for the module)."""

@@ -113,6 +113,20 @@ def test_p008_says_which_branch_or_loop_the_zero_kills() -> None:
     assert "always takes its second value" in found["u_on"]
 
 
+def test_p008_takes_a_for_loops_condition_not_its_update() -> None:
+    src = main(
+        "    for (float t = 0.0; ; t += u_step) { if (t > 1.0) break; uv *= 0.9; }\n"  # line 7
+        "    for (; u_on;) { uv *= 0.9; break; }\n"  # 8: the lone middle part is the condition
+        "    for (int i = 0; ; i += u_inc) { if (i > 4) break; }\n",  # 9: the update again
+        "uniform float u_step;\nuniform bool u_on;\nuniform int u_inc;\n",
+    )
+    found = {f.message.split()[2]: f.message for f in lint(src, "P008")}
+    assert "always 0.0 wherever it is read (first at line 7)" in found["u_step"]
+    assert "test" not in found["u_step"]  # `t += u_step` is no test of the loop
+    assert "the loop at line 8 never runs: `u_on` is false from the start" in found["u_on"]
+    assert "wherever it is read (first at line 9)" in found["u_inc"]
+
+
 def test_p008_names_a_division_or_product_the_zero_spoils() -> None:
     src = main(
         "    float k = 2.0 * u_height;\n"  # line 5: a scale by a literal names nothing

@@ -10,6 +10,8 @@ from collections.abc import Iterator
 
 from lark import Token, Tree
 
+from glint.compiler.glsl.ast import SourceFile
+
 from ...analysis.ranges import Interval
 from ...analysis.syntax import callee_name
 from ...analysis.values import Value
@@ -52,11 +54,7 @@ def builtin_calls(ctx: LintContext, *names: str) -> Iterator[tuple[Tree, str]]:
     named = ctx.cache.get("numerical.named_calls")
     if named is None:  # every numerical rule looks at every call: name them once per file
         assert ctx.tree is not None
-        defined = {
-            str(node.children[0].children[1])
-            for node in ctx.tree.children
-            if isinstance(node, Tree) and node.data == "function_definition"
-        }
+        defined = {definition.name for definition in SourceFile(ctx.tree).functions}
         named = ctx.cache["numerical.named_calls"] = [
             (node, name) for node in ctx.nodes("call")
             if (name := callee_name(node)) is not None and name not in defined

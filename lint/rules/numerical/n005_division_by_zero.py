@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import binary_parts
 from glint.compiler.glsl.types import components
 
 from ...analysis.model import semantic_model
@@ -74,8 +75,8 @@ class DivisionByZero(NumericalRule):
 
 
 def _divisor(node: Tree) -> Node | None:
-    if node.data == "binary" and str(node.children[1]) == "/":
-        return node.children[2]
-    if node.data == "assignment" and str(node.children[1]) == "/=":
-        return node.children[2]
+    if node.data in ("binary", "assignment"):
+        _, op, right = binary_parts(node)
+        if op == ("/" if node.data == "binary" else "/="):
+            return right
     return None

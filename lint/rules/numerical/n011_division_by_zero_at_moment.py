@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import Arguments, binary_parts, leaf_text, operator
+
 from ...analysis.model import semantic_model
 from ...analysis.moments import Event, moments, show
 from ...analysis.syntax import call_args, callee_name
@@ -157,15 +159,15 @@ def _absorbed(ctx: LintContext, event: Event) -> bool:
         parent = parents.get(id(node))
         if parent is None:
             return False
-        arithmetic = parent.data == "binary" and str(parent.children[1]) in ("+", "-", "*", "/")
-        if arithmetic or parent.data == "unary":
+        op = operator(parent) if parent.data == "binary" else None
+        if op in ("+", "-", "*", "/") or parent.data == "unary":
             node = parent
-        elif parent.data == "binary":
-            return str(parent.children[1]) in _ABSORBING_OPS
+        elif op is not None:
+            return op in _ABSORBING_OPS
         elif parent.data == "arguments":
             call = parents.get(id(parent))
             name = callee_name(call) if isinstance(call, Tree) and call.data == "call" else None
-            first = parent.children[0] is node
+            first = Arguments(parent).items[0] is node
             return name in _ABSORBING_CALLS and (first or name == "step")
         else:
             return False
@@ -173,10 +175,10 @@ def _absorbed(ctx: LintContext, event: Event) -> bool:
 
 
 def _divisor(node: Tree) -> Node | None:
-    if node.data == "binary" and str(node.children[1]) == "/":
-        return node.children[2]
-    if node.data == "assignment" and str(node.children[1]) == "/=":
-        return node.children[2]
+    if node.data in ("binary", "assignment"):
+        _, op, right = binary_parts(node)
+        if op == ("/" if node.data == "binary" else "/="):
+            return right
     return None
 
 
@@ -198,7 +200,7 @@ def _floored_at_zero(node: Node) -> Node | None:
 def _is_zero(node: Node) -> bool:
     if isinstance(node, Tree) and node.data in ("float_literal", "int_literal"):
         try:
-            return float(str(node.children[0]).rstrip("fFuU")) == 0.0
+            return float(leaf_text(node).rstrip("fFuU")) == 0.0
         except ValueError:
             return False
     return False

@@ -6,6 +6,17 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    CompoundStatement,
+    Declarator,
+    ForStatement,
+    binary_parts,
+    if_parts,
+    leaf_text,
+    operand,
+    operator,
+    ternary_parts,
+)
 from glint.compiler.target.shadertoy import SHADERTOY_TYPES
 
 from ...analysis.constants import is_compile_time
@@ -66,8 +77,8 @@ class ConditionAlwaysSame(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         fns = functions(ctx)
-        tests = [(n, n.children[0]) for n in ctx.nodes("if_statement")]
-        tests += [(n, n.children[0]) for n in ctx.nodes("ternary")]
+        tests = [(n, if_parts(n)[0]) for n in ctx.nodes("if_statement")]
+        tests += [(n, ternary_parts(n)[0]) for n in ctx.nodes("ternary")]
         if not tests:
             return
         model = semantic_model(ctx)
@@ -86,8 +97,9 @@ class ConditionAlwaysSame(NumericalRule):
                 found = _always_false(ctx, model, fn, defined, comparison)
                 if found is not None:
                     yield self.emit(ctx, comparison, found)
-                    if statement.data == "if_statement" and len(statement.children) > 2:
-                        dead_chains.add(id(statement.children[2]))
+                    other = if_parts(statement)[2] if statement.data == "if_statement" else None
+                    if other is not None:
+                        dead_chains.add(id(other))
                     break
 
 
@@ -100,13 +112,12 @@ def _comparisons(cond: Node) -> Iterator[Tree]:
             continue
         op = binary_op(node)
         if op in ("&&", "||", "^^"):
-            stack += [node.children[2], node.children[0]]
+            left, _, right = binary_parts(node)
+            stack += [right, left]
         elif op in _COMPARISONS:
             yield node
-        elif node.data == "unary" and str(node.children[0]) == "!":
-            stack.append(node.children[1])
-        elif node.data == "paren":
-            stack.append(node.children[0])
+        elif node.data == "unary" and operator(node) == "!":
+            stack.append(operand(node))
 
 
 def _always_false(ctx: LintContext, model: Model, fn: Function, defined: set[str],
@@ -117,7 +128,8 @@ def _always_false(ctx: LintContext, model: Model, fn: Function, defined: set[str
     if condition_truth(model, cmp) is not False:
         return None
     sides = []
-    for side in (cmp.children[0], cmp.children[2]):
+    left, _, right = binary_parts(cmp)
+    for side in (left, right):
         r = model.range_of(side)
         sides.append((side, r, r.is_point or is_compile_time(ctx, side, fn)))
     varying = [(s, r) for s, r, constant in sides if not constant]
@@ -127,7 +139,7 @@ def _always_false(ctx: LintContext, model: Model, fn: Function, defined: set[str
     sources = _sources(fn, cmp, defined)
     if _read_names(cmp, defined) & set(SHADERTOY_TYPES):
         return None  # a test of the host's inputs (`iTime != -1.0`, a bound channel)
-    other = model.range_of(cmp.children[2] if side is cmp.children[0] else cmp.children[0])
+    other = model.range_of(right if side is left else left)
     intrinsic = _never_negative(side, r) and other.hi <= 0.0  # `abs(h) < 0.0` for any h
     if fn.name != "mainImage" and sources & set(fn.params) and not intrinsic:
         return None  # a helper's check of its parameter: constant only for today's callers
@@ -171,10 +183,9 @@ def _loop_counters(ctx: LintContext) -> set[str]:
     found = ctx.cache.get("n013.counters")
     if found is None:
         found = ctx.cache["n013.counters"] = {
-            str(d.children[0])
+            Declarator(d).name
             for loop in ctx.nodes("for_statement")
-            if isinstance(loop.children[0], Tree)
-            for d in walk_kind(loop.children[0], "declarator")
+            for d in walk_kind(ForStatement(loop).init, "declarator")
         }
     return found  # type: ignore[no-any-return]
 
@@ -189,7 +200,7 @@ def _read_names(node: Node, defined: set[str]) -> set[str]:
         if not isinstance(item, Tree):
             continue
         if item.data == "variable":
-            found.add(str(item.children[0]))
+            found.add(leaf_text(item))
         elif item.data == "call":
             if callee_name(item) not in defined:
                 stack += call_args(item)
@@ -204,12 +215,13 @@ def _tested_before_exit(ctx: LintContext) -> dict[str, list[int]]:
     harmless re-check, not a guard that no longer guards."""
     found: dict[str, list[int]] = {}
     for node in ctx.nodes("if_statement"):
-        branch = node.children[1]
-        if isinstance(branch, Tree) and branch.data == "compound_statement" and branch.children:
-            branch = branch.children[-1]
+        cond, branch, _ = if_parts(node)
+        block = CompoundStatement.cast(branch)
+        if block is not None and block.statements:
+            branch = block.statements[-1]  # a block that ends in the jump
         if not (isinstance(branch, Tree) and branch.data == "jump_statement"):
             continue
-        for cmp in _comparisons(node.children[0]):
+        for cmp in _comparisons(cond):
             if not cmp.meta.empty:
                 found.setdefault(_key(ctx, cmp), []).append(cmp.meta.end_pos)
     return found

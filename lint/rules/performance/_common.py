@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import binary_parts, first_child
+
 from ...context import Node
 
 # Parents in which `a * b` needs no parentheses: it is a whole argument, initializer, right
@@ -20,14 +22,12 @@ WRITERS = ("assignment", "prefix", "postfix", "call")
 def needs_parens(node: Node, parent: Tree | None) -> bool:
     if parent is None or parent.data in _OPEN_PARENTS:
         return False
-    if parent.data == "assignment":
-        return parent.children[0] is node
-    if parent.data == "index":
-        return parent.children[0] is node
+    if parent.data in ("assignment", "index"):
+        return first_child(parent) is node  # the target, or the indexed base
     if parent.data == "binary":
-        op = str(parent.children[1])
+        left, op, _ = binary_parts(parent)
         # a*a + b, b - a*a, a*a * b and a*a / b group as written (left associative)
-        return not (op in ("+", "-") or (op in ("*", "/") and parent.children[0] is node))
+        return not (op in ("+", "-") or (op in ("*", "/") and left is node))
     return True
 
 

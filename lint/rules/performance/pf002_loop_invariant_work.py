@@ -7,6 +7,19 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    ConditionDeclaration,
+    Declarator,
+    ForStatement,
+    VariableDeclaration,
+    binary_parts,
+    declarator_initializer,
+    for_parts,
+    loop_parts,
+    operator,
+    variable_name,
+)
+
 from ...analysis.constants import const_value, global_constants
 from ...analysis.functions import Function, functions, out_param_map, writes_of
 from ...analysis.syntax import call_args, call_name, names_in
@@ -60,32 +73,20 @@ def _global_names(ctx: LintContext) -> tuple[set[str], set[str]]:
     for node in ctx.tree.children:
         if not (isinstance(node, Tree) and node.data == "variable_declaration"):
             continue
-        qual = ""
-        for child in node.children:
-            if isinstance(child, Tree) and child.data == "fully_specified_type":
-                qual = (
-                    " ".join(str(t) for t in child.children[0].children)
-                    if (
-                        isinstance(child.children[0], Tree)
-                        and child.children[0].data == "type_qualifier"
-                    )
-                    else ""
-                )
-            elif isinstance(child, Tree) and child.data == "declarator":
-                name = str(child.children[0])
-                (constant if ("const" in qual or "uniform" in qual) else other).add(name)
+        declaration = VariableDeclaration(node)
+        qualifiers = declaration.type.qualifiers
+        fixed = "const" in qualifiers or "uniform" in qualifiers
+        for declarator in declaration.declarators:
+            (constant if fixed else other).add(declarator.name)
     return constant, other
 
 
 def _local_consts(fn: Function) -> set[str]:
     found = set()
     for node in walk_kind(fn.body, "variable_declaration"):
-        spec = node.children[0]
-        if (isinstance(spec, Tree) and isinstance(spec.children[0], Tree)
-                and spec.children[0].data == "type_qualifier"
-                and "const" in [str(t) for t in spec.children[0].children]):  # fmt: skip
-            found |= {str(c.children[0]) for c in node.children[1:]
-                      if isinstance(c, Tree) and c.data == "declarator"}  # fmt: skip
+        declaration = VariableDeclaration(node)
+        if declaration.type.is_const:
+            found |= {d.name for d in declaration.declarators}
     return found
 
 
@@ -113,19 +114,21 @@ _UNKNOWN_TRIPS = HOT
 def trip_count(ctx: LintContext, loop: Tree, fn: Function, unknown: int = _UNKNOWN_TRIPS) -> int:
     """The number of passes of `for (i = A; i < B; i += k)` with constant A, B and k (macros
     expanded, const names and locals with one value included); `unknown` otherwise."""
-    if loop.data != "for_statement" or len(loop.children) < 4:
+    if loop.data != "for_statement":
         return unknown
-    init, cond, step = loop.children[0], loop.children[1], loop.children[2]
+    init, cond, step, _ = for_parts(loop)
+    if cond is None or step is None:
+        return unknown
     start = None
     for node in walk(init):
-        if node.data == "declarator" and len(node.children) > 1:
-            start = _number(ctx, node.children[-1], fn)
+        if node.data == "declarator" and (value := declarator_initializer(node)) is not None:
+            start = _number(ctx, value, fn)
         elif node.data == "assignment":
-            start = _number(ctx, node.children[2], fn)
-    op = str(cond.children[1]) if isinstance(cond, Tree) and cond.data == "binary" else ""
+            start = _number(ctx, binary_parts(node)[2], fn)
+    op = operator(cond) if isinstance(cond, Tree) and cond.data == "binary" else ""
     if start is None or op not in ("<", "<=", ">", ">="):
         return unknown
-    end = _number(ctx, cond.children[2], fn)  # type: ignore[union-attr]
+    end = _number(ctx, binary_parts(cond)[2], fn)  # type: ignore[arg-type]
     delta = _step(ctx, step, fn)
     if end is None or not delta:
         return unknown
@@ -140,8 +143,8 @@ def _number(ctx: LintContext, node: Node, fn: Function) -> float | None:
         node = args[0] if len(args) == 1 else node
     value = const_value(node, global_constants(ctx))
     if value is None and fn is not None:
-        name = node.children[0] if isinstance(node, Tree) and node.data == "variable" else None
-        init = fn.value_of(str(name)) if name is not None else None
+        name = variable_name(node)
+        init = fn.value_of(name) if name is not None else None
         value = const_value(init, global_constants(ctx)) if init is not None else None
     return value
 
@@ -150,11 +153,10 @@ def _step(ctx: LintContext, node: Node, fn: Function) -> float | None:
     if not isinstance(node, Tree):
         return None
     if node.data in ("postfix", "prefix"):
-        op = str(node.children[1] if node.data == "postfix" else node.children[0])
-        return 1.0 if op == "++" else -1.0
-    if node.data == "assignment" and str(node.children[1]) in ("+=", "-="):
-        value = _number(ctx, node.children[2], fn)
-        return None if value is None else (value if str(node.children[1]) == "+=" else -value)
+        return 1.0 if operator(node) == "++" else -1.0
+    if node.data == "assignment" and (parts := binary_parts(node))[1] in ("+=", "-="):
+        value = _number(ctx, parts[2], fn)
+        return None if value is None else (value if parts[1] == "+=" else -value)
     return None
 
 
@@ -165,7 +167,7 @@ def _enclosing_trips(ctx: LintContext, node: Tree, fn: Function, up: dict[int, T
     current: Node = node
     while (parent := up.get(id(current))) is not None and parent is not fn.node:
         if parent.data in _LOOPS and not (
-            parent.data == "for_statement" and parent.children[0] is current
+            parent.data == "for_statement" and ForStatement(parent).init is current
         ):
             total *= trip_count(ctx, parent, fn)
         current = parent
@@ -268,9 +270,9 @@ class LoopInvariant(Rule):
                 for node in walk_kind(loop, *WRITERS, "declarator", "condition_declaration"):
                     varying |= writes_of(node, outs)
                     if node.data == "declarator":
-                        varying.add(str(node.children[0]))
+                        varying.add(Declarator(node).name)
                     elif node.data == "condition_declaration":
-                        varying.add(str(node.children[1]))
+                        varying.add(ConditionDeclaration(node).name)
                 for expr in self._candidates(loop, varying, fixed, fn):
                     if runs.get(fn.name, 1) * _enclosing_trips(ctx, expr, fn, up) < HOT:
                         continue  # a short loop: unrolled and merged by the driver
@@ -290,14 +292,13 @@ class LoopInvariant(Rule):
         self, loop: Tree, varying: set[str], fixed: set[str], fn: Function
     ) -> Iterator[Tree]:
         # The for-init runs once: only the condition, the increment and the body repeat.
-        parts = loop.children[1:] if loop.data == "for_statement" else loop.children
-        stack: list[Node] = list(reversed(parts))
+        stack: list[Node] = list(reversed(loop_parts(loop)))
         while stack:
             node = stack.pop()
             if not isinstance(node, Tree):
                 continue
             if node.data == "assignment":
-                stack.append(node.children[2])  # the target is written, never hoisted
+                stack.append(binary_parts(node)[2])  # the target is written, never hoisted
                 continue
             if node.data in _EXPRESSIONS and self._invariant(node, varying, fixed, fn):
                 yield node

@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import VariableDeclaration, operand, operator
+
 from ...analysis.constants import folded
 from ...analysis.functions import Function, functions, out_param_map, resolve, writes_of
 from ...analysis.model import is_unit
@@ -26,8 +28,8 @@ def _unit_by_form(node: Node, fn: Function | None, consts: dict[str, Node], dept
         return True
     if name == "reflect":
         return all(_unit_by_form(a, fn, consts, depth - 1) for a in call_args(node))
-    if node.data == "unary" and str(node.children[0]) in "+-":
-        return _unit_by_form(node.children[1], fn, consts, depth - 1)
+    if node.data == "unary" and operator(node) in "+-":
+        return _unit_by_form(operand(node), fn, consts, depth - 1)
     variable = var_name(node)
     if variable is not None:
         value = resolve(node, fn, 1)
@@ -45,16 +47,13 @@ def _const_values(ctx: LintContext) -> dict[str, Node]:
     for node in ctx.tree.children:
         if not (isinstance(node, Tree) and node.data == "variable_declaration"):
             continue
-        spec = node.children[0]
-        qual = spec.children[0] if isinstance(spec, Tree) else None
-        if not (isinstance(qual, Tree) and qual.data == "type_qualifier"
-                and "const" in [str(t) for t in qual.children]):  # fmt: skip
+        declaration = VariableDeclaration(node)
+        if not declaration.type.is_const:
             continue
-        for child in node.children[1:]:
-            if isinstance(child, Tree) and child.data == "declarator":
-                init = child.children[-1]
-                if isinstance(init, Tree) and init.data != "array_specifier":
-                    values[str(child.children[0])] = init
+        for declarator in declaration.declarators:
+            init = declarator.initializer
+            if isinstance(init, Tree):
+                values[declarator.name] = init
     return values
 
 
@@ -68,10 +67,10 @@ def _written_earlier_in_sequence(
     current: Node = node
     while (parent := up.get(id(current))) is not None:
         if parent.data == "sequence":
-            for operand in parent.children:
-                if operand is current:
+            for part in parent.children:
+                if part is current:
                     break
-                if any(writes_of(sub, outs) & reads for sub in walk_kind(operand, *WRITERS)):
+                if any(writes_of(sub, outs) & reads for sub in walk_kind(part, *WRITERS)):
                     return True
         current = parent
     return False

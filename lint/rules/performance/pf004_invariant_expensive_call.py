@@ -8,6 +8,17 @@ from dataclasses import dataclass
 
 from lark import Tree
 
+from glint.compiler.glsl.ast import (
+    CompoundStatement,
+    ForStatement,
+    binary_parts,
+    first_child,
+    for_parts,
+    leaf_text,
+    operand,
+    variable_name,
+)
+
 from ...analysis.functions import Function, functions
 from ...analysis.invariance import (
     IMPURE,
@@ -101,7 +112,7 @@ def _loop_of_chain(sites: dict[str, _Site], name: str, up: dict[int, Tree]) -> T
         node: Node = site.call
         while (parent := up.get(id(node))) is not None:
             if parent.data in LOOPS and not (
-                parent.data == "for_statement" and parent.children[0] is node
+                parent.data == "for_statement" and ForStatement(parent).init is node
             ):
                 return parent
             node = parent
@@ -157,7 +168,7 @@ def _innermost_loop(node: Tree, fn: Function, up: dict[int, Tree]) -> Tree | Non
     current: Node = node
     while (parent := up.get(id(current))) is not None and parent is not fn.node:
         if parent.data in LOOPS and not (
-            parent.data == "for_statement" and parent.children[0] is current
+            parent.data == "for_statement" and ForStatement(parent).init is current
         ):
             return parent
         current = parent
@@ -174,23 +185,20 @@ def _reads_outside_accumulators(prog: Program, body: Node, carried: set[str]) ->
         if not isinstance(node, Tree):
             continue
         if node.data == "variable":
-            found.add(str(node.children[0]))
+            found.add(leaf_text(node))
             continue
         if node.data == "call" and (name := call_name(node)) in prog.defined:
             if prog.global_writes(name):  # type: ignore[arg-type]
                 return None
             found |= prog.global_reads(name)  # type: ignore[arg-type]
-        if node.data in ("prefix", "postfix"):
-            operand = node.children[1] if node.data == "prefix" else node.children[0]
-            if root_var(operand) in carried:
-                continue
-        if node.data == "assignment" and (target := root_var(node.children[0])) in carried:
-            lhs, op, rhs = node.children
+        if node.data in ("prefix", "postfix") and root_var(operand(node)) in carried:
+            continue
+        if node.data == "assignment" and (target := root_var(first_child(node))) in carried:
+            lhs, op, rhs = binary_parts(node)
             found |= names_in(lhs) - {target}
             if op == "=" and call_name(rhs) in ("min", "max"):
                 args = call_args(rhs)  # type: ignore[arg-type]
-                rest = [a for a in args if not (isinstance(a, Tree) and a.data == "variable"
-                                                and str(a.children[0]) == target)]  # fmt: skip
+                rest = [a for a in args if variable_name(a) != target]
                 stack += rest if len(rest) == len(args) - 1 else args
             else:
                 stack.append(rhs)
@@ -237,7 +245,7 @@ def _pieces(
             info[id(node)] = here
             continue
         if node.data == "variable":
-            here.same = str(node.children[0]) not in moving
+            here.same = leaf_text(node) not in moving
             info[id(node)] = here
             continue
         children = node.children
@@ -250,8 +258,9 @@ def _pieces(
                 here.sticky = prog.function_sticky(name)  # type: ignore[arg-type]
             elif is_fetch(name):
                 here.sticky = True
-            if name is not None:
-                children = children[1:]  # the callee's name is not a variable read
+            if name is not None:  # the callee's name is not a variable read
+                callee = first_child(node)
+                children = [c for c in children if c is not callee]
         elif node.data in ("assignment", "prefix", "postfix"):
             here.pure = False
         for child in children:
@@ -274,7 +283,7 @@ def _pieces(
                 found.append(node)
             continue
         if node.data == "assignment":
-            down.append(node.children[2])
+            down.append(binary_parts(node)[2])  # the target is written, never hoisted
             continue
         if node.data in _EXPRESSIONS and here.same:
             if here.pure and (here.sticky if sticky else here.calls):
@@ -462,9 +471,11 @@ class InvariantExpensiveCall(Rule):
     ) -> Finding | None:
         """A counted loop whose body never reads its counter nor anything the passes change
         (besides accumulating into its results): every pass computes the same values."""
-        if loop.data != "for_statement" or len(loop.children) < 4:
+        if loop.data != "for_statement":
             return None
-        cond, body = loop.children[1], loop.children[3]
+        _, cond, update, body = for_parts(loop)
+        if update is None:
+            return None
         if not isinstance(cond, Tree) or not isinstance(body, Tree) or body.meta.empty:
             return None
         head = flow.within(cond.meta.start_pos, body.meta.start_pos)
@@ -512,7 +523,7 @@ class InvariantExpensiveCall(Rule):
         hot = _loop_of_chain(sites, fn.name, up)
         found: list[tuple[Tree, int]] = []
         share = 0
-        for node in _pieces(prog, flow, list(fn.body.children), moving):
+        for node in _pieces(prog, flow, CompoundStatement(fn.body).statements, moving):
             if self._covered(node):
                 continue
             cost = prog.cost(node, fn)

@@ -9,6 +9,19 @@ from typing import Any
 
 from lark import Token, Tree
 
+from glint.compiler.glsl.ast import (
+    Declarator,
+    ForStatement,
+    IfStatement,
+    VariableDeclaration,
+    binary_parts,
+    declarator_initializer,
+    first_child,
+    leaf_text,
+    loop_condition,
+    operand,
+)
+from glint.compiler.glsl.ast import operator as operator_of
 from glint.compiler.target.shadertoy import SHADERTOY_TYPES
 
 from ...analysis.syntax import int_value, spec_text
@@ -16,8 +29,12 @@ from ...context import LintContext, Node
 from ...finding import Finding
 from .. import Rule, register
 
-# Statements whose first child (the do loop: second) is the condition they test.
-_TESTS = {"if_statement": 0, "while_statement": 0, "do_statement": 1, "switch_statement": 0}
+# The statements (and the expression) that test a condition (_test_of).
+_TESTS = frozenset(
+    {"if_statement", "switch_statement", "ternary", "for_statement", "while_statement",
+     "do_statement"}
+)  # fmt: skip
+_LOOPS = ("for_statement", "while_statement", "do_statement")
 _ZERO = {"bool": "false", "int": "0", "uint": "0u", "float": "0.0"}
 
 
@@ -70,21 +87,19 @@ class UniformNotProvided(Rule):
             return  # another host may set it
         declared: dict[str, tuple[Token, str]] = {}
         for node in ctx.tree.children:
-            if not (isinstance(node, Tree) and node.data == "variable_declaration"):
+            declaration = VariableDeclaration.cast(node)
+            if declaration is None or "uniform" not in declaration.type.qualifiers:
                 continue
-            spec = node.children[0]
-            if not _is_uniform(spec):
-                continue
-            typ = spec_text(spec.children[-1]) if isinstance(spec, Tree) else ""
+            typ = spec_text(declaration.type.type.syntax)
             if typ.startswith(("sampler", "isampler", "usampler")) or not typ:
                 continue  # a sampler reads texture unit 0, which ShaderToy binds to iChannel0
-            for decl in node.children[1:]:
-                if not (isinstance(decl, Tree) and decl.data == "declarator"):
-                    continue
-                name, *rest = decl.children
-                arrays = all(isinstance(r, Tree) and r.data == "array_specifier" for r in rest)
-                if arrays and isinstance(name, Token) and str(name) not in SHADERTOY_TYPES:
-                    declared[str(name)] = (name, typ + "[]" * len(rest))
+            for decl in declaration.declarators:
+                if declarator_initializer(decl.syntax) is not None:
+                    continue  # a uniform with a default value
+                name = decl.name_token
+                arrays = 1 if decl.array is not None else 0
+                if str(name) not in SHADERTOY_TYPES:
+                    declared[str(name)] = (name, typ + "[]" * arrays)
         if not declared:
             return
         reads = _reads(ctx, set(declared))
@@ -144,8 +159,9 @@ def _dead(ctx: LintContext, test: Tree, statement: Tree, value: object) -> str |
     if kind == "if_statement":
         if not value:
             return f", so the branch of `if ({shown})` at line {line} never runs"
-        if len(statement.children) > 2:
-            else_line = ctx.span(statement.children[2])[0]
+        other = IfStatement(statement).else_branch
+        if other is not None:
+            else_line = ctx.span(other)[0]
             return f", so the else branch of `if ({shown})` (line {else_line}) never runs"
         return None
     if kind in ("for_statement", "while_statement") and not value:
@@ -183,12 +199,13 @@ def _bindings(name: str, typ: str, statement: Tree) -> dict[str, object]:
     if typ in _ZERO_VALUE:
         values[name] = _ZERO_VALUE[typ]
     if statement.data == "for_statement":
-        init = statement.children[0]
-        for decl in init.find_data("declarator") if isinstance(init, Tree) else ():
-            if len(decl.children) == 2 and isinstance(decl.children[0], Token):
-                value = _value(decl.children[1], {})
+        init = ForStatement(statement).init
+        for decl in init.find_data("declarator"):
+            initializer = declarator_initializer(decl)
+            if initializer is not None and Declarator(decl).array is None:
+                value = _value(initializer, {})
                 if value is not None:
-                    values[str(decl.children[0])] = value
+                    values[Declarator(decl).name] = value
     return values
 
 
@@ -214,27 +231,27 @@ def _value(node: Node, values: dict[str, object]) -> object:
         return None
     kind = node.data
     if kind == "variable":
-        return values.get(str(node.children[0]))
+        return values.get(leaf_text(node))
     if kind == "bool_literal":
-        return str(node.children[0]) == "true"
+        return leaf_text(node) == "true"
     if kind == "int_literal":
-        return int_value(str(node.children[0]))
+        return int_value(leaf_text(node))
     if kind == "float_literal":
         try:
-            return float(str(node.children[0]).rstrip("fFlL"))
+            return float(leaf_text(node).rstrip("fFlL"))
         except ValueError:
             return None
     if kind == "unary":
-        op, operand = str(node.children[0]), _value(node.children[1], values)
-        if op == "!" and isinstance(operand, bool):
-            return not operand
-        if op == "-" and isinstance(operand, (int, float)) and not isinstance(operand, bool):
-            return -operand
-        return operand if op == "+" else None
+        op, value = operator_of(node), _value(operand(node), values)
+        if op == "!" and isinstance(value, bool):
+            return not value
+        if op == "-" and isinstance(value, (int, float)) and not isinstance(value, bool):
+            return -value
+        return value if op == "+" else None
     if kind != "binary":
         return None
-    op = str(node.children[1])
-    left, right = _value(node.children[0], values), _value(node.children[2], values)
+    left_node, op, right_node = binary_parts(node)
+    left, right = _value(left_node, values), _value(right_node, values)
     if op in ("&&", "||"):
         absorbing = op == "||"  # true absorbs an or, false an and
         if left is absorbing or right is absorbing:
@@ -251,26 +268,17 @@ def _value(node: Node, values: dict[str, object]) -> object:
     return None
 
 
-def _is_uniform(spec: Node) -> bool:
-    if not isinstance(spec, Tree):
-        return False
-    return any(
-        isinstance(q, Tree) and q.data == "type_qualifier" and "uniform" in map(str, q.children)
-        for q in spec.children
-    )
-
-
 def _reads(ctx: LintContext, names: set[str]) -> dict[str, _Reads]:
     """For each name read in a function: its first read, the tests that read it (with their
     statement) and the first division by it."""
     parents = ctx.parents()
     found: dict[str, _Reads] = {}
     for node in ctx.nodes("variable"):
-        name = str(node.children[0])
+        name = leaf_text(node)
         if name not in names:
             continue
         reads = found.setdefault(name, _Reads(node))
-        test = _condition_of(ctx, node, parents)
+        test = _condition_of(node, parents)
         if test is not None:
             reads.tests.append(test)
         parent = parents.get(id(node))
@@ -283,46 +291,39 @@ def _reads(ctx: LintContext, names: set[str]) -> dict[str, _Reads]:
 
 def _divides_by(parent: Tree, node: Tree) -> bool:
     """Whether the parent divides by the node: `a / node` or `a /= node`."""
-    if parent.data not in ("binary", "assignment") or parent.children[2] is not node:
+    if parent.data not in ("binary", "assignment"):
         return False
-    return str(parent.children[1]) in ("/", "/=")
-
-
-def _for_condition(ctx: LintContext, loop: Tree) -> Node | None:
-    """A for loop's condition. With only one of condition and step the tree does not say
-    which, so count the `;` before it: two mean the condition is empty."""
-    middle = loop.children[1:-1]
-    if len(middle) != 1:
-        return middle[0] if middle else None
-    only = middle[0]
-    if ctx.pre is None or loop.meta.empty or not isinstance(only, Tree) or only.meta.empty:
-        return None
-    before = ctx.pre.text[loop.meta.start_pos : only.meta.start_pos]
-    return None if before.count(";") >= 2 else only
+    _, op, right = binary_parts(parent)
+    return right is node and op in ("/", "/=")
 
 
 def _multiplies_by(parent: Tree, node: Tree) -> bool:
     """Whether the parent multiplies something by the node, `a * node` or `node * a`: the zero
     wipes out `a` (a scale by a literal, `2.0 * node`, wipes out nothing worth naming)."""
-    if parent.data != "binary" or str(parent.children[1]) != "*":
+    if parent.data != "binary":
         return False
-    other = parent.children[2] if parent.children[0] is node else parent.children[0]
+    left, op, right = binary_parts(parent)
+    if op != "*":
+        return False
+    other = right if left is node else left
     return not (isinstance(other, Tree) and other.data in ("int_literal", "float_literal"))
 
 
-def _condition_of(
-    ctx: LintContext, node: Tree, parents: dict[int, Tree]
-) -> tuple[Tree, Tree] | None:
+def _test_of(statement: Tree) -> Node | None:
+    """The condition a statement tests (a switch: its selector): for a for loop the parser's
+    condition, None in `for (;; i++)` (whose lone middle part is the update)."""
+    if statement.data in _LOOPS:
+        return loop_condition(statement)
+    return first_child(statement)  # an if, a switch or a ?:
+
+
+def _condition_of(node: Tree, parents: dict[int, Tree]) -> tuple[Tree, Tree] | None:
     """The condition expression the node is part of and its statement (if, loop, switch or
     ?:), if it is in one."""
     current: Tree = node
     while (parent := parents.get(id(current))) is not None:
         if parent.data in _TESTS:
-            return (current, parent) if parent.children[_TESTS[parent.data]] is current else None
-        if parent.data == "ternary":
-            return (current, parent) if parent.children[0] is current else None
-        if parent.data == "for_statement":
-            return (current, parent) if _for_condition(ctx, parent) is current else None
+            return (current, parent) if _test_of(parent) is current else None
         if parent.data in ("compound_statement", "function_definition"):
             return None
         current = parent
