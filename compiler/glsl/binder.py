@@ -161,13 +161,17 @@ class Symbol:
 
 @dataclass(eq=False, slots=True)
 class CallSite:
-    """A call of a function: the callee as resolved (None for a builtin or a name the file
-    does not define), and the function it is in (None at file level)."""
+    """A call of a function: the callee as resolved (None for a builtin, a name the file
+    does not define, or overloads the binder cannot choose between), and the function it is
+    in (None at file level)."""
 
     node: Tree
     name: str
     callee: Function | None
     caller: Function | None
+    # the functions it may call: the callee, else every overload of the name that could be
+    # meant (of its arity, or all of them): the call graph's edges
+    targets: list[Function] = field(default_factory=list)
 
 
 @dataclass(eq=False)
@@ -356,9 +360,10 @@ class _Binder:
             if isinstance(node, Tree):
                 self._external(node)
         for call in self.calls:
-            if call.caller is not None and call.callee is not None:
-                call.caller.callees.add(call.callee)
-                call.callee.callers.add(call.caller)
+            if call.caller is not None:
+                for target in call.targets:
+                    call.caller.callees.add(target)
+                    target.callers.add(call.caller)
         return Bindings(
             self.tree,
             self.builtins,
@@ -655,7 +660,13 @@ class _Binder:
                 stack.append((arg, True, False))
             return
         callee = self._resolve_call(name, args, scope) if name in self.overloads else None
-        self.calls.append(CallSite(node, name, callee, self.function))
+        site = CallSite(node, name, callee, self.function)
+        self.calls.append(site)
+        if callee is not None:
+            site.targets.append(callee)
+        elif name in self.overloads:
+            same = [f for f in self.overloads[name] if f.arity == len(args)]
+            site.targets.extend(same or self.overloads[name])
         if callee is not None:
             directions = [p.direction for p in callee.parameters]
         elif name in self.overloads:
