@@ -601,7 +601,8 @@ class _Binder:
     # --- expressions -----------------------------------------------------------------------
 
     def _expression(self, expr: Node, scope: Scope) -> None:
-        """Bind every name in the expression. Without recursion: (node, read, write)."""
+        """Bind every name in the expression, in source order. Without recursion: the stack
+        holds (node, read, write), children pushed last first."""
         stack: list[tuple[Node, bool, bool]] = [(expr, True, False)]
         while stack:
             node, read, write = stack.pop()
@@ -631,10 +632,10 @@ class _Binder:
                 spec = node.children[0]
                 if isinstance(spec, Tree):
                     self._type(spec, scope)
-                for child in node.children[1:]:
+                for child in reversed(node.children[1:]):
                     stack.append((child, True, False))
             else:
-                for child in node.children:
+                for child in reversed(node.children):
                     if isinstance(child, Tree):
                         stack.append((child, True, False))
 
@@ -655,9 +656,9 @@ class _Binder:
         args = _arguments(node)
         name = callee_name(node)
         if name is None:  # a method, `a.length()`: the object is read
-            stack.append((head, True, False))
-            for arg in args:
+            for arg in reversed(args):
                 stack.append((arg, True, False))
+            stack.append((head, True, False))
             return
         callee = self._resolve_call(name, args, scope) if name in self.overloads else None
         site = CallSite(node, name, callee, self.function)
@@ -674,9 +675,9 @@ class _Binder:
             directions = _widest(self.overloads[name], len(args))
         else:
             directions = list(BUILTIN_DIRECTIONS.get(name, ()))
-        for i, arg in enumerate(args):
+        for i in reversed(range(len(args))):
             direction = directions[i] if i < len(directions) else "in"
-            stack.append((arg, direction != "out", direction != "in"))
+            stack.append((args[i], direction != "out", direction != "in"))
 
     def _resolve_call(self, name: str, args: list[Node], scope: Scope) -> Function | None:
         candidates = [f for f in self.overloads[name] if f.arity == len(args)]
