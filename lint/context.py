@@ -4,26 +4,29 @@ helpers rules use to turn tree nodes into spans, findings and edits of the user'
 from __future__ import annotations
 
 from bisect import bisect_left
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import cached_property
 from itertools import islice
 from operator import itemgetter
-from typing import Any
+from typing import Any, TypeVar
 
 from lark import Token, Tree
 
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import Preprocessed
 from glint.compiler.glsl.ast import Variable, first_child
+from glint.compiler.glsl.binder import Bindings, bind
 from glint.compiler.target.glslang import Diagnostic, validate
-from glint.compiler.target.shadertoy import Tab
+from glint.compiler.target.shadertoy import Tab, shadertoy_types
 
 from .finding import Certainty, Edit, Finding, Fix, Severity
 from .nesting import Nesting
 
 Node = Tree | Token
 Span = tuple[int, int, int, int]  # line, column, end line, end column (1-based, end exclusive)
+_T = TypeVar("_T")
 
 # glslang's diagnostics computed ahead for many files with one process (lint/parallel.py, with
 # `validate_many`), by (file, target, text, tab): `LintContext.glslang` takes them from here
@@ -63,7 +66,9 @@ class LintContext:
     nesting: Nesting = field(default_factory=Nesting)  # how deep it nests (lint/nesting.py)
     lines: list[str] = field(default_factory=list)
     # Analyses computed once per file and shared by rules (e.g. the semantic model), by name.
+    # New analyses use `memo` (keyed by the function that computes them, typed) instead.
     cache: dict[str, Any] = field(default_factory=dict)
+    _memo: dict[Callable[..., Any], Any] = field(default_factory=dict)
     _glslang: list[Diagnostic] | None = None
     _index: dict[str, list[Tree]] | None = None
     _all_kinds: bool = False  # whether `_index` holds every kind (the tree is not indexed)
@@ -85,6 +90,22 @@ class LintContext:
             else:
                 self._glslang = []
         return self._glslang
+
+    @cached_property
+    def bindings(self) -> Bindings:
+        """The binder's results for the file (compiler/glsl/binder.py): scopes, symbols, what
+        each name means, the call graph, per-function summaries. Only for a parsed file."""
+        if self.tree is None:
+            raise ValueError("bindings need a parsed file")
+        return bind(self.tree, shadertoy_types(self.tab.channels))
+
+    def memo(self, compute: Callable[[LintContext], _T]) -> _T:
+        """`compute(self)`, computed once per file: an analysis rules share, keyed by the
+        function that computes it (so its result keeps that function's type)."""
+        if compute in self._memo:
+            return self._memo[compute]  # type: ignore[no-any-return]
+        found = self._memo[compute] = compute(self)
+        return found
 
     def nodes(self, kind: str) -> list[Tree]:
         """Every subtree of this kind (`call`, `variable`, ...), in source order. The tree is

@@ -9,7 +9,6 @@ from lark import Tree
 from glint.compiler.glsl.ast import (
     Field,
     Unary,
-    VariableDeclaration,
     binary_parts,
     token_text,
     variable_name,
@@ -67,34 +66,31 @@ def const_value(node: Node, names: dict[str, float] | None = None) -> float | No
 
 
 def global_const_inits(ctx: LintContext) -> dict[str, Node]:
-    """The initializers of `const` globals, by name."""
-    cached = ctx.cache.get("const_inits")
-    if cached is not None:
-        return cached  # type: ignore[no-any-return]
+    """The initializers of `const` globals, by name, in source order (made once per file)."""
+    return ctx.memo(_global_const_inits)
+
+
+def _global_const_inits(ctx: LintContext) -> dict[str, Node]:
     values: dict[str, Node] = {}
-    for node in ctx.tree.children if ctx.tree is not None else ():
-        decl = VariableDeclaration.cast(node)
-        if decl is None or not decl.type.is_const:
-            continue
-        for declarator in decl.declarators:
-            init = declarator.initializer
-            if isinstance(init, Tree):
-                values[declarator.name] = init
-    ctx.cache["const_inits"] = values
+    if ctx.tree is not None:
+        for symbol in ctx.bindings.symbols:
+            init = symbol.initializer
+            if symbol.kind == "global" and symbol.is_const and isinstance(init, Tree):
+                values[symbol.name] = init
     return values
 
 
 def global_constants(ctx: LintContext) -> dict[str, float]:
     """Values of scalar `const` globals with literal initializers (`const float PI = ...`)."""
-    cached = ctx.cache.get("constants")
-    if cached is not None:
-        return cached  # type: ignore[no-any-return]
+    return ctx.memo(_global_constants)
+
+
+def _global_constants(ctx: LintContext) -> dict[str, float]:
     values: dict[str, float] = {}
     for name, init in global_const_inits(ctx).items():  # in order: later ones use earlier
         value = const_value(init, values)
         if value is not None:
             values[name] = value
-    ctx.cache["constants"] = values
     return values
 
 

@@ -1,24 +1,20 @@
 """The functions of a file with their locals: each local's type and initializer, which
 variables the function writes after declaring them (assignments, ++/--, out arguments), the
-one value of a local that is never written again, and which functions mainImage runs."""
+one value of a local that is never written again, and which functions mainImage runs. A view
+by name of what the binder (compiler/glsl/binder.py) resolved, for the rules that think in
+names."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from lark import Token, Tree
+from lark import Tree
 
-from glint.compiler.glsl.ast import (
-    ConditionDeclaration,
-    FunctionDefinition,
-    FunctionPrototype,
-    VariableDeclaration,
-    first_child,
-    operand,
-)
+from glint.compiler.glsl.ast import FunctionDefinition, first_child, operand
+from glint.compiler.glsl.types import array_base
 
-from ..context import LintContext, Node, walk
-from .syntax import call_args, call_name, calls_in, root_var, var_name
+from ..context import LintContext, Node
+from .syntax import call_args, call_name, root_var, var_name
 
 
 @dataclass
@@ -50,76 +46,47 @@ class Function:
         return self.init.get(name)
 
 
-def _type_text(node: Node) -> str:
-    return " ".join(str(t) for t in _tokens(node))
-
-
-def _tokens(node: Node) -> list[Token]:
-    if isinstance(node, Token):
-        return [node]
-    out: list[Token] = []
-    for child in node.children:
-        out += _tokens(child)
-    return out
-
-
-def _prototype(proto: Tree) -> tuple[str, dict[str, tuple[str, str]], list[str]]:
-    view = FunctionPrototype(proto)
-    params: dict[str, tuple[str, str]] = {}
-    order: list[str] = []
-    for param in view.parameters:
-        pname = param.name
-        if pname:
-            qualifier = param.qualifier
-            qual = _type_text(qualifier.syntax) if qualifier is not None else ""
-            params[pname] = (qual, _type_text(param.type.syntax))
-            order.append(pname)
-    return view.name, params, order
-
-
 def functions(ctx: LintContext) -> list[Function]:
     """Every function definition of the file, analysed once per file."""
-    cached = ctx.cache.get("functions")
-    if cached is not None:
-        return cached  # type: ignore[no-any-return]
+    return ctx.memo(_functions)
+
+
+def _functions(ctx: LintContext) -> list[Function]:
+    """The binder's functions (binder.py), seen by name: each definition's parameters and
+    locals, and the names its body writes."""
+    if ctx.tree is None:
+        return []
     result: list[Function] = []
-    if ctx.tree is not None:
-        defs = [n for n in ctx.tree.children if isinstance(n, Tree)
-                and n.data == "function_definition"]  # fmt: skip
-        out_params = {}
-        for node in defs:
-            name, params, order = _prototype(FunctionDefinition(node).prototype.syntax)
-            out_params[name] = [i for i, p in enumerate(order) if "out" in params[p][0]]
-        for node in defs:
-            definition = FunctionDefinition(node)
-            name, params, order = _prototype(definition.prototype.syntax)
-            fn = Function(name, node, definition.body, params, order)
-            _collect(fn, out_params)
-            result.append(fn)
-    ctx.cache["functions"] = result
+    for bound in ctx.bindings.defined:
+        params = {
+            p.name: (" ".join(p.qualifiers), _base(p.type)) for p in bound.parameters if p.name
+        }
+        order = [p.name for p in bound.parameters if p.name]
+        body = FunctionDefinition(bound.definition).body  # type: ignore[arg-type]
+        fn = Function(bound.name, bound.definition, body, params, order)  # type: ignore[arg-type]
+        for local in bound.locals:
+            name = local.name
+            if local.node is not None and local.node.data == "condition_declaration":
+                fn.declared_twice.add(name)  # a while's own variable: not a local's one value
+                continue
+            if name in fn.locals or name in fn.params:
+                fn.declared_twice.add(name)
+            fn.locals[name] = _base(local.type)
+            if isinstance(local.initializer, Tree):
+                fn.init.setdefault(name, local.initializer)
+        fn.written = bound.written_names
+        result.append(fn)
     return result
+
+
+def _base(type_: str | None) -> str:
+    """The declared type, an array's element type for an array (`vec3 c[4]` -> vec3): what
+    the rules compare a name's type with is what the name's elements hold."""
+    return array_base(type_) if type_ else ""
 
 
 def function_map(ctx: LintContext) -> dict[str, Function]:
     return {f.name: f for f in functions(ctx)}
-
-
-def _collect(fn: Function, out_params: dict[str, list[int]]) -> None:
-    for node in walk(fn.body):
-        if node.data == "variable_declaration":
-            decl = VariableDeclaration(node)
-            typ = _type_text(decl.type.type.syntax)
-            for declarator in decl.declarators:
-                name = declarator.name
-                if name in fn.locals or name in fn.params:
-                    fn.declared_twice.add(name)
-                fn.locals[name] = typ
-                init = declarator.initializer
-                if isinstance(init, Tree):
-                    fn.init.setdefault(name, init)
-        elif node.data == "condition_declaration":
-            fn.declared_twice.add(ConditionDeclaration(node).name)
-        fn.written |= writes_of(node, out_params)
 
 
 def writes_of(node: Tree, out_params: dict[str, list[int]]) -> set[str]:
@@ -155,17 +122,12 @@ def resolve(node: Node, fn: Function | None, depth: int = 4) -> Node:
 
 
 def callable_from_main(ctx: LintContext) -> set[str] | None:
-    """Names of the functions mainImage calls, directly or through others (None without one)."""
-    defined = function_map(ctx)
-    if "mainImage" not in defined:
+    """Names of the functions mainImage calls, directly or through others (None without one):
+    the binder's call graph."""
+    if ctx.tree is None:
         return None
-    seen = {"mainImage"}
-    todo = ["mainImage"]
-    while todo:
-        fn = defined[todo.pop()]
-        for call in calls_in(fn.body):
-            name = call_name(call)
-            if name in defined and name not in seen:
-                seen.add(name)
-                todo.append(name)
-    return seen
+    bindings = ctx.bindings
+    roots = [f for f in bindings.defined if f.name == "mainImage"]
+    if not roots:
+        return None
+    return {f.name for f in bindings.reachable(roots) if f.definition is not None}

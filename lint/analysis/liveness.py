@@ -28,10 +28,10 @@ def live_names(ctx: LintContext, fn: Function) -> set[str]:
     an out parameter or a global, passes to a call for its side effects, or tests in a branch or
     loop condition, and (transitively) every variable those are computed from. A variable that
     is assigned but never reaches one of those is dead: its value is never seen."""
-    key = f"live.{fn.name}.{id(fn.node)}"
-    cached = ctx.cache.get(key)
+    known = ctx.memo(_live_by_function)
+    cached = known.get(id(fn.node))
     if cached is not None:
-        return cached  # type: ignore[no-any-return]
+        return cached
     outs = out_param_map(ctx)
     local = {n for n in fn.locals} | {p for p, (q, _) in fn.params.items() if "out" not in q}
     deps: dict[str, set[str]] = {}
@@ -85,8 +85,13 @@ def live_names(ctx: LintContext, fn: Function) -> set[str]:
             if name not in live:
                 live.add(name)
                 todo.append(name)
-    ctx.cache[key] = live
+    known[id(fn.node)] = live
     return live
+
+
+def _live_by_function(ctx: LintContext) -> dict[int, set[str]]:
+    """`live_names` of each function asked about, by id of its definition."""
+    return {}
 
 
 def reaches_output(ctx: LintContext, node: Node, fn: Function, up: dict[int, Tree]) -> bool:

@@ -105,10 +105,10 @@ class UsedBeforeInitialised(Rule):
             for component, origin in sorted(read.origins.items(), key=lambda item: item[0]):
                 if not read.missing >> component & 1:
                     continue
-                key = ("C103-member", id(origin))
-                if key in ctx.cache:
+                reported = ctx.memo(_reported_member_reads)
+                if id(origin) in reported:
                     continue
-                ctx.cache[key] = True
+                reported.add(id(origin))
                 var = read.var
                 member = var.fields[component] if var.fields else var.name
                 call_line = ctx.span(read.node)[0]
@@ -118,3 +118,8 @@ class UsedBeforeInitialised(Rule):
                     f"every path (declared on line {ctx.span(var.token)[0]}); {_FIX}"
                 )
                 yield self.report(ctx, origin, message)
+
+
+def _reported_member_reads(ctx: LintContext) -> set[int]:
+    """The callee reads (ids) of struct members already reported for this file: once each."""
+    return set()

@@ -205,9 +205,10 @@ def lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
     (not a 2D vector that happens to be called n, nor a hash's argument dotted with constants),
     in a function that mainImage runs, whose value reaches that function's result (not a
     lighting term computed and then never used)."""
-    cached = ctx.cache.get("lighting.cosines")
-    if cached is not None:
-        return cached  # type: ignore[no-any-return]
+    return ctx.memo(_lighting_cosines)
+
+
+def _lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
     result: list[tuple[Tree, Function]] = []
     used = callable_from_main(ctx)
     up = ctx.parents()
@@ -221,7 +222,6 @@ def lighting_cosines(ctx: LintContext) -> list[tuple[Tree, Function]]:
                 continue
             if reaches_output(ctx, node, fn, up):
                 result.append((node, fn))
-    ctx.cache["lighting.cosines"] = result
     return result
 
 

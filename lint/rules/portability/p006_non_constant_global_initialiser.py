@@ -6,25 +6,13 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from glint.compiler.glsl.ast import (
-    Call,
-    FullySpecifiedType,
-    FunctionPrototype,
-    Variable,
-    VariableDeclaration,
-)
+from glint.compiler.glsl.ast import Call, Variable, VariableDeclaration
+from glint.compiler.glsl.binder import Bindings, Symbol
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 from ...context import LintContext, walk
 from ...finding import Finding
 from .. import Rule, register
-from ._common import function_prototypes
-
-
-def _qualifier_words(spec: Tree) -> set[str]:
-    """The qualifiers of a `fully_specified_type` (`const`, `uniform`, `highp`, ...)."""
-    return set(FullySpecifiedType(spec).qualifiers)
-
 
 _NOT_CONSTANT_CALLS = ("texture", "texel", "dFd", "fwidth")
 
@@ -68,29 +56,36 @@ class NonConstantGlobal(Rule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         assert ctx.tree is not None
-        functions = {FunctionPrototype(p).name for p in function_prototypes(ctx.tree)}
-        variables: set[str] = set()  # non-const globals declared so far
+        bindings = ctx.bindings
+        functions = {f.name for f in bindings.functions}
         for node in ctx.tree.children:
             declaration = VariableDeclaration.cast(node)
             if declaration is None:
                 continue
-            words = _qualifier_words(declaration.type.syntax)
+            words = set(declaration.type.qualifiers)
             if words & {"uniform", "in", "out"}:
                 continue
             for decl in declaration.declarators:
                 init = decl.initializer
                 if isinstance(init, Tree):
-                    reason = _not_constant(init, variables, functions)
+                    reason = _not_constant(init, bindings, functions)
                     if reason is not None:
                         message = (f"global `{decl.name}` is initialised with {reason}, which "
                                    "is not a constant expression in GLSL ES 3.00; declare it "
                                    "without a value and assign it in mainImage")  # fmt: skip
                         yield self.report(ctx, init, message)
-                if "const" not in words:
-                    variables.add(decl.name)
 
 
-def _not_constant(init: Tree, variables: set[str], functions: set[str]) -> str | None:
+def _is_variable(symbol: Symbol | None) -> bool:
+    """A global that holds a value at run time: not const, not an input of the stage."""
+    return (
+        symbol is not None
+        and symbol.kind == "global"
+        and not {"const", "uniform", "in", "out"} & set(symbol.qualifiers)
+    )
+
+
+def _not_constant(init: Tree, bindings: Bindings, functions: set[str]) -> str | None:
     """What makes an initialiser non-constant, or None (also when unsure)."""
     callees: set[int] = set()
     for node in walk(init):
@@ -107,6 +102,6 @@ def _not_constant(init: Tree, variables: set[str], functions: set[str]) -> str |
             name = Variable(node).name
             if name in UNIFORM_NAMES or name in ("gl_FragCoord", "gl_FrontFacing"):
                 return f"the uniform `{name}`"
-            if name in variables:
+            if _is_variable(bindings.symbol_of(node)):
                 return f"the non-const global `{name}`"
     return None
