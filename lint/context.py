@@ -65,9 +65,8 @@ class LintContext:
     too_deep: bool = False  # nesting beyond what the analysis can follow
     nesting: Nesting = field(default_factory=Nesting)  # how deep it nests (lint/nesting.py)
     lines: list[str] = field(default_factory=list)
-    # Analyses computed once per file and shared by rules (e.g. the semantic model), by name.
-    # New analyses use `memo` (keyed by the function that computes them, typed) instead.
-    cache: dict[str, Any] = field(default_factory=dict)
+    # Analyses computed once per file and shared by rules (the semantic model, the data flow,
+    # ...), keyed by the function that computes them: see `memo`.
     _memo: dict[Callable[..., Any], Any] = field(default_factory=dict)
     _glslang: list[Diagnostic] | None = None
     _index: dict[str, list[Tree]] | None = None

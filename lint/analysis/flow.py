@@ -152,32 +152,34 @@ Summaries = dict[tuple[str, int], "FunctionFlow | None"]  # None: overloads, no 
 
 
 def function_flows(ctx: LintContext) -> list[FunctionFlow]:
-    """The definite-assignment results of every function definition (computed once)."""
-    cached = ctx.cache.get("flow")
-    if cached is None:
-        cached = []
-        if ctx.tree is not None and ctx.pre is not None:
-            signatures = _signatures(ctx.tree)
-            consts = _const_ints(ctx.tree)
-            model = _Facts(ctx)
-            summaries: Summaries = {}
-            structs = {
-                name: tuple(members)
-                for name, members in struct_members(walk_kind(ctx.tree, "struct_specifier")).items()
-                if len(members) <= _MAX_FIELDS
-            }
-            for node in ctx.tree.children:
-                if isinstance(node, Tree) and node.data == "function_definition":
-                    analyzer = _Analyzer(signatures, consts, ctx.pre.text, model, summaries)
-                    analyzer.structs = structs
-                    flow = analyzer.function(node)
-                    cached.append(flow)
-                    # functions are defined before the calls that use the summary (no
-                    # recursion in GLSL); overloads of one arity share no summary
-                    key = (flow.name, len(flow.inout_reads))
-                    summaries[key] = None if key in summaries else flow
-        ctx.cache["flow"] = cached
-    return cached
+    """The definite-assignment results of every function definition (once per file)."""
+    return ctx.memo(_function_flows)
+
+
+def _function_flows(ctx: LintContext) -> list[FunctionFlow]:
+    flows: list[FunctionFlow] = []
+    if ctx.tree is None or ctx.pre is None:
+        return flows
+    signatures = _signatures(ctx.tree)
+    consts = _const_ints(ctx.tree)
+    model = _Facts(ctx)
+    summaries: Summaries = {}
+    structs = {
+        name: tuple(members)
+        for name, members in struct_members(walk_kind(ctx.tree, "struct_specifier")).items()
+        if len(members) <= _MAX_FIELDS
+    }
+    for node in ctx.tree.children:
+        if isinstance(node, Tree) and node.data == "function_definition":
+            analyzer = _Analyzer(signatures, consts, ctx.pre.text, model, summaries)
+            analyzer.structs = structs
+            flow = analyzer.function(node)
+            flows.append(flow)
+            # functions are defined before the calls that use the summary (no
+            # recursion in GLSL); overloads of one arity share no summary
+            key = (flow.name, len(flow.inout_reads))
+            summaries[key] = None if key in summaries else flow
+    return flows
 
 
 def mask_names(var: Var, mask: int) -> str:

@@ -537,14 +537,16 @@ def _shadertoy_values(channels: Sequence[str] = ()) -> dict[str, Value]:
 
 
 def semantic_model(ctx: LintContext) -> Model:
-    """The file's semantic model, built on first use and cached in `ctx.cache["model"]`.
-    Only for a parsed file (rules with `needs_tree`)."""
-    model = ctx.cache.get("model")
-    if model is None:
-        if ctx.tree is None:
-            raise ValueError("semantic_model needs a parsed file")
-        model = ctx.cache["model"] = Model(ctx.tree, ctx.tab.channels)
-    return model
+    """The file's semantic model, built on first use (ctx.memo). Only for a parsed file (rules
+    with `needs_tree`)."""
+    if ctx.tree is None:
+        raise ValueError("semantic_model needs a parsed file")
+    return ctx.memo(_build_model)
+
+
+def _build_model(ctx: LintContext) -> Model:
+    assert ctx.tree is not None
+    return Model(ctx.tree, ctx.tab.channels)
 
 
 def condition_truth(model: Model, cond: Node) -> bool | None:

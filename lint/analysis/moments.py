@@ -1350,15 +1350,16 @@ def _cross(a: MV, b: MV, tags: frozenset) -> MV:
 def moments(ctx: LintContext) -> Moments | None:
     """The first-path events of the file (computed once per file); None without a tree or
     where the file nests deeper than the evaluation can follow."""
-    if "moments" not in ctx.cache:
-        result = None
-        if ctx.tree is not None:
-            try:
-                result = Moments(ctx.tree, _bounds(ctx))
-            except RecursionError:
-                result = None
-        ctx.cache["moments"] = result
-    return ctx.cache["moments"]
+    return ctx.memo(_first_path)
+
+
+def _first_path(ctx: LintContext) -> Moments | None:
+    if ctx.tree is None:
+        return None
+    try:
+        return Moments(ctx.tree, _bounds(ctx))
+    except RecursionError:
+        return None
 
 
 def _bounds(ctx: LintContext) -> Callable[[Node], tuple[float, float]]:

@@ -48,18 +48,20 @@ def is_raw_dot(v: Value) -> bool:
     return v.origin == "dot"
 
 
+def _named_builtin_calls(ctx: LintContext) -> list[tuple[Tree, str]]:
+    assert ctx.tree is not None
+    defined = {definition.name for definition in SourceFile(ctx.tree).functions}
+    return [
+        (node, name) for node in ctx.nodes("call")
+        if (name := callee_name(node)) is not None and name not in defined
+    ]  # fmt: skip
+
+
 def builtin_calls(ctx: LintContext, *names: str) -> Iterator[tuple[Tree, str]]:
     """Calls of these builtins (a function the file defines with the same name is not the
     builtin)."""
-    named = ctx.cache.get("numerical.named_calls")
-    if named is None:  # every numerical rule looks at every call: name them once per file
-        assert ctx.tree is not None
-        defined = {definition.name for definition in SourceFile(ctx.tree).functions}
-        named = ctx.cache["numerical.named_calls"] = [
-            (node, name) for node in ctx.nodes("call")
-            if (name := callee_name(node)) is not None and name not in defined
-        ]  # fmt: skip
-    for node, name in named:
+    # every numerical rule looks at every call: name them once per file
+    for node, name in ctx.memo(_named_builtin_calls):
         if name in names:
             yield node, name
 

@@ -179,15 +179,16 @@ def _sources(fn: Function, node: Node, defined: set[str]) -> set[str]:
 
 
 def _loop_counters(ctx: LintContext) -> set[str]:
-    """The variables for loops declare in their first clause."""
-    found = ctx.cache.get("n013.counters")
-    if found is None:
-        found = ctx.cache["n013.counters"] = {
-            Declarator(d).name
-            for loop in ctx.nodes("for_statement")
-            for d in walk_kind(ForStatement(loop).init, "declarator")
-        }
-    return found  # type: ignore[no-any-return]
+    """The variables for loops declare in their first clause (once per file: ctx.memo)."""
+    return ctx.memo(_declared_loop_counters)
+
+
+def _declared_loop_counters(ctx: LintContext) -> set[str]:
+    return {
+        Declarator(d).name
+        for loop in ctx.nodes("for_statement")
+        for d in walk_kind(ForStatement(loop).init, "declarator")
+    }
 
 
 def _read_names(node: Node, defined: set[str]) -> set[str]:
