@@ -131,3 +131,15 @@ def callable_from_main(ctx: LintContext) -> set[str] | None:
     if not roots:
         return None
     return {f.name for f in bindings.reachable(roots) if f.definition is not None}
+
+
+def function_at(fns: list[Function], node: Node) -> Function | None:
+    """The function whose definition holds the node (by position), None at file scope."""
+    start = getattr(getattr(node, "meta", None), "start_pos", None)
+    if start is None:
+        return None
+    for fn in fns:
+        meta = fn.node.meta
+        if not meta.empty and meta.start_pos <= start < meta.end_pos:
+            return fn
+    return None

@@ -10,7 +10,7 @@ from collections.abc import Iterator
 
 from lark import Token, Tree
 
-from glint.compiler.glsl.ast import SourceFile
+from glint.compiler.glsl.ast import SourceFile, binary_parts
 
 from ...analysis.ranges import Interval
 from ...analysis.syntax import callee_name
@@ -97,3 +97,12 @@ class NumericalRule(Rule):
     ) -> Finding:
         sure = certainty or self.certainty
         return ctx.finding(self.code, severity or self.severity, where, message, fix, sure)
+
+
+def divisor_of(node: Tree) -> Node | None:
+    """The divisor of `a / b` or `a /= b`, None for any other node."""
+    if node.data in ("binary", "assignment"):
+        _, op, right = binary_parts(node)
+        if op == ("/" if node.data == "binary" else "/="):
+            return right
+    return None

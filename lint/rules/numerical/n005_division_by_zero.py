@@ -4,16 +4,13 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lark import Tree
-
-from glint.compiler.glsl.ast import binary_parts
 from glint.compiler.glsl.types import components
 
 from ...analysis.model import semantic_model
 from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import register
-from ._common import Node, NumericalRule, reaches_zero, text, wrap_fix
+from ._common import NumericalRule, divisor_of, reaches_zero, text, wrap_fix
 
 EPSILON = "1e-4"  # the divisor floor N005's fix inserts
 
@@ -53,7 +50,7 @@ class DivisionByZero(NumericalRule):
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
         for node in walk_kind(ctx.tree, "binary", "assignment"):  # type: ignore[arg-type]
-            divisor = _divisor(node)
+            divisor = divisor_of(node)
             if divisor is None:
                 continue
             v = model.value_of(divisor)
@@ -72,11 +69,3 @@ class DivisionByZero(NumericalRule):
                 f"{advice}"
             )
             yield self.emit(ctx, divisor, message, fix)
-
-
-def _divisor(node: Tree) -> Node | None:
-    if node.data in ("binary", "assignment"):
-        _, op, right = binary_parts(node)
-        if op == ("/" if node.data == "binary" else "/="):
-            return right
-    return None

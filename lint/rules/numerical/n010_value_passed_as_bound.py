@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from ...analysis.constants import is_compile_time
-from ...analysis.functions import Function, functions
+from ...analysis.functions import function_at, functions
 from ...analysis.model import semantic_model
 from ...analysis.syntax import call_args
 from ...context import LintContext, Node
@@ -61,7 +61,7 @@ class ValuePassedAsBound(NumericalRule):
             args = call_args(call)
             if len(args) != 3:
                 continue
-            fn = _function_at(fns, call)
+            fn = function_at(fns, call)
             value, bounds = (args[0], args[1:]) if name == "clamp" else (args[2], args[:2])
             if not is_compile_time(ctx, value, fn):
                 continue
@@ -110,15 +110,3 @@ def _number(shown: str) -> float:
         return float(shown.rstrip("fF"))
     except ValueError:
         return 0.0
-
-
-def _function_at(fns: list[Function], node: Node) -> Function | None:
-    """The function whose body holds the node (by position)."""
-    start = getattr(getattr(node, "meta", None), "start_pos", None)
-    if start is None:
-        return None
-    for fn in fns:
-        meta = fn.node.meta
-        if not meta.empty and meta.start_pos <= start < meta.end_pos:
-            return fn
-    return None

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from glint.compiler.glsl.ast import Arguments, binary_parts, leaf_text, operator
+from glint.compiler.glsl.ast import Arguments, leaf_text, operator
 
 from ...analysis.model import semantic_model
 from ...analysis.moments import Event, moments, show
@@ -14,7 +14,7 @@ from ...analysis.syntax import call_args, callee_name
 from ...context import LintContext, walk_kind
 from ...finding import Finding
 from .. import register
-from ._common import Node, NumericalRule, reaches_below, text
+from ._common import Node, NumericalRule, divisor_of, reaches_below, text
 from ._moments import (
     advice,
     call_phrase,
@@ -118,7 +118,7 @@ class DivisionByZeroAtMoment(NumericalRule):
         """`x / max(0.0, y)`: 0 for every y <= 0, where y is known to go below 0."""
         model = None
         for node in walk_kind(ctx.tree, "binary", "assignment"):  # type: ignore[arg-type]
-            divisor = _divisor(node)
+            divisor = divisor_of(node)
             if divisor is None:
                 continue
             other = _floored_at_zero(divisor)
@@ -172,14 +172,6 @@ def _absorbed(ctx: LintContext, event: Event) -> bool:
         else:
             return False
     return False
-
-
-def _divisor(node: Tree) -> Node | None:
-    if node.data in ("binary", "assignment"):
-        _, op, right = binary_parts(node)
-        if op == ("/" if node.data == "binary" else "/="):
-            return right
-    return None
 
 
 def _floored_at_zero(node: Node) -> Node | None:

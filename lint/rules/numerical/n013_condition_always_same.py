@@ -20,7 +20,7 @@ from glint.compiler.glsl.ast import (
 from glint.compiler.target.shadertoy import SHADERTOY_TYPES
 
 from ...analysis.constants import is_compile_time
-from ...analysis.functions import Function, functions
+from ...analysis.functions import Function, function_at, functions
 from ...analysis.model import Model, condition_truth, semantic_model
 from ...analysis.ranges import Interval
 from ...analysis.syntax import binary_op, call_args, callee_name, is_tree
@@ -91,7 +91,7 @@ class ConditionAlwaysSame(NumericalRule):
             for comparison in _comparisons(cond):
                 if not _written_here(ctx, comparison):
                     continue  # from a macro's body: generic code, not the user's text here
-                fn = _function_at(fns, comparison)
+                fn = function_at(fns, comparison)
                 if fn is None or _retested(ctx, comparison, exits):
                     continue
                 found = _always_false(ctx, model, fn, defined, comparison)
@@ -243,14 +243,3 @@ def _written_here(ctx: LintContext, node: Node) -> bool:
 
 def _key(ctx: LintContext, node: Node) -> str:
     return "".join(ctx.node_text(node).split())
-
-
-def _function_at(fns: list[Function], node: Node) -> Function | None:
-    start = getattr(getattr(node, "meta", None), "start_pos", None)
-    if start is None:
-        return None
-    for fn in fns:
-        meta = fn.node.meta
-        if not meta.empty and meta.start_pos <= start < meta.end_pos:
-            return fn
-    return None
