@@ -1,4 +1,4 @@
-"""Exact values at named moments (lint/analysis/moments.py) and the rules that read them: N011
+"""Exact values at named moments (lint/analysis/moments/) and the rules that read them: N011
 division-by-zero-at-moment and N012 domain-at-moment. Each case is a small shader that must be
 reported on one line, next to a nearby one that must not be."""
 

@@ -1,4 +1,4 @@
-"""How N011 and N012 name the moment at which a value is exact (lint/analysis/moments.py): the
+"""How N011 and N012 name the moment at which a value is exact (lint/analysis/moments/): the
 first frame, before the first click, the first iteration of a loop, a uniform ShaderToy does not
 set, the constants passed at a call site."""
 

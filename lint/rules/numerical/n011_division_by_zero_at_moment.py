@@ -35,7 +35,7 @@ class DivisionByZeroAtMoment(NumericalRule):
     `max(0.0, x)` where x goes below 0: it is exactly 0 for every such x.
 
     The shader is run once along that first path with exact constants (see
-    lint/analysis/moments.py); a value it does not know exactly is never reported. A divisor
+    lint/analysis/moments/); a value it does not know exactly is never reported. A divisor
     whose range merely touches 0 is N005's (opt-in).
 
     Why is this bad?

@@ -38,7 +38,7 @@ class DomainAtMoment(NumericalRule):
     loop, the constants a call passes, or a `uniform` that ShaderToy never sets (0).
 
     The shader is run once along that first path with exact constants (see
-    lint/analysis/moments.py); a value it does not know exactly is never reported. A range that
+    lint/analysis/moments/); a value it does not know exactly is never reported. A range that
     merely reaches outside the domain is N001, N002, N003 or N006's (opt-in).
 
     Why is this bad?
