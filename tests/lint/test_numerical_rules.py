@@ -519,3 +519,18 @@ def test_polar_angle_of_unknown_coordinates_is_not_reported() -> None:
     helper = "float angle(vec2 p) { return atan(p.y, p.x); }\n"
     body = "float a = angle(fragCoord / iResolution.y - vec2(0.5));"
     assert codes(shader(body, helper)) == []
+
+
+def test_one_finding_per_divisor_on_a_line_with_a_fix_for_every_occurrence() -> None:
+    src = shader(
+        "float d = distance(fragCoord, vec2(400.0)) * 0.02;\n"
+        "fragColor = vec4(0.1 / d, 0.1 / d, 0.2 / d, 0.0);\n"
+        "fragColor += vec4(1.0 / d);\n",
+        header=False,
+    )
+    found = [f for f in lint(src) if f.code == "N005"]
+    assert len(found) == 2  # one per line, not one per division
+    assert found[0].fix is not None and len(found[0].fix.edits) == 3
+    options = Options(select=["N005"], glslang=False)
+    fixed = lint_text(src, "x.glsl", options, fix=True, unsafe_fixes=True)
+    assert fixed.text.count("max(d, 1e-4)") == 4 and "/ d," not in fixed.text

@@ -8,9 +8,9 @@ from glint.compiler.glsl.types import components
 
 from ...analysis.model import semantic_model
 from ...context import LintContext, walk_kind
-from ...finding import Finding
+from ...finding import Finding, Fix
 from .. import register
-from ._common import NumericalRule, divisor_of, reaches_zero, text, wrap_fix
+from ._common import Node, NumericalRule, divisor_of, reaches_zero, text, wrap_fix
 
 EPSILON = "1e-4"  # the divisor floor N005's fix inserts
 
@@ -49,6 +49,9 @@ class DivisionByZero(NumericalRule):
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         model = semantic_model(ctx)
+        # One finding per divisor on a line: `0.1 / d, 0.2 / d` is one defect (d may be 0),
+        # with a fix that floors every occurrence.
+        found: dict[tuple[int, str], tuple[Node, str, list[Node]]] = {}
         for node in walk_kind(ctx.tree, "binary", "assignment"):  # type: ignore[arg-type]
             divisor = divisor_of(node)
             if divisor is None:
@@ -57,15 +60,31 @@ class DivisionByZero(NumericalRule):
             if not reaches_zero(v):
                 continue
             shown = text(ctx, divisor)
-            fix = None
+            key = (ctx.span(divisor)[0], " ".join(ctx.node_text(divisor).split()))
+            if key in found:
+                found[key][2].append(divisor)
+                continue
             advice = "guard it"
+            floored = v.range.is_nonnegative and (components(v.type) or ("", 0))[0] == "float"
             # a floor keeps the meaning only for divisors that are never negative
-            if v.range.is_nonnegative and (components(v.type) or ("", 0))[0] == "float":
+            if floored:
                 advice = f"add an epsilon: max({shown}, {EPSILON})"
-                fix = wrap_fix(ctx, divisor, "max({}, " + EPSILON + ")", "floor the divisor")
             source = f"; it comes from {v.why}" if v.why else ""
             message = (
                 f"division by {shown}, which may be 0 (range {v.range.describe()}{source}); "
                 f"{advice}"
             )
-            yield self.emit(ctx, divisor, message, fix)
+            found[key] = (divisor, message, [divisor] if floored else [])
+        for first, message, floors in found.values():
+            yield self.emit(ctx, first, message, _floor_fix(ctx, floors))
+
+
+def _floor_fix(ctx: LintContext, divisors: list[Node]) -> Fix | None:
+    """Floor every occurrence of the divisor at EPSILON; None if one cannot be edited."""
+    edits = []
+    for divisor in divisors:
+        fix = wrap_fix(ctx, divisor, "max({}, " + EPSILON + ")", "floor the divisor")
+        if fix is None:
+            return None
+        edits += fix.edits
+    return Fix("floor the divisor", tuple(edits), "unsafe") if edits else None
