@@ -15,9 +15,10 @@ from glint.compiler.glsl.ast import (
     StructSpecifier,
     VariableDeclaration,
 )
+from glint.compiler.glsl.binder import array_text
 
 from ..context import Node
-from .syntax import array_text, spec_text
+from .syntax import spec_text
 
 
 def declared_variables(node: Tree) -> tuple[bool, list[tuple[str, str, Node | None]]]:

@@ -7,7 +7,6 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from glint.compiler.glsl.ast import (
-    ArraySpecifier,
     Field,
     FullySpecifiedType,
     FunctionPrototype,
@@ -19,10 +18,10 @@ from glint.compiler.glsl.ast import (
     call_arguments,
     callee_name,
     first_child,
-    token_text,
     variable_name,
 )
 from glint.compiler.glsl.ast import int_value as int_value  # re-exported
+from glint.compiler.glsl.binder import type_text
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 from glint.compiler.glsl.types import swizzle_index as swizzle_index  # re-exported
 
@@ -50,21 +49,8 @@ def root_variable(node: Node) -> str | None:
 
 
 def spec_text(spec: Tree) -> str:
-    """`vec3`, `float[3]` or a struct name for a type_specifier."""
-    view = TypeSpecifier(spec)
-    array = view.array
-    return view.name + (array_text(array) if array is not None else "")
-
-
-def array_text(spec: Tree) -> str:
-    sizes = [_literal_text(c) for c in ArraySpecifier(spec).sizes]
-    return "".join(f"[{s}]" for s in sizes) if sizes else "[]"
-
-
-def _literal_text(node: Node) -> str:
-    if is_tree(node, "int_literal"):
-        return token_text(node) or ""
-    return ""
+    """`vec3`, `float[3]` or a struct name for a type_specifier (the binder's type_text)."""
+    return type_text(spec)
 
 
 def same_expression(a: Node, b: Node) -> bool:

@@ -78,41 +78,44 @@ def _negated(fn: Function) -> set[str]:
     return names
 
 
-def _view_uses(fn: Function, name: str) -> list[_ViewUse]:
-    """Where `name` is used as the view vector (toward the eye): in a half vector with a light
-    `normalize(name + l)`, a cosine with a normal clamped at 0 (`max(dot(n, name), 0.0)`,
-    `clamp(dot(n, name), 0.0, 1.0)`) or a Schlick factor `1.0 - dot(n, name)`."""
-    uses = []
+def _view_uses(fn: Function) -> dict[str, list[_ViewUse]]:
+    """Where each name is used as the view vector (toward the eye), in one walk of the body: in
+    a half vector with a light `normalize(name + l)`, a cosine with a normal clamped at 0
+    (`max(dot(n, name), 0.0)`, `clamp(dot(n, name), 0.0, 1.0)`) or a Schlick factor
+    `1.0 - dot(n, name)`."""
+    uses: dict[str, list[_ViewUse]] = {}
     for node in walk(fn.body):
         callee = call_name(node)
         args = call_args(node) if callee else []
         if callee == "normalize" and len(args) == 1 and binary_op(args[0]) == "+":
             a, b = Binary(args[0]).left, Binary(args[0]).right  # type: ignore[arg-type]
-            if (var_name(a) == name and vector_role(b, fn) == "L") or (
-                var_name(b) == name and vector_role(a, fn) == "L"
-            ):
-                uses.append(_ViewUse(node, "the half vector"))
+            names = {
+                name
+                for vector, light in ((a, b), (b, a))
+                if (name := var_name(vector)) is not None and vector_role(light, fn) == "L"
+            }
+            for name in names:
+                uses.setdefault(name, []).append(_ViewUse(node, "the half vector"))
         elif callee in ("max", "clamp") and len(args) >= 2 and const_value(args[1]) == 0.0:
-            if _dot_with_normal(fn, args[0], name):
-                uses.append(_ViewUse(node, "a cosine clamped at 0"))
-        elif (
-            binary_op(node) == "-"
-            and const_value(Binary(node).left) == 1.0
-            and _dot_with_normal(fn, Binary(node).right, name)
-        ):
-            uses.append(_ViewUse(node, "a Schlick Fresnel factor"))
+            for name in _dotted_with_normal(fn, args[0]):
+                uses.setdefault(name, []).append(_ViewUse(node, "a cosine clamped at 0"))
+        elif binary_op(node) == "-" and const_value(Binary(node).left) == 1.0:
+            for name in _dotted_with_normal(fn, Binary(node).right):
+                uses.setdefault(name, []).append(_ViewUse(node, "a Schlick Fresnel factor"))
     return uses
 
 
-def _dot_with_normal(fn: Function, node: Node, name: str) -> bool:
-    """`dot(n, name)` or `dot(name, n)` with n a normal."""
+def _dotted_with_normal(fn: Function, node: Node) -> set[str]:
+    """The variables v of `dot(n, v)` or `dot(v, n)` with n a normal."""
     args = call_args(node) if call_name(node) == "dot" else []  # type: ignore[arg-type]
     if len(args) != 2:
-        return False
+        return set()
     a, b = args
-    return (var_name(a) == name and vector_role(b, fn) == "N") or (
-        var_name(b) == name and vector_role(a, fn) == "N"
-    )
+    return {
+        name
+        for vector, normal in ((a, b), (b, a))
+        if (name := var_name(vector)) is not None and vector_role(normal, fn) == "N"
+    }
 
 
 def _rays(fns: list[Function]) -> tuple[dict[str, set[str]], dict[str, dict[str, Tree]]]:
@@ -204,17 +207,18 @@ class RayDirectionAsView(Rule):
         fns = functions(ctx)
         by_name = {f.name: f for f in fns}
         rays, own = _rays(fns)
+        uses_in = {f.name: _view_uses(f) for f in fns}
         views = {
             (f.name, i): uses
             for f in fns
             for i, p in enumerate(f.param_order)
-            if (uses := _view_uses(f, p))
+            if (uses := uses_in[f.name].get(p))
         }
         for f in fns:
             # Reported where the evidence is: in the function that marches along the vector,
             # else at each call that passes one into a parameter used as the view vector.
             for name, evidence in sorted(own[f.name].items()):
-                for use in _view_uses(f, name):
+                for use in uses_in[f.name].get(name, []):
                     yield self._direct(ctx, name, use, evidence)
             for call in calls_in(f.body):
                 callee = by_name.get(call_name(call) or "")
