@@ -9,6 +9,13 @@ precision is the share of its labelled findings, among those it still reports, t
 acting on. The default rule set is the rules at or above `DEFAULT_PRECISION`; the others are
 opt-in (`--select ALL` or by code), as ruff's non-default rules are.
 
+A rule that addresses a rare defect fires a few times on 432 shaders, too few to measure. The
+extra corpus (`../extra-corpus`, or `$GLINT_EXTRA_CORPUS`: the same layout, ShaderToy shaders
+from other public repositories listed in `tests/lint/extra-corpus.tsv`, kept outside the project
+for their licences) adds findings judged the same way, in `tests/lint/labelled/extra/`. A rule's
+precision and judged count are over both; the measurement of the extra corpus is stored, so that
+a checkout without it (CI) still knows which rules earned their place.
+
 The default rule set as a whole is held to `DEFAULT_SET_PRECISION` (issue 26): of its findings
 on the corpus, a labelled sample of at least `DEFAULT_SAMPLE` (all of them if fewer) must be
 worth acting on that often. `--default-sample` prints only that line.
@@ -22,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import tomllib
 from collections import Counter
@@ -38,6 +46,8 @@ from .runner import lint_bytes
 ROOT = Path(__file__).resolve().parents[1]
 LABELS = ROOT / "tests" / "lint" / "labelled"
 CORPUS = ROOT.parent / "shared" / "corpus"
+EXTRA_CORPUS = Path(os.environ.get("GLINT_EXTRA_CORPUS", ROOT.parent / "extra-corpus"))
+EXTRA_LABELS = LABELS / "extra"
 MEASURED = Path(__file__).with_name("precision.json")
 DEFAULT_PRECISION = 0.8  # the bar for a rule to run by default: issue 26 asks 80 % (90 % moonshot)
 # The fewest judged findings that measure a rule's precision: below it a rule stays opt-in.
@@ -134,6 +144,44 @@ class RuleStats:
             "precision": None if self.precision is None else round(self.precision, 3),
         }
 
+    @classmethod
+    def from_json(cls, code: str, entry: dict[str, Any]) -> RuleStats:
+        """A stored measurement back (the extra corpus's, where that corpus is absent)."""
+        verdicts = Counter(
+            {"worth": entry["worth"], "not-worth": entry["not_worth"], "wrong": entry["wrong"]}
+        )
+        return cls(code, entry["count"], entry["files"], entry["labelled"], verdicts, Counter())
+
+    def __add__(self, other: RuleStats) -> RuleStats:
+        return RuleStats(
+            self.code,
+            self.count + other.count,
+            self.files + other.files,
+            self.labelled + other.labelled,
+            self.verdicts + other.verdicts,
+            self.gone + other.gone,
+        )
+
+    @property
+    def earns_default(self) -> bool:
+        """Enough judged findings, precise enough: the bar for running by default."""
+        return (
+            self.labelled >= MIN_JUDGED
+            and self.precision is not None
+            and self.precision >= DEFAULT_PRECISION
+        )
+
+
+def combined(shared: dict[str, RuleStats], extra: dict[str, RuleStats]) -> dict[str, RuleStats]:
+    """Per rule, the shared corpus's measurement and the extra corpus's together."""
+    return {code: s + extra[code] if code in extra else s for code, s in shared.items()}
+
+
+def stored_extra() -> dict[str, RuleStats]:
+    """The extra corpus's stored measurement per rule ({} before the first)."""
+    rules = load_measured().get("extra", {}).get("rules", {})
+    return {code: RuleStats.from_json(code, entry) for code, entry in rules.items()}
+
 
 def measure(labels: list[Label], findings: list[dict[str, Any]]) -> dict[str, RuleStats]:
     """Per rule: its findings on the corpus and the verdicts of the labelled ones it still
@@ -187,6 +235,13 @@ class DefaultSample:
             f"(precision {self.precision:.0%}; the bar is {DEFAULT_SET_PRECISION:.0%})."
         )
 
+    @classmethod
+    def from_json(cls, entry: dict[str, Any]) -> DefaultSample:
+        verdicts = Counter(
+            {"worth": entry["worth"], "not-worth": entry["not_worth"], "wrong": entry["wrong"]}
+        )
+        return cls(entry["count"], entry["labelled"], verdicts, [])
+
     def as_json(self) -> dict[str, Any]:
         return {
             "count": self.count,
@@ -223,20 +278,39 @@ def load_measured() -> dict[str, Any]:
     return json.loads(MEASURED.read_text(encoding="utf-8"))
 
 
+def stored_rule(code: str) -> dict[str, Any]:
+    """A rule's stored measurement, both corpora together, with `count` (the shared corpus's
+    findings) and `extra_count` (the extra corpus's) apart ({} if never measured)."""
+    measured = load_measured()
+    shared = measured.get("rules", {}).get(code)
+    if not shared:
+        return {}
+    extra = measured.get("extra", {}).get("rules", {}).get(code)
+    both = RuleStats.from_json(code, shared)
+    if extra:
+        both = both + RuleStats.from_json(code, extra)
+    return {
+        **both.as_json(),
+        "count": shared["count"],
+        "files": shared["files"],
+        "extra_count": extra["count"] if extra else None,
+    }
+
+
 def precision_note(code: str) -> str:
     """One line for a rule's docs: its measured precision and whether it runs by default."""
-    entry = load_measured().get("rules", {}).get(code)
+    entry = stored_rule(code)
     rule = all_rules()[code]
     state = "default" if rule.default else "opt-in (`--select ALL` or by code)"
     if not entry:
         return f"Runs: {state}; not measured on the corpus yet."
+    found = f"{entry['count']} findings"
+    if entry["extra_count"] is not None:
+        found += f" ({entry['extra_count']} more on the extra corpus)"
     if entry["precision"] is None:
-        return (
-            f"Runs: {state}. On the corpus of real shaders: {entry['count']} findings, "
-            "none labelled."
-        )
+        return f"Runs: {state}. On the corpus of real shaders: {found}, none labelled."
     return (
-        f"Runs: {state}. On the corpus of real shaders: {entry['count']} findings; of "
+        f"Runs: {state}. On the corpus of real shaders: {found}; of "
         f"{entry['labelled']} judged by reading the code, {entry['worth']} worth acting on, "
         f"{entry['not_worth']} right but not worth a change, {entry['wrong']} wrong "
         f"(precision {entry['precision']:.0%})."
@@ -244,30 +318,39 @@ def precision_note(code: str) -> str:
 
 
 def table_markdown(measured: dict[str, Any]) -> str:
-    """The per-rule table: count on the corpus, sampled precision, default or opt-in."""
+    """The per-rule table: count on each corpus, sampled precision over both, default or
+    opt-in."""
     rules = all_rules()
     corpus = measured.get("corpus", {})
+    extra = measured.get("extra", {})
+    extra_corpus = extra.get("corpus", {})
+    extra_rules = extra.get("rules", {})
     lines = [
         TABLE_START,
         "",
         f"On {corpus.get('files', '?')} real ShaderToy shaders that glslang accepts "
-        f"({corpus.get('lines', '?')} lines), every rule enabled, glslang off. "
+        f"({corpus.get('lines', '?')} lines), every rule enabled, glslang off; the extra "
+        f"corpus adds {extra_corpus.get('files', 0)} more from other public repositories. "
         "Precision is the share of a labelled sample, judged by reading the code, worth acting "
-        f"on; a judged rule runs by default with {MIN_JUDGED} or more labelled findings at "
-        f"{DEFAULT_PRECISION:.0%} or more.",
+        f"on, over both; a judged rule runs by default with {MIN_JUDGED} or more labelled "
+        f"findings at {DEFAULT_PRECISION:.0%} or more.",
         "",
-        "| rule | name | severity | findings | files | labelled | worth | not worth | wrong "
-        "| precision | runs |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
+        "| rule | name | severity | findings | files | extra | labelled | worth | not worth "
+        "| wrong | precision | runs |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for code, rule in rules.items():
         e = measured.get("rules", {}).get(code, {})
-        precision = "—" if e.get("precision") is None else f"{e['precision']:.0%}"
+        both = RuleStats.from_json(code, e) if e else None
+        if both is not None and code in extra_rules:
+            both = both + RuleStats.from_json(code, extra_rules[code])
+        j = both.as_json() if both else {}
+        precision = "—" if j.get("precision") is None else f"{j['precision']:.0%}"
         lines.append(
             f"| {code} | {rule.name} | {rule.severity} | {e.get('count', '?')} | "
-            f"{e.get('files', '?')} | {e.get('labelled', 0)} | {e.get('worth', 0)} | "
-            f"{e.get('not_worth', 0)} | {e.get('wrong', 0)} | {precision} | "
-            f"{'default' if rule.default else 'opt-in'} |"
+            f"{e.get('files', '?')} | {extra_rules.get(code, {}).get('count', '—')} | "
+            f"{j.get('labelled', 0)} | {j.get('worth', 0)} | {j.get('not_worth', 0)} | "
+            f"{j.get('wrong', 0)} | {precision} | {'default' if rule.default else 'opt-in'} |"
         )
     lines += ["", TABLE_END]
     return "\n".join(lines)
@@ -276,6 +359,32 @@ def table_markdown(measured: dict[str, Any]) -> str:
 def replace_table(text: str, table: str) -> str:
     start, end = text.index(TABLE_START), text.index(TABLE_END) + len(TABLE_END)
     return text[:start] + table + text[end:]
+
+
+def line_count(files: list[Path]) -> int:
+    return sum(p.read_bytes().count(b"\n") for p in files)
+
+
+def has_extra_corpus() -> bool:
+    return (EXTRA_CORPUS / "glslang-valid.txt").is_file()
+
+
+def measure_extra() -> dict[str, Any] | None:
+    """The extra corpus measured with its own labels, as stored in precision.json (None
+    where the corpus is absent)."""
+    if not has_extra_corpus():
+        return None
+    files = valid_files(EXTRA_CORPUS)
+    labels, findings = load_labels(EXTRA_LABELS), corpus_findings(files)
+    stats = measure(labels, findings)
+    for code, s in stats.items():
+        if s.gone:
+            print(f"{code}: labelled findings no longer reported (extra): {dict(s.gone)}")
+    return {
+        "corpus": {"files": len(files), "lines": line_count(files)},
+        "rules": {code: s.as_json() for code, s in stats.items()},
+        "default": default_sample(labels, findings).as_json(),
+    }
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -312,21 +421,26 @@ def main(argv: list[str] | None = None) -> int:
     files = valid_files(args.corpus)
     labels, findings = load_labels(), corpus_findings(files)
     sample = default_sample(labels, findings)
+    extra = measure_extra()
     if args.default_sample:
         print(sample.line())
         for f in sample.unlabelled:
             print(f"  unlabelled: {f['code']} {f['file']}:{f['line']}:{f['column']}")
+        if extra:
+            print("Extra corpus: " + DefaultSample.from_json(extra["default"]).line())
         return 0
     stats = measure(labels, findings)
-    lines = sum(p.read_bytes().count(b"\n") for p in files)
     measured = {
-        "corpus": {"files": len(files), "lines": lines},
+        "corpus": {"files": len(files), "lines": line_count(files)},
         "rules": {code: s.as_json() for code, s in stats.items()},
         "default": sample.as_json(),
+        "extra": extra or load_measured().get("extra", {}),
     }
     table = table_markdown(measured)
     print(table)
     print(sample.line())
+    if not extra:
+        print(f"(no extra corpus at {EXTRA_CORPUS}: its stored measurement is kept)")
     for code, s in stats.items():
         if s.gone:
             print(f"{code}: labelled findings no longer reported: {dict(s.gone)}")

@@ -5,22 +5,27 @@ the ones worth acting on are still reported, the default rules are the precise o
 from __future__ import annotations
 
 import json
+from collections import Counter
 from typing import Any
 
 import pytest
 
 from glint.lint.precision import (
     CORPUS,
-    DEFAULT_PRECISION,
     DEFAULT_SAMPLE,
     DEFAULT_SET_PRECISION,
-    MIN_JUDGED,
+    EXTRA_CORPUS,
+    EXTRA_LABELS,
     Label,
+    RuleStats,
+    combined,
     corpus_findings,
     default_sample,
+    has_extra_corpus,
     load_labels,
     load_measured,
     measure,
+    stored_extra,
     valid_files,
 )
 from glint.lint.rules import all_rules
@@ -70,20 +75,30 @@ def test_findings_worth_acting_on_are_still_reported(findings: list[dict[str, An
     assert not lost, f"{len(lost)} findings worth acting on are no longer reported:\n{shown}"
 
 
-def test_the_default_rules_are_the_precise_ones(findings: list[dict[str, Any]]) -> None:
+@pytest.fixture(scope="module")
+def extra_findings() -> list[dict[str, Any]] | None:
+    """Every rule on the extra corpus (None where it is absent, as in CI)."""
+    return corpus_findings(valid_files(EXTRA_CORPUS)) if has_extra_corpus() else None
+
+
+def test_the_default_rules_are_the_precise_ones(
+    findings: list[dict[str, Any]], extra_findings: list[dict[str, Any]] | None
+) -> None:
     """A judged rule runs by default exactly when at least MIN_JUDGED of its findings on the
-    corpus are labelled and DEFAULT_PRECISION of them are worth acting on: one that fires
-    rarely or never has no measured precision and stays opt-in, whatever it scores."""
-    stats = measure(load_labels(), findings)
+    corpora are labelled and DEFAULT_PRECISION of them are worth acting on: one that fires
+    rarely or never has no measured precision and stays opt-in, whatever it scores. The extra
+    corpus counts as measured now where it is present, as stored where it is not."""
+    extra = (
+        stored_extra()
+        if extra_findings is None
+        else measure(load_labels(EXTRA_LABELS), extra_findings)
+    )
+    stats = combined(measure(load_labels(), findings), extra)
     for code, rule in all_rules().items():
         if not rule.judged:
             continue
         s = stats[code]
-        precise = (
-            s.labelled >= MIN_JUDGED
-            and s.precision is not None
-            and s.precision >= DEFAULT_PRECISION
-        )
+        precise = s.earns_default
         shown = "no" if s.precision is None else f"{s.precision:.0%}"
         assert rule.default == precise, (
             f"{code}: {shown} precision over {s.labelled} labelled findings, "
@@ -99,6 +114,56 @@ def test_stored_precision_is_current(findings: list[dict[str, Any]]) -> None:
         "regenerate: python -m glint.lint.precision --write, then "
         "glint rule --all --markdown > site/docs/rules.md"
     )
+
+
+needs_extra = pytest.mark.skipif(
+    not has_extra_corpus(), reason=f"no extra corpus at {EXTRA_CORPUS} (optional test data)"
+)
+
+
+@needs_extra
+def test_extra_labels_point_at_the_extra_corpus_as_it_is() -> None:
+    for label in load_labels(EXTRA_LABELS):
+        path = EXTRA_CORPUS / "shadertoy" / label.file
+        lines = path.read_text(encoding="utf-8").split("\n")
+        assert lines[label.line - 1].strip() == label.text, (label.code, label.file, label.line)
+
+
+@needs_extra
+def test_extra_judgements_hold_and_are_stored(
+    extra_findings: list[dict[str, Any]] | None,
+) -> None:
+    """On the extra corpus too: the findings judged worth acting on are still reported, the
+    default rules report none judged wrong, and the stored measurement is this one."""
+    assert extra_findings is not None
+    labels = load_labels(EXTRA_LABELS)
+    reported = {(f["code"], f["file"], f["line"], f["column"]) for f in extra_findings}
+    rules = all_rules()
+    lost = [lb for lb in labels if lb.verdict == "worth" and lb.key not in reported]
+    wrong = [
+        lb
+        for lb in labels
+        if lb.verdict == "wrong" and rules[lb.code].default and lb.key in reported
+    ]
+    assert not lost, [f"{lb.code} {lb.file}:{lb.line}" for lb in lost]
+    assert not wrong, [f"{lb.code} {lb.file}:{lb.line}: {lb.reason}" for lb in wrong]
+    fresh = {code: s.as_json() for code, s in measure(labels, extra_findings).items()}
+    stored = load_measured().get("extra", {}).get("rules", {})
+    assert json.dumps(stored, sort_keys=True) == json.dumps(fresh, sort_keys=True), (
+        "regenerate: python -m glint.lint.precision --write"
+    )
+
+
+def test_stats_of_two_corpora_add_up() -> None:
+    """combined() adds the judged counts and verdicts rule by rule, and a stored measurement
+    reads back as it was written: the default policy over two corpora rests on both."""
+    a = RuleStats("X", 10, 4, 10, Counter({"worth": 7, "not-worth": 3}), Counter())
+    b = RuleStats("X", 6, 5, 6, Counter({"worth": 6}), Counter())
+    assert not a.earns_default  # 10 judged: too few, and 70 %
+    both = combined({"X": a}, {"X": RuleStats.from_json("X", b.as_json())})["X"]
+    assert (both.count, both.labelled, both.verdicts["worth"]) == (16, 16, 13)
+    assert both.precision == 13 / 16 and both.earns_default
+    assert combined({"X": a}, {})["X"] is a
 
 
 def test_the_default_findings_are_labelled_and_worth_acting_on(
