@@ -249,6 +249,57 @@ def test_pf004_a_fetch_that_depends_on_the_loop_through_variables_is_not_reporte
     assert found(src, "PF004") == []
 
 
+_MARCH = """
+float map(vec3 p) { return length(p) - 1.0; }
+vec3 floorColor(vec3 p) { return texture(iChannel1, vec2(0.5)).rgb; }
+vec3 render(vec3 ro, vec3 rd) {
+    float t = 0.0;
+    vec3 acc = vec3(0.0);
+    for (int i = 0; i < 100; i++) {
+        float h = map(ro + rd * t);
+        HIT
+        t += h;
+    }
+    return acc;
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec3 rd = normalize(vec3(fragCoord / iResolution.xy - 0.5, 1.0));
+    fragColor = vec4(render(vec3(0.0, 0.0, -3.0), rd), 1.0);
+}
+"""
+
+
+@pytest.mark.parametrize(
+    "hit",
+    [
+        "if (h < 0.001) { vec3 c = texture(iChannel1, vec2(0.5)).rgb; return c; }",
+        "if (h < 0.001) return texture(iChannel1, vec2(0.5)).rgb;",
+        "if (h < 0.001) { acc = texture(iChannel1, vec2(0.5)).rgb; break; }",
+        "if (h < 0.001) { acc = floorColor(ro + rd * t); break; }",  # a callee on that path
+    ],
+)
+def test_pf004_work_on_the_path_that_leaves_the_loop_runs_once(hit: str) -> None:
+    """A fetch (or a call that fetches) right before the march returns or breaks runs once per
+    ray, not on every step: nothing to hoist. The same fetch on every step is reported."""
+    assert found(_MARCH.replace("HIT", hit), "PF004") == []
+
+
+@pytest.mark.parametrize(
+    "hit",
+    [
+        "acc += texture(iChannel1, vec2(0.5)).rgb;",
+        "acc += floorColor(ro + rd * t);",
+        "if (h < 0.5) { acc += texture(iChannel1, vec2(0.5)).rgb; }",
+    ],
+)
+def test_pf004_work_on_every_step_is_reported(hit: str) -> None:
+    """The same fetch on every step of the march (or behind a condition that does not leave the
+    loop, and a `break` of a switch, which leaves only the switch) is repeated: reported."""
+    assert [f[0] for f in found(_MARCH.replace("HIT", hit), "PF004")] == ["PF004"]
+    in_switch = "switch (i) { case 3: acc += texture(iChannel1, vec2(0.5)).rgb; break; }"
+    assert [f[0] for f in found(_MARCH.replace("HIT", in_switch), "PF004")] == ["PF004"]
+
+
 def test_pf004_a_short_loop_of_one_repeat_is_not_worth_a_finding() -> None:
     src = image(
         "    vec3 col = vec3(0.0);\n"

@@ -14,6 +14,7 @@ from glint.compiler.glsl.ast import (
     binary_parts,
     first_child,
     for_parts,
+    jump_parts,
     leaf_text,
     operand,
     variable_name,
@@ -78,7 +79,7 @@ def _runs(ctx: LintContext, up: dict[int, Tree]) -> dict[str, _Site]:
             return 1
         best = _Site(1, None, None)
         for caller, call in sites.get(name, ()):
-            runs = count(caller.name, depth + 1) * _enclosing_trips(ctx, call, caller, up)
+            runs = count(caller.name, depth + 1) * _repeats(ctx, call, caller, up)
             if runs > best.runs:
                 stated = result[caller.name].stated and _stated(ctx, call, caller, up)
                 best = _Site(min(runs, 1 << 30), caller.name, call, stated)
@@ -417,7 +418,7 @@ class InvariantExpensiveCall(Rule):
         found: list[tuple[Tree, int]] = []
         share = 0
         for node in _pieces(prog, flow, parts, moving):
-            if self._covered(node):
+            if self._covered(node) or id(loop) in _loops_left(node, fn, up):
                 continue
             inside = runs * _enclosing_trips(ctx, node, fn, up)
             cost = prog.cost(node, fn)
@@ -577,6 +578,54 @@ class InvariantExpensiveCall(Rule):
                     moving.add(param)
             outside = max(outside, caller_runs * _enclosing_trips(ctx, loop, caller, up))
         return moving, outside
+
+
+def _loops_left(node: Tree, fn: Function, up: dict[int, Tree]) -> set[int]:
+    """The loops around the node (ids) that the node's path leaves right after it, so it runs
+    at most once per entry to them, not on every pass: `if (hit) { c = texture(...); return c;
+    }` leaves every loop of the function, a statement followed by `break` in the same block its
+    innermost loop (a `break` in a switch leaves only the switch)."""
+    left: set[int] = set()
+    returns = breaks = in_switch = False
+    current: Node = node
+    while (parent := up.get(id(current))) is not None and parent is not fn.node:
+        if parent.data == "jump_statement" and jump_parts(parent)[0] == "return":
+            returns = True
+        elif parent.data == "switch_statement":
+            in_switch = True
+        elif parent.data == "compound_statement":
+            statements = CompoundStatement(parent).statements
+            at = next(i for i, s in enumerate(statements) if s is current)
+            for statement in statements[at + 1 :]:
+                if isinstance(statement, Tree) and statement.data == "jump_statement":
+                    word = jump_parts(statement)[0]
+                    returns |= word == "return"
+                    breaks |= word == "break" and not in_switch
+        elif parent.data in LOOPS and not (
+            parent.data == "for_statement" and ForStatement(parent).init is current
+        ):
+            if returns or breaks:
+                left.add(id(parent))
+            breaks = in_switch = False
+        current = parent
+    return left
+
+
+def _repeats(ctx: LintContext, node: Tree, fn: Function, up: dict[int, Tree]) -> int:
+    """How many times the node runs per run of its function, at most: the product of the trip
+    counts of the loops around it that it does not leave right after it runs."""
+    left = _loops_left(node, fn, up)
+    total = 1
+    current: Node = node
+    while (parent := up.get(id(current))) is not None and parent is not fn.node:
+        if (
+            parent.data in LOOPS
+            and id(parent) not in left
+            and not (parent.data == "for_statement" and ForStatement(parent).init is current)
+        ):
+            total *= trip_count(ctx, parent, fn)
+        current = parent
+    return total
 
 
 def _fetches(node: Tree) -> bool:
