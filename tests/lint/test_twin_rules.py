@@ -95,6 +95,35 @@ def test_p008_leaves_other_targets_and_shadertoys_own_inputs() -> None:
     assert lint(own, "P008") == []
 
 
+def test_p008_a_local_of_the_same_name_hides_the_uniform() -> None:
+    """`float time = iTime;` in mainImage shadows `uniform float time;`: its reads there are
+    of the local, so the uniform is not read at all."""
+    helpers = "uniform float time;\nuniform vec2 resolution;\n"
+    src = main(
+        "    float time = iTime * 0.5;\n    vec2 resolution = iResolution.xy;\n"
+        "    uv += sin(time) / resolution;\n",
+        helpers,
+    )
+    assert lint(src, "P008") == []
+    read = main("    float t = time;\n    uv += sin(t) / resolution;\n", helpers)
+    assert lines(lint(read, "P008")) == [1, 2]
+
+
+def test_p008_a_fallback_for_the_unset_zero_is_left_alone() -> None:
+    """`u == 0.0 ? DEFAULT : u` replaces the zero the shader gets; a mode switch whose zero
+    picks a branch, an else-if chain on the mode, or a value also read outside its guard is
+    still reported."""
+    src = main(
+        "    float b = (u_bright == 0.0) ? 1.2 : u_bright;\n"  # line 7: a fallback
+        "    float g = u_gain != 0.0 ? u_gain : 1.0;\n"  # 8: a fallback, the other way round
+        "    if (u_mode == 0) uv *= 2.0; else if (u_mode == 1) uv *= 3.0;\n"  # 9: a mode
+        "    float h = u_half == 0.0 ? 0.5 : u_half;\n    uv *= b * g * h * u_half;\n",
+        "uniform float u_bright, u_gain, u_half;\nuniform int u_mode;\n",
+    )
+    found = {f.message.split()[2] for f in lint(src, "P008")}
+    assert found == {"u_mode", "u_half"}
+
+
 def test_p008_says_which_branch_or_loop_the_zero_kills() -> None:
     src = main(
         "    if (!u_fast) uv *= 2.0;\n"  # line 6: always true, no else: kills nothing

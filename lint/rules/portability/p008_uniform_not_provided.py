@@ -17,9 +17,11 @@ from glint.compiler.glsl.ast import (
     binary_parts,
     declarator_initializer,
     first_child,
+    if_parts,
     leaf_text,
     loop_condition,
     operand,
+    ternary_parts,
 )
 from glint.compiler.glsl.ast import operator as operator_of
 from glint.compiler.target.shadertoy import SHADERTOY_TYPES
@@ -106,6 +108,8 @@ class UniformNotProvided(Rule):
         for name, (token, typ) in declared.items():
             if name not in reads:
                 continue  # never read: harmless
+            if _falls_back(ctx, name, typ, reads[name].every):
+                continue  # the shader replaces the zero itself: `u == 0.0 ? DEFAULT : u`
             zero = _ZERO.get(typ, f"{typ}(0)")
             message = (
                 f"uniform {typ} {name} is never set by ShaderToy: it is always {zero}"
@@ -121,6 +125,7 @@ class _Reads:
     loop, a switch or a ?:) that read it with their statements, the first division by it."""
 
     first: Tree
+    every: list[Tree] = field(default_factory=list)
     tests: list[tuple[Tree, Tree]] = field(default_factory=list)
     divisor: Tree | None = None
     product: Tree | None = None
@@ -277,7 +282,11 @@ def _reads(ctx: LintContext, names: set[str]) -> dict[str, _Reads]:
         name = leaf_text(node)
         if name not in names:
             continue
+        symbol = ctx.bindings.symbol_of(node)
+        if symbol is not None and "uniform" not in symbol.qualifiers:
+            continue  # a local or parameter of the same name hides the uniform here
         reads = found.setdefault(name, _Reads(node))
+        reads.every.append(node)
         test = _condition_of(node, parents)
         if test is not None:
             reads.tests.append(test)
@@ -287,6 +296,59 @@ def _reads(ctx: LintContext, names: set[str]) -> dict[str, _Reads]:
         if reads.product is None and parent is not None and _multiplies_by(parent, node):
             reads.product = parent
     return found
+
+
+def _falls_back(ctx: LintContext, name: str, typ: str, reads: list[Tree]) -> bool:
+    """Whether the shader handles the unset value itself: every read of the uniform is in a
+    `?:` or an `if` whose condition, with the uniform zero, picks the branch that does not read
+    it while the other branch does (`float b = uBrightness == 0.0 ? DEFAULT_BRIGHTNESS :
+    uBrightness;`), or in such a condition. A mode switch (`if (u_mode == 0) A else B`) is no
+    fallback: the zero still picks the mode."""
+    if typ not in _ZERO_VALUE:
+        return False
+    zero = {name: _ZERO_VALUE[typ]}
+    parents = ctx.parents()
+    guarded: set[int] = set()  # the reads inside a guard that handles the zero
+    for node in reads:
+        current: Node = node
+        while (parent := parents.get(id(current))) is not None:
+            if parent.data in ("ternary", "if_statement"):
+                test, yes, no = (
+                    ternary_parts(parent) if parent.data == "ternary" else if_parts(parent)
+                )
+                value = _value(test, zero)
+                taken, other = (yes, no) if value is True else (no, yes)
+                if (
+                    value is not None
+                    and _uses_value(other, name, parents)
+                    and not _reads_name(taken, name)
+                ):
+                    guarded |= {id(r) for r in reads if _inside(r, parent, parents)}
+                    break
+            current = parent
+    return bool(reads) and all(id(r) in guarded for r in reads)
+
+
+def _reads_name(node: Node | None, name: str) -> bool:
+    return isinstance(node, Tree) and any(leaf_text(v) == name for v in node.find_data("variable"))
+
+
+def _uses_value(node: Node | None, name: str, parents: dict[int, Tree]) -> bool:
+    """Whether the node uses the uniform's value, not only tests it (an else-if chain on a
+    mode tests it in every branch)."""
+    if not isinstance(node, Tree):
+        return False
+    reads = [v for v in node.find_data("variable") if leaf_text(v) == name]
+    return any(_condition_of(v, parents) is None for v in reads)
+
+
+def _inside(node: Tree, ancestor: Tree, parents: dict[int, Tree]) -> bool:
+    current: Node = node
+    while (parent := parents.get(id(current))) is not None:
+        if parent is ancestor:
+            return True
+        current = parent
+    return False
 
 
 def _divides_by(parent: Tree, node: Tree) -> bool:
