@@ -291,7 +291,7 @@ def cross_facts(
 
 # A negative value a dot product with a direction reaches, for the witness: some negative value,
 # however small (how negative is not known).
-_SOME_NEGATIVE = -1e-30
+_SOME_NEGATIVE = -W.SOME
 
 
 def builtin_witness(
@@ -337,5 +337,5 @@ def builtin_witness(
         k = T.size(v.type)
         longest = _length(Value(v.type, comps=tuple(v.parts(k))), k).hi
         parts = [W.normalized(p, longest) for p in W.pairs(v.wit, v.parts(k))]
-        return W.make(parts, why, out_comps)
+        return W.make(parts, W.VIEW_RAY if why == W.CORNER_PIXEL else why, out_comps)
     return None

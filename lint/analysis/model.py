@@ -56,16 +56,22 @@ from .syntax import (
     var_key,
 )
 from .values import Env, Function, Value
-from .witness import FIRST_FRAME, FIRST_FRAME_COUNT, Witness
+from .witness import CORNER_PIXEL, FIRST_FRAME, FIRST_FRAME_COUNT, NOTHING, Witness
 
 # The largest framebuffer or texture side a GPU offers: a resolution is finite, so a positive
 # constant over it (2.0 / iResolution.y, a pixel's width) is strictly positive.
 MAX_RESOLUTION = 16384.0
 
 
-# ShaderToy's uniforms: times and counts never go below zero, a resolution is at least a pixel.
+# The smallest canvas a shader is shown on, in pixels a side: a preview or thumbnail is larger.
+# It makes the bottom-left pixel's screen coordinate fragCoord / iResolution (0.5 / width) small
+# for the witnesses: at most 1/32, so fragCoord / iResolution.xy - 0.5 is negative there.
+MIN_CANVAS = 16.0
+
+
+# ShaderToy's uniforms: times and counts never go below zero, a canvas has some pixels a side.
 SHADERTOY_RANGES: dict[str, Interval] = {
-    "iResolution": Interval(1.0, MAX_RESOLUTION),
+    "iResolution": Interval(MIN_CANVAS, MAX_RESOLUTION),
     "iTime": NONNEG,
     "iTimeDelta": NONNEG,
     "iFrame": NONNEG,
@@ -230,8 +236,8 @@ class Model:
             if not pname:
                 continue
             value = Value(ptype)
-            if name == "mainImage" and pname == "fragCoord":
-                value = Value(ptype, NONNEG)
+            if name == "mainImage" and i == 1 and ptype == "vec2":  # fragCoord, whatever its name
+                value = Value(ptype, NONNEG, wit=_PIXEL)
             elif facts is not None and "out" not in qualifier.split():
                 value = facts[i].but(type=ptype, rel=(), ortho=())
             declared.append((pname, value))
@@ -522,16 +528,21 @@ def _passed(value: Value, arg: Node) -> Value:
     return value
 
 
-# The uniforms' values at the first frame: evidence of what an expression of them reaches.
-_FIRST_FRAME = {
+# The pixel coordinate at the bottom-left pixel: its centre, (0.5, 0.5).
+_PIXEL = Witness(((0.5, -INF), (0.5, -INF)), CORNER_PIXEL)
+
+# The inputs' values at a moment every shader meets (the first frame, the bottom-left pixel):
+# evidence of what an expression of them reaches.
+_WITNESSES = {
     "iTime": Witness(((0.0, -INF),), FIRST_FRAME),
     "iFrame": Witness(((0.0, -INF),), FIRST_FRAME_COUNT),
+    "gl_FragCoord": Witness(((0.5, -INF), (0.5, -INF), NOTHING, NOTHING), CORNER_PIXEL),
 }
 
 
 def _shadertoy_values(channels: Sequence[str] = ()) -> dict[str, Value]:
     return {
-        name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN), wit=_FIRST_FRAME.get(name))
+        name: Value(ty, SHADERTOY_RANGES.get(name, UNKNOWN), wit=_WITNESSES.get(name))
         for name, ty in shadertoy_types(channels).items()
     }
 

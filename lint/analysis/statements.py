@@ -31,6 +31,7 @@ from glint.compiler.glsl.ast import (
 from glint.compiler.glsl.builtins import BUILTIN_FUNCTIONS
 
 from ..context import Node
+from . import witness as W
 from .expressions import ASSIGN_OPS, Evaluator, ModelView
 from .ranges import Interval
 from .scopes import Scopes, join_scopes, widen
@@ -359,7 +360,7 @@ class ForwardPass:
             scopes.assign(name, old.unknown())
         elif is_tree(target, "variable"):
             scopes.assign(name, got.but(type=old.type))
-        elif op == "*=" and got.origin == "rotated" and (kept := _rotated_part(target, old, got)):
+        elif (kept := _component_part(target, op, old, got)) is not None:
             scopes.assign(name, kept)
         else:  # one component or element: each is now the old value or the new one
             scopes.assign(name, Value(old.type, old.range.hull(got.range)))
@@ -371,9 +372,8 @@ def _same_env(a: Env, b: Env) -> bool:
     return a.keys() == b.keys() and all(a[name] is b[name] for name in a)
 
 
-def _rotated_part(target: Node, old: Value, got: Value) -> Value | None:
-    """`v.xy *= rot`: the rotated components take the new ranges, and the length of v is kept
-    (a unit vector stays one: a camera turned by a rotation matrix)."""
+def _swizzled(target: Node, old: Value) -> list[int] | None:
+    """The components `v.xz` names, for a swizzle of a vector variable without repeats."""
     if not is_tree(target, "field"):
         return None
     base, letters = field_parts(target)  # type: ignore[arg-type]
@@ -383,7 +383,53 @@ def _rotated_part(target: Node, old: Value, got: Value) -> Value | None:
     indices = [swizzle_index(c) for c in letters]
     if n < 2 or len(set(indices)) != len(indices) or max(indices) >= n:
         return None
+    return indices
+
+
+def _kept_witness(old: Value, indices: list[int], got: Value, n: int) -> W.Witness | None:
+    """The witness after `v.xz = ...`: the components not written keep theirs (`rd.y` of a
+    view ray stays negative at the bottom-left pixel when `rd.xz` turns), the written ones take
+    the new value's."""
+    if old.wit is None and got.wit is None:
+        return None
+    parts = W.pairs(old.wit, old.parts(n))
+    new = W.pairs(got.wit, got.parts(len(indices)))
+    for i, p in zip(indices, new, strict=True):
+        parts[i] = p
+    why = (got.wit or old.wit).why  # type: ignore[union-attr]
+    return W.make(parts, why, old.parts(n))
+
+
+def _component_part(target: Node, op: str, old: Value, got: Value) -> Value | None:
+    """`v.xz` written: by a rotation, or by any value."""
+    if op == "*=" and got.origin == "rotated":
+        return _rotated_part(target, old, got)
+    return _assigned_part(target, old, got)
+
+
+def _rotated_part(target: Node, old: Value, got: Value) -> Value | None:
+    """`v.xy *= rot`: the rotated components take the new ranges, and the length of v is kept
+    (a unit vector stays one: a camera turned by a rotation matrix)."""
+    indices = _swizzled(target, old)
+    if indices is None:
+        return None
+    n = T.size(old.type)
     parts = old.parts(n)
     for i, c in zip(indices, got.parts(len(indices)), strict=True):
         parts[i] = c.meet(Interval(-1.0, 1.0)) if old.unit else c
-    return Value(old.type, unit=old.unit, comps=tuple(parts))
+    rotated = Value(old.type, unit=old.unit, comps=tuple(parts))
+    return rotated.but(wit=_kept_witness(old, indices, got.but(wit=None), n))
+
+
+def _assigned_part(target: Node, old: Value, got: Value) -> Value | None:
+    """`v.x *= k`: the components written take the new value's ranges and witnesses, the
+    others keep theirs."""
+    indices = _swizzled(target, old)
+    if indices is None or T.size(got.type) != len(indices):
+        return None
+    n = T.size(old.type)
+    parts = old.parts(n)
+    for i, c in zip(indices, got.parts(len(indices)), strict=True):
+        parts[i] = c
+    value = Value(old.type, comps=tuple(parts))
+    return value.but(wit=_kept_witness(old, indices, got, n))

@@ -25,7 +25,13 @@ NOTHING: Pair = (INF, -INF)
 # The first frame and the bottom-left pixel: the inputs every shader meets.
 FIRST_FRAME = "at the first frame, iTime = 0"
 FIRST_FRAME_COUNT = "at the first frame, iFrame = 0"
-CORNER_PIXEL = "at the bottom-left pixel, fragCoord = (0, 0)"
+# The bottom-left pixel's centre: every screen coordinate built from fragCoord is at its lowest
+# there (a view ray built from it points down and left in the camera's frame).
+CORNER_PIXEL = "at the bottom-left pixel, fragCoord = (0.5, 0.5)"
+# A view ray normalized from the screen coordinate, before any camera matrix turns it (the
+# witness does not survive a matrix: a world direction's sign depends on where the camera looks,
+# only a rotation of the other components, `rd.xz *= rot`, keeps it).
+VIEW_RAY = "for view rays towards the bottom-left of the screen"
 TRIG = "where sin or cos of an unbounded argument is negative"
 DOT = "where the vectors of an unclamped dot product with a direction face away"
 
@@ -112,12 +118,14 @@ def mul(a: Pair, ra: Interval, b: Pair, rb: Interval) -> Pair:
 
 
 def div(a: Pair, ra: Interval, b: Pair, rb: Interval) -> Pair:
-    """x / y at x's witness input, for y of one sign: the quotient keeps x's sign, and is
-    at least as far from 0 as x / max|y|."""
-    if rb.lo > 0 and math.isfinite(rb.hi):
-        return _scaled(a, Interval(1 / rb.hi, 1 / rb.hi))
-    if rb.hi < 0 and math.isfinite(rb.lo):
-        return _scaled(a, Interval(1 / rb.lo, 1 / rb.lo))
+    """x / y at x's witness input, for y of one sign: x times 1 / y, whose range is
+    [1 / max y, 1 / min y]. A negative x <= low gives x / y <= low / max y (at least as far
+    from 0), a positive one only x / y <= low / min y (1 / iResolution.x is at most 1 / the
+    smallest canvas)."""
+    if rb.lo > 0:
+        return _scaled(a, Interval(1 / rb.hi if math.isfinite(rb.hi) else 0.0, 1 / rb.lo))
+    if rb.hi < 0:
+        return _scaled(a, Interval(1 / rb.hi, 1 / rb.lo if math.isfinite(rb.lo) else 0.0))
     return NOTHING
 
 
@@ -138,11 +146,18 @@ def unbounded_trig(x: Interval) -> bool:
     return not x.is_bounded or x.hi - x.lo >= 2 * math.pi
 
 
+# Some value of a sign, however close to 0 (how far is not known): a normalized component of a
+# vector of unbounded length, a dot product of vectors that face away.
+SOME = 1e-30
+
+
 def normalized(p: Pair, longest: float) -> Pair:
     """A component of normalize(v) at v's witness: it keeps its sign, scaled by at most
-    1 / longest (the largest length v takes)."""
-    if not math.isfinite(longest) or longest <= 0:
+    1 / longest (the largest length v takes); of an unbounded v only the sign is known."""
+    if longest <= 0 or math.isnan(longest):
         return NOTHING
+    if not math.isfinite(longest):
+        return (-SOME if p[0] < 0 else INF, SOME if p[1] > 0 else -INF)
     lo = p[0] / longest if p[0] < 0 else INF
     hi = p[1] / longest if p[1] > 0 else -INF
     return (max(lo, -1.0) if lo < INF else INF, min(hi, 1.0) if hi > -INF else -INF)

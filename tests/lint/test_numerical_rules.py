@@ -83,7 +83,8 @@ def test_pow_of_an_unclamped_dot_product() -> None:
     assert f.message == (
         "pow base dot(N, H) is negative where the vectors of an unclamped dot product with a "
         "direction face away: pow is undefined there (NaN on most GPUs); clamp it: "
-        "max(dot(N, H), 0.0), or write a square as a product"
+        "pow(max(dot(N, H), 0.0), ...), or use abs(dot(N, H)) for a curve symmetric about 0, "
+        "or write a square as a product"
     )
     assert f.severity == "warning" and f.fix is not None and f.fix.applicability == "unsafe"
 
@@ -115,6 +116,55 @@ def test_pow_base_negative_at_the_first_frame_and_through_sin() -> None:
     assert "where sin or cos of an unbounded argument is negative" in f.message
     assert codes(shader("float s = pow(0.5 + 0.5 * sin(iTime), 7.0);"), "N001") == []
     assert codes(shader("float s = pow(iTime + 1.0, 2.0);")) == []
+
+
+def test_pow_base_negative_at_the_bottom_left_pixel() -> None:
+    f = only(shader("float s = pow(fragCoord.y / iResolution.y - 0.5, 2.0);"), "N001")
+    assert "at the bottom-left pixel, fragCoord = (0.5, 0.5) (down to" in f.message
+    assert "pow(max(fragCoord.y / iResolution.y - 0.5, 0.0), ...)" in f.message
+    assert "abs(fragCoord.y / iResolution.y - 0.5)" in f.message
+    # 0.5 / height is at most 1/32 there: above 0, and above 0.01 (no witness below 0)
+    assert codes(shader("float s = pow(fragCoord.y / iResolution.y, 2.0);"), "N001") == []
+    assert codes(shader("float s = pow(fragCoord.y / iResolution.y - 0.01, 2.0);"), "N001") == []
+    # mainImage's pixel coordinate under another name, and a component written on its own
+    src = (
+        "void mainImage(out vec4 O, in vec2 U) {\n"
+        "    vec2 p = U / iResolution.xy - 0.5;\n    p.x *= iResolution.x / iResolution.y;\n"
+        "    O = vec4(pow(p.x, 3.0));\n}\n"
+    )
+    assert "at the bottom-left pixel" in only(src, "N001").message
+
+
+def test_pow_of_a_view_ray_component_before_the_camera_turns_it() -> None:
+    uv = "vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+    f = only(shader(uv + "vec3 rd = normalize(vec3(uv, 1.5));\nfloat c = pow(rd.y, 0.5);"), "N001")
+    assert "rd.y is negative for view rays towards the bottom-left of the screen:" in f.message
+    assert "(down to" not in f.message  # only its sign is known
+    # turning x and z about the vertical keeps y
+    turned = "rd.xz *= mat2(cos(iTime), sin(iTime), -sin(iTime), cos(iTime));\n"
+    src = shader(
+        uv + "vec3 rd = normalize(vec3(uv, 1.5));\n" + turned + "float c = pow(rd.y, 0.5);"
+    )
+    assert codes(src, "N001") == ["N001"]
+    # a camera matrix: rd.y in the world depends on where the camera looks, so no witness
+    cam = "mat3 ca = mat3(normalize(vec3(1.0, 0.0, sin(iTime))), vec3(0, 1, 0), vec3(0, 0, 1));\n"
+    src = shader(uv + cam + "vec3 rd = ca * normalize(vec3(uv, 1.5));\nfloat c = pow(rd.y, 0.5);")
+    assert codes(src, "N001") == []
+    # z is 1.5 before normalizing: positive everywhere
+    src = shader(uv + "vec3 rd = normalize(vec3(uv, 1.5));\nfloat c = pow(rd.z, 0.5);")
+    assert codes(src, "N001") == []
+    # a sky term guarded by the ray pointing up is clean
+    src = shader(
+        uv + "vec3 rd = normalize(vec3(uv, 1.5));\nif (rd.y > 0.0) { float c = pow(rd.y, 0.5); }"
+    )
+    assert codes(src, "N001") == []
+
+
+def test_a_positive_witness_over_a_resolution_is_bounded_by_the_smallest_canvas() -> None:
+    # at the first frame (iTime + 1) / iResolution.x is 1 / width, at most 1/16: above 0.05
+    assert codes(shader("float s = pow((iTime + 1.0) / iResolution.x - 0.05, 2.0);"), "N001") == []
+    f = only(shader("float s = pow((iTime + 1.0) / iResolution.x - 0.1, 2.0);"), "N001")
+    assert "at the first frame, iTime = 0 (down to -0.0375)" in f.message
 
 
 def test_pow_of_a_colour_channel_from_a_function_and_a_product() -> None:

@@ -498,9 +498,10 @@ def test_poly_range_contains_every_value(lo: float, width: float, coeffs: list[f
 
 
 def test_a_positive_constant_over_the_resolution_is_positive() -> None:
-    # iResolution is finite (no framebuffer is wider than 16384): 2/iResolution.y > 0
+    # iResolution is finite (no framebuffer is wider than 16384): 2/iResolution.y > 0; and a
+    # canvas has at least MIN_CANVAS (16) pixels a side
     r = rng("float px = 2.0 / iResolution.y;", "2.0 / iResolution.y")
-    assert r.lo > 0 and r.hi == 2.0
+    assert r.lo > 0 and r.hi == 2.0 / 16.0
 
 
 def test_a_strict_comparison_keeps_the_length_away_from_zero() -> None:

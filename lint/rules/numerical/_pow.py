@@ -33,7 +33,8 @@ def negative_evidence(base: Value) -> str | None:
         if low < 0:
             assert base.wit is not None  # a constant component is caught above
             where = f" in {_COMPONENTS[i]}" if n > 1 and i < 4 else ""
-            value = "" if base.wit.why == W.DOT else f" (down to {_num(low)})"
+            # how negative is known only where it is not a mere sign (a dot product, a ray)
+            value = f" (down to {_num(low)})" if low < -W.SOME else ""
             return f"is negative{where} {base.wit.why}{value}"
     return None
 

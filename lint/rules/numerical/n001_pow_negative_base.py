@@ -15,10 +15,13 @@ from ._pow import negative_evidence, pow_bases
 class PowNegativeBase(NumericalRule):
     """Finds `pow(x, y)` whose base is negative at a reachable input: a base whose whole range
     is at or below 0 (`pow(clamp(t, 1.0, 3.0) - 3.0, 2.0)`), or one that is negative at a named
-    input: the first frame (`pow(iTime - 1.0, 2.0)`, iTime = 0), sin or cos of an unbounded
-    argument (`pow(sin(iTime), 7.0)`, a colour channel `sin(iTime)` carried through a function's
-    return and a product into `pow(col, vec3(0.4545))`), an unclamped dot product with a
-    direction (`pow(dot(R, V), 32.0)`: negative where R faces away from V).
+    input: the first frame (`pow(iTime - 1.0, 2.0)`, iTime = 0), the bottom-left pixel
+    (`pow(fragCoord.y / iResolution.y - 0.5, 2.0)`; the y of a view ray `normalize(vec3(uv,
+    1.0))`, which points down there; not after a camera matrix, whose world sign depends on
+    where the camera looks), sin or cos of an unbounded argument (`pow(sin(iTime), 7.0)`, a
+    colour channel `sin(iTime)` carried through a function's return and a product into
+    `pow(col, vec3(0.4545))`), an unclamped dot product with a direction
+    (`pow(dot(R, V), 32.0)`: negative where R faces away from V).
 
     A base that only reaches below 0 by interval arithmetic, without such an input, is N020
     (opt-in).
@@ -58,7 +61,8 @@ class PowNegativeBase(NumericalRule):
             shown = text(ctx, base_node)
             message = (
                 f"pow base {shown} {why}: pow is undefined there (NaN on most GPUs); "
-                f"clamp it: max({shown}, 0.0), or write a square as a product"
+                f"clamp it: pow(max({shown}, 0.0), ...), or use abs({shown}) for a curve "
+                f"symmetric about 0, or write a square as a product"
             )
             fix = wrap_fix(ctx, base_node, "max({}, 0.0)", "clamp the base at 0")
             # never above 0: wrong for every input; a witness: wrong at the input it names
