@@ -50,7 +50,7 @@ class PowNegativeBase(NumericalRule):
 
     code = "N001"
     name = "pow-negative-base"
-    default = False  # opt-in until its findings on the corpus are judged (lint/precision.py)
+    default = True  # judged on both corpora (lint/precision.py)
     fixable = "unsafe"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:

@@ -341,7 +341,7 @@ class InvariantExpensiveCall(Rule):
     name = "invariant-expensive-call-in-loop"
     category = "performance"
     severity = "info"
-    default = False
+    default = True
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
         _, other_globals = _global_names(ctx)
