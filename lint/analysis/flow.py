@@ -10,6 +10,14 @@ semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has o
 loop that surely runs is analysed in two passes, its first iteration and the later ones; in the
 first, and at a loop's first test, the values its locals were given before it
 (known_values.py) decide conditions too (`if (h < EPS) break;` with h = 1.0 does not break).
+Counted loops with constant bounds that neither break nor continue are searched: a branch
+`if (d < md)` directly in their bodies, where `md` changes only in the branch, is taken on some
+iteration when the values known there make the condition true for some values of the counters
+(`md = 8.0` and d below 2 in the middle cell): what it writes is written when the loops end.
+A flag tested bare (`if (isGrnd)`) carries a promise for each variable its branches assign: the
+components written or, where the flag was set to `true`, all of them; where the test finds the
+flag false, the promise is what is written (`isGrnd = true;` on the path that leaves `col` to
+`if (isGrnd) col = ...;`).
 A state maps each tracked variable to a bit mask of its written components (vectors are tracked
 per component, through swizzles; everything else as a whole). Joins intersect the masks. Since
 masks only grow, a loop body is analysed once, with the state on entry, and no fixed point is
@@ -680,7 +688,9 @@ class _Analyzer:
                 cond = operand(cond)
             name = variable_name(cond)
             if name is not None:
-                names = self.assigned(then) | (self.assigned(otherwise) if otherwise else frozenset())
+                names = self.assigned(then)
+                if otherwise is not None:
+                    names |= self.assigned(otherwise)
                 found[name] = found.get(name, frozenset()) | names
         return found
 

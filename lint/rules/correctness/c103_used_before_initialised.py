@@ -31,12 +31,15 @@ class UsedBeforeInitialised(Rule):
     bounds), `return`, `break`, `discard`, calls that write `out` arguments, and vector components
     through swizzles. A loop that surely runs is followed through its first iteration with the
     values set before it: a march whose first step cannot stop (`d = 2.0 * EPS`, `t = 0.0`) runs
-    its body, and a nearest-point search whose starting bound the first candidate beats
-    (`md = 8.0` against a distance below 2) writes what it keeps. It stays quiet where the
+    its body. A nearest-point search in loops with constant bounds writes what it keeps when
+    some cell's candidate surely beats the starting bound (`md = 8.0` against a distance below
+    2 in the middle cell, which `md` can only have lowered before). It stays quiet where the
     author ruled the path out: a read under a condition tied to the write's (`if (hit) n = ...;`
-    then `if (hit) use(n)`, or a flag set together with the value), and a case analysis of one
-    value (`if (n == 0) ... if (n == 1) ... if (n == 2)`, or an else-if chain of comparisons of
-    one value) taken as exhaustive.
+    then `if (hit) use(n)`, or a flag set together with the value), a flag set where the value
+    is left to a later `if (flag) v = ...;`, and a case analysis of one value (`if (n == 0) ...
+    if (n == 1) ... if (n == 2)`, or an else-if chain of comparisons of one value) taken as
+    exhaustive. A struct member that no code of the file reads (only written, or never named)
+    does not count: `return s;` with `s.unused` unset hands back nothing anyone looks at.
 
     Why is this bad?
         GLSL does not zero local variables. An uninitialised value is whatever the register held, so
