@@ -10,6 +10,14 @@ semantic model's value ranges decide (`abs(uv.x) < 1.0` with uv in [0, 1]) has o
 loop that surely runs is analysed in two passes, its first iteration and the later ones; in the
 first, and at a loop's first test, the values its locals were given before it
 (known_values.py) decide conditions too (`if (h < EPS) break;` with h = 1.0 does not break).
+Counted loops with constant bounds that neither break nor continue are searched: a branch
+`if (d < md)` directly in their bodies, where `md` changes only in the branch, is taken on some
+iteration when the values known there make the condition true for some values of the counters
+(`md = 8.0` and d below 2 in the middle cell): what it writes is written when the loops end.
+A flag tested bare (`if (isGrnd)`) carries a promise for each variable its branches assign: the
+components written or, where the flag was set to `true`, all of them; where the test finds the
+flag false, the promise is what is written (`isGrnd = true;` on the path that leaves `col` to
+`if (isGrnd) col = ...;`).
 A state maps each tracked variable to a bit mask of its written components (vectors are tracked
 per component, through swizzles; everything else as a whole). Joins intersect the masks. Since
 masks only grow, a loop body is analysed once, with the state on entry, and no fixed point is
@@ -97,6 +105,7 @@ class Var:
     kind: Literal["local", "out", "inout", "in"]
     fields: tuple[str, ...] = ()  # a struct's members, one component each
     depth: int = 0  # how many guards are open where it is declared
+    struct: str = ""  # the struct type's name, for a struct
 
     @property
     def full(self) -> int:
@@ -335,6 +344,23 @@ class _Target:
     continues: list[State] = field(default_factory=list)
 
 
+@dataclass(eq=False)
+class _Sweep:
+    """A counted loop analysed in two passes, for the branch a search surely takes on some
+    iteration (`if (d < md) { md = d; mr = r; }` with md = 8.0 and d below 2 in the middle
+    cell): the loop, its counter and the values it takes (None: unknown or too many)."""
+
+    loop: Tree
+    counter: str
+    values: tuple[float, ...] | None
+    depth: int  # guards open at the loop: an `if` directly in its body has as many
+    targets: int  # loops and switches open in its body: an `if` directly in it has as many
+    clock: int  # the known values' clock before the loop: older values are its first iteration's
+    first: bool = True  # in the first pass
+    # id of an `if` surely taken on some iteration -> the states its taken branch ends with
+    taken: dict[int, list[State]] = field(default_factory=dict)
+
+
 class _Analyzer:
     def __init__(
         self,
@@ -370,6 +396,17 @@ class _Analyzer:
         # set before a loop decide what the model's ranges (widened over the loop) cannot
         self.asking = 0
         self.loop_names: dict[int, frozenset[str]] = {}  # id of a loop -> names it may write
+        self.sweeps: list[_Sweep] = []  # the loops analysed in two passes around the statement
+        self.taken: dict[int, _Sweep] = {}  # id of an `if` surely taken -> the loop it is in
+        # id of a loop -> its writes: name -> where each write starts (positions in the text)
+        self.loop_writes: dict[int, dict[str, list[int]]] = {}
+        # flags: name of a local tested bare (`if (isGrnd)`) -> the names its branches assign
+        self.flag_names: dict[str, frozenset[str]] = {}
+        # name of a flag -> (a variable, its promise): a pseudo variable whose components are
+        # those of the variable that are written, or all of them where the flag is true (set
+        # with `flag = true` on a path that leaves the value to `if (flag) v = ...;`)
+        self.promises: dict[str, list[tuple[Var, Var]]] = {}
+        self.promised: dict[int, list[Var]] = {}  # id of a variable -> its promises
 
     def comps(self, node: Node) -> Comps | None:
         return self.model.comps(node) if self.model is not None else None
@@ -385,6 +422,8 @@ class _Analyzer:
         self.scopes = [{}]
         self.known.clear()
         self.known.structs = self.structs
+        self.flag_names = self.flags(body)
+        self.promises, self.promised = {}, {}
         state: State = {}
         parts = [parameter_parts(param) for param in params]
         if len(parts) == 1 and parts[0][:2] == ("in", "void") and parts[0][3] is None:
@@ -402,6 +441,7 @@ class _Analyzer:
                 continue
             if qualifier == "out" or summarised:
                 var = Var(str(pname), pname, width, qualifier, fields)  # type: ignore[arg-type]
+                var.struct = type_name if fields else ""
                 if qualifier == "out":
                     flow.outs.append(var)
                 else:
@@ -562,7 +602,12 @@ class _Analyzer:
             if id(node) not in self.chains:
                 self.mark_chain(node)
             yes, no = self.condition(cond, state)
+            if yes is not None and no is not None and id(node) not in self.taken:
+                self.sweep(node, cond, then_branch)
             then = self.guarded(cond, then_branch, yes) if yes is not None else None
+            sweep = self.taken.get(id(node))
+            if sweep is not None and then is not None:
+                sweep.taken.setdefault(id(node), []).append(dict(then))
             other = no
             if otherwise is not None and no is not None:
                 if isinstance(otherwise, Tree) and otherwise.data == "if_statement":
@@ -617,12 +662,53 @@ class _Analyzer:
                     self.known.drop(str(name))
                 else:
                     self.known.store(str(name), init)
+                self.flag_set(str(name), _is_true(init), state)
                 continue
             self.known.drop(str(name))
             width, fields = self.shape(type_name, is_array)
             var = Var(str(name), name, width, "local", fields, len(self.guards))  # type: ignore[arg-type]
+            var.struct = type_name if fields else ""
             self.scopes[-1][var.name] = var
             state[id(var)] = 0
+            self.flag_set(var.name, False, state)
+            for flag, names in self.flag_names.items():
+                if var.name in names and flag != var.name:
+                    promise = Var(f"{flag}|{var.name}", name, width, "local", fields)  # type: ignore[arg-type]
+                    self.promises.setdefault(flag, []).append((var, promise))
+                    self.promised.setdefault(id(var), []).append(promise)
+                    state[id(promise)] = 0
+
+    def flags(self, body: Tree) -> dict[str, frozenset[str]]:
+        """The names tested bare as conditions (`if (hit)`, `if (!hit)`) in a function, with the
+        names their branches assign."""
+        found: dict[str, frozenset[str]] = {}
+        for node in walk_kind(body, "if_statement"):
+            cond, then, otherwise = if_parts(node)
+            if isinstance(cond, Tree) and cond.data == "unary" and operator(cond) == "!":
+                cond = operand(cond)
+            name = variable_name(cond)
+            if name is not None:
+                names = self.assigned(then)
+                if otherwise is not None:
+                    names |= self.assigned(otherwise)
+                found[name] = found.get(name, frozenset()) | names
+        return found
+
+    def flag_set(self, name: str, true: bool, state: State) -> None:
+        """A flag is given a value: where it is `true` every promise tied to it holds; any
+        other value keeps only what is written."""
+        for var, promise in self.promises.get(name, ()):
+            if id(promise) in state:
+                state[id(promise)] = promise.full if true else state.get(id(var), 0)
+
+    def flag_false(self, node: Node, state: State) -> None:
+        """Where a tested flag is false, a promise tied to it is what is written."""
+        name = variable_name(node)
+        if name is None or not any(name in scope for scope in self.scopes):
+            return  # a global: a call may change it
+        for var, promise in self.promises.get(name, ()):
+            if id(var) in state and id(promise) in state:
+                state[id(var)] |= state[id(promise)]
 
     def jump(self, node: Tree, state: State) -> State | None:
         jump = JumpStatement(node)
@@ -645,6 +731,7 @@ class _Analyzer:
     def for_loop(self, node: Tree, state: State) -> State | None:
         init, cond, step, body = for_parts(node)
         self.scopes.append({})
+        clock = self.known.clock
         after: State | None = self.statement(init, state)
         if after is None:
             self.pop_scope()
@@ -674,6 +761,9 @@ class _Analyzer:
             first = self.number(start[1]) if counted and start is not None else None
             if counted and start is not None:
                 self.counters.append((start[0], first, True))
+                values = self.counter_values(start, cond, step)
+                where = len(self.guards), len(self.targets)
+                self.sweeps.append(_Sweep(node, start[0], values, *where, clock))
             self.peels += 1  # until the second pass ends: nested peels cost at most 4 times
             self.asking += 1
             end = self.nested(body, dict(enter))
@@ -689,14 +779,17 @@ class _Analyzer:
                 enter = self.condition(cond, enter)[0]
             if counted and start is not None:
                 self.counters.append((start[0], first, False))
+                self.sweeps[-1].first = False
         self.forget(node)
         end = self.nested(body, dict(enter)) if enter is not None else None
         # what the body stored does not hold where a `continue` or `break` left it, nor after
         self.forget(node)
+        sweep = None
         if peel:
             self.peels -= 1
             if counted:
                 self.counters.pop()
+                sweep = self.sweeps.pop()
         self.targets.pop()
         looped = _join([end, *target.continues])
         if looped is not None and step is not None:
@@ -705,7 +798,109 @@ class _Analyzer:
         if looped is not None and cond is not None:  # loop that surely runs has no `after`
             _, again = self.condition(cond, looped)
         self.pop_scope()
-        return _join([leave, again, *target.breaks])
+        result = _join([leave, again, *target.breaks])
+        if sweep is not None and sweep.taken:
+            # a branch the search surely takes on some iteration: what it writes is written
+            # when the loop ends (on every iteration it runs from one of these states)
+            for key in sweep.taken:
+                self.taken.pop(key, None)
+            if result is not None:
+                for states in sweep.taken.values():
+                    written = _join(states) or {}
+                    for var, mask in written.items():
+                        if var in result:
+                            result[var] |= mask
+        return result
+
+    def counter_values(
+        self, start: tuple[str, Node], cond: Node | None, step: Node | None
+    ) -> tuple[float, ...] | None:
+        """The values a counter takes, `for (int i = -1; i <= 1; i++)` -> (-1, 0, 1): a
+        constant start and bound and a constant step; a long run by its ends and its middle
+        (any value it takes will do). None when they are not known."""
+        name, first = start
+        a, delta = self.number(first), _step(step, name)
+        if a is None or a[0] != a[1] or delta is None or delta == 0:
+            return None
+        if not (isinstance(cond, Tree) and cond.data == "binary"):
+            return None
+        left, op, right = binary_parts(cond)
+        if _is_variable(right, name) and op in _FLIP:
+            left, op, right = right, _FLIP[op], left
+        b = self.number(right)
+        if not _is_variable(left, name) or b is None or b[0] != b[1] or op not in _FLIP:
+            return None
+        checks = {"<": float.__lt__, "<=": float.__le__, ">": float.__gt__, ">=": float.__ge__}
+        if op not in checks:
+            return None
+        count = (b[0] - a[0]) / delta
+        if not 0 <= count <= 1e6:
+            return None
+        values = [a[0] + k * delta for k in range(int(count) + 2)]
+        values = [v for v in values if checks[op](float(v), float(b[0]))]
+        if len(values) > _SWEEP:
+            values = [values[0], values[len(values) // 2], values[-1]]
+        return tuple(values) or None
+
+    def sweep(self, node: Tree, cond: Node, branch: Node) -> None:
+        """Whether the search loops around `if (d < md)` surely take it on some iteration: the
+        if stands directly in their bodies, which neither break nor continue, `md` changes in
+        them only in the branch, and for some values of their counters the known values
+        (those set in the body on that iteration, the counters', `md`'s from before the loops,
+        the model's ranges for the rest) make the condition true. Until `md` is first lowered
+        it keeps its first value, so the branch runs at that iteration or before."""
+        if not (self.asking and self.sweeps and isinstance(cond, Tree) and cond.data == "binary"):
+            return
+        left, op, right = binary_parts(cond)
+        if op not in ("<", "<=", ">", ">="):
+            return
+        bounds = [variable_name(side) for side in (left, right)]
+        depth, targets = len(self.guards), len(self.targets)
+        chosen: list[_Sweep] = []
+        for sweep in reversed(self.sweeps):
+            # directly in the loop's body: no branch, loop or switch between
+            if (sweep.depth, sweep.targets) != (depth, targets):
+                break
+            if not sweep.first or sweep.values is None or _jumps(sweep.loop):
+                break
+            chosen.append(sweep)
+            targets -= 1  # the enclosing loop's body holds this loop directly
+        for count in range(1, len(chosen) + 1):
+            loops = chosen[:count]
+            outer = loops[-1]
+            for bound in bounds:
+                if bound is None or not self.only_in(outer.loop, bound, branch):
+                    continue
+                if self.holds_somewhere(cond, loops, bound):
+                    self.taken[id(node)] = outer
+                    return
+
+    def only_in(self, loop: Tree, name: str, branch: Node) -> bool:
+        """Whether every write of `name` in the loop lies in `branch`."""
+        writes = self.loop_writes.get(id(loop))
+        if writes is None:
+            writes = self.loop_writes[id(loop)] = _write_positions(loop)
+        if not isinstance(branch, Tree) or branch.meta.empty:
+            return False
+        lo, hi = branch.meta.start_pos, branch.meta.end_pos
+        return all(lo <= at < hi for at in writes.get(name, ()))
+
+    def holds_somewhere(self, cond: Node, loops: list[_Sweep], bound: str) -> bool:
+        """Whether the condition holds for some values of the loops' counters (at most
+        `_SWEEP` squared tries, each a bounded question)."""
+        outer = loops[-1]
+        names = self.loop_names.get(id(outer.loop))
+        if names is None:
+            names = self.loop_names[id(outer.loop)] = _written_names(outer.loop)
+        counters = {sweep.counter for sweep in loops}
+        # a value stored before the loops holds on their first iteration only: the model's
+        # ranges (which hold on every run) answer for it, but for the bound
+        hidden = {n for n in names - counters - {bound} if self.known.stored_before(n, outer.clock)}
+        tries: list[dict[str, float]] = [{}]
+        for sweep in loops:
+            assert sweep.values is not None
+            tries = [{**t, sweep.counter: v} for t in tries for v in sweep.values]
+        return any(self.known.truth(cond, values, hidden) is True for values in tries)
 
     def forget(self, loop: Tree) -> None:
         """The iterations after the first: the values the loop may change are not known."""
@@ -839,6 +1034,8 @@ class _Analyzer:
                 self.read(target, state, indices=False)
             self.expr(value, state)
             self.write(target, state)
+            if op == "=" and self.promises and _is_true(value):
+                self.flag_set(variable_name(target) or "", True, state)
         elif kind in ("prefix", "postfix"):
             target = operand(node)
             self.read(target, state)
@@ -876,7 +1073,10 @@ class _Analyzer:
         if not (isinstance(node, Tree) and node.data == "binary"
                 and operator(node) in ("&&", "||")):  # fmt: skip
             self.expr(node, state)
-            return self.decided(node, state, dict(state))
+            yes, no = self.decided(node, state, dict(state))
+            if no is not None and self.promises:
+                self.flag_false(node, no)
+            return yes, no
         op = operator(node)
         spine = [node]  # `a && b && c` parses ((a && b) && c): walk the left spine iteratively
         first: Node = first_child(node)
@@ -1088,7 +1288,13 @@ class _Analyzer:
             self.writes.setdefault(id(var), []).append((guards, guards[-1][2] if guards else None))
         if var is not None and id(var) in state:
             # a write the path cannot follow (`a[i] = `, `s.m = `) counts as a whole write
-            state[id(var)] |= var.full if comps is None else sum(1 << c for c in set(comps))
+            bits = var.full if comps is None else sum(1 << c for c in set(comps))
+            state[id(var)] |= bits
+            for promise in self.promised.get(id(var), ()):
+                if id(promise) in state:
+                    state[id(promise)] |= bits
+        if root is not None and self.promises:
+            self.flag_set(variable_name(root) or "", False, state)  # true again only if `= true`
 
     def indices(self, node: Node, state: State) -> None:
         """Evaluate the index expressions inside an lvalue (`a[i + 1].x`): they are reads."""
@@ -1232,6 +1438,7 @@ _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "!=": "!="}
 
 
 _WRITERS = ("assignment", "prefix", "postfix", "call")
+_SWEEP = 9  # counter values tried per loop for a search's branch; a longer run by 3 of them
 _PEELS = 2  # loops nested in one another analysed in two passes (each doubles its body's work)
 
 
@@ -1248,6 +1455,47 @@ def _written_names(node: Tree) -> frozenset[str]:
                 if root is not None:
                     names.add(variable_name(root))  # type: ignore[arg-type]
     return frozenset(names)
+
+
+def _write_positions(node: Tree) -> dict[str, list[int]]:
+    """Where each name is written in `node` (as `_written_names`): name -> start positions."""
+    found: dict[str, list[int]] = {}
+    for kind in _WRITERS:
+        for sub in walk_kind(node, kind):
+            targets = call_arguments(sub) if sub.data == "call" else [assigned_target(sub)]
+            for target in targets:
+                root = _root(target)
+                if root is not None and not sub.meta.empty:
+                    name = variable_name(root)
+                    found.setdefault(name, []).append(sub.meta.start_pos)  # type: ignore[arg-type]
+    return found
+
+
+def _jumps(loop: Tree) -> bool:
+    """Whether a `break` or `continue` stands anywhere in the loop (one of an inner loop's
+    too: simpler, and only quieter)."""
+    jumps = walk_kind(loop, "jump_statement")
+    return any(JumpStatement(sub).keyword in ("break", "continue") for sub in jumps)
+
+
+def _step(step: Node | None, name: str) -> float | None:
+    """How much `i++`, `i--`, `i += 2`, `i -= 0.5` add to the counter; None for anything else."""
+    if not isinstance(step, Tree):
+        return None
+    if step.data in ("prefix", "postfix") and _is_variable(operand(step), name):
+        op = operator(step)
+        return 1.0 if op == "++" else -1.0 if op == "--" else None
+    if step.data == "assignment":
+        target, op, value = binary_parts(step)
+        if not _is_variable(target, name) or op not in ("+=", "-="):
+            return None
+        if isinstance(value, Tree) and value.data in ("int_literal", "float_literal"):
+            try:
+                amount = float(token_text(value).rstrip("fFuU"))  # type: ignore[union-attr]
+            except ValueError:
+                return None
+            return amount if op == "+=" else -amount
+    return None
 
 
 def _assigns(node: Node, name: str) -> bool:

@@ -72,6 +72,10 @@ class KnownValues:
         self.clock = 0
         self.log: list[str] = []  # names stored, in order: a branch drops its own at its end
         self.memo: dict[str, Comps | None] = {}  # the stored values evaluated for a question
+        # for one question: names given a value (a counter at some iteration), names whose
+        # stored value does not hold there (the model's range answers)
+        self.given: dict[str, float] = {}
+        self.hidden: set[str] | frozenset[str] = frozenset()
 
     # --- keeping them -------------------------------------------------------------------------
 
@@ -101,6 +105,11 @@ class KnownValues:
             return None
         return node
 
+    def stored_before(self, name: str, clock: int) -> bool:
+        """Whether `name`'s stored value (if any) was stored before the clock read `clock`."""
+        entry = self.values.get(name)
+        return entry is not None and entry[1] <= clock
+
     def mark(self) -> int:
         return len(self.log)
 
@@ -117,18 +126,28 @@ class KnownValues:
 
     # --- asking -------------------------------------------------------------------------------
 
-    def truth(self, cond: Node) -> bool | None:
+    def truth(
+        self,
+        cond: Node,
+        given: dict[str, float] | None = None,
+        hidden: set[str] | frozenset[str] = frozenset(),
+    ) -> bool | None:
         """Whether a comparison holds here, from the stored values of the variables it reads;
-        None when they do not decide it (or it reads none)."""
+        None when they do not decide it (or it reads none). `given`: names taken to have these
+        values; `hidden`: names whose stored values are not to be used."""
         if not (isinstance(cond, Tree) and cond.data == "binary"):
             return None
         left, op, right = binary_parts(cond)
-        if op not in _COMPARE or not self.values:
+        if op not in _COMPARE or not (self.values or given):
             return None
-        self.memo: dict[str, Comps | None] = {}
+        self.memo = {}
+        self.given, self.hidden = given or {}, hidden
         budget = [_BUDGET]
-        a = self.eval(left, 0, budget)
-        b = self.eval(right, 0, budget)
+        try:
+            a = self.eval(left, 0, budget)
+            b = self.eval(right, 0, budget)
+        finally:
+            self.given, self.hidden = {}, frozenset()
         if a is None or b is None or len(a) != 1 or len(b) != 1:
             return None
         x, y = a[0], b[0]
@@ -150,6 +169,10 @@ class KnownValues:
             return _literal(node)
         if kind == "variable":
             name = variable_name(node)
+            if name in self.given:
+                return (Interval.point(self.given[name]),)
+            if name in self.hidden:
+                return self.fallback(node)
             if name not in self.memo:  # `r.x` and `r.y` evaluate r once
                 stored = self.value(name)
                 if stored is None:
@@ -178,7 +201,7 @@ class KnownValues:
         """`s.m` of a struct built by its constructor, or a swizzle of a vector."""
         base, name = first_child(node), field_name(node)
         base_name = variable_name(base)
-        if base_name is not None:
+        if base_name is not None and base_name not in self.hidden:
             stored = self.value(base_name)
             if isinstance(stored, Tree) and stored.data == "constructor":
                 members = self.structs.get(_called(stored) or "")

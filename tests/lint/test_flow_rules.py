@@ -379,7 +379,8 @@ def test_c103_struct_member_read_by_the_callee() -> None:
             "Hit f(float x) { Hit h; if (x > 0.) h.t = x; return h; }\n"  # fmt: skip
     src = image("fragColor = vec4(f(fragCoord.x).t);", head2)
     findings = lint_source(src, "x.glsl", FAST)
-    assert [f.code for f in findings] == ["C103"] and "`h`" in findings[0].message
+    # h.id is read nowhere: only the member read (h.t) is named
+    assert [f.code for f in findings] == ["C103"] and "`h.t`" in findings[0].message
 
 
 def test_c104_reported_once_per_parameter() -> None:
@@ -545,3 +546,104 @@ def test_c103_value_stored_in_one_branch_is_not_known_in_the_other() -> None:
         "fragColor = vec4(r);",
     )
     assert [c for c, _ in found(src)] == ["C103"]
+
+
+# --- C103: searches taken on some iteration, members nothing reads, flags -----------------------
+
+_SEARCH = (
+    "vec2 x = fragCoord / 40.0; vec2 n = floor(x); vec2 f = fract(x);\n"
+    "vec2 mr, mg; float md = {start};\n"
+    "for (int j = -1; j <= 1; j++)\n"
+    "for (int i = -1; i <= 1; i++) {{\n"
+    "  vec2 g = vec2(float(i), float(j)); vec2 o = hash(n + g);\n"
+    "  o = 0.5 + 0.5 * sin(iTime + 6.2831 * o);\n"
+    "  vec2 r = g + o - f; float d = dot(r, r);\n"
+    "  {test} {{ md = d; mr = r; mg = g; }} }}\n"
+    "fragColor = vec4(mr, mg);"
+)
+
+
+@pytest.mark.parametrize("start", ["8.0", "3.0", "1e20"])
+def test_c103_search_taken_on_some_iteration(start: str) -> None:
+    # the first cell (-1, -1) may lie farther than 3.0 (d up to 8), but the middle cell's
+    # point is nearer than 2: the branch runs there or before, so mr and mg are set
+    src = image(_SEARCH.format(start=start, test="if (d < md)"), _VORONOI_HEAD)
+    assert found(src) == []
+
+
+@pytest.mark.parametrize(
+    ("start", "test"),
+    [
+        ("2.0", "if (d < md)"),  # even the middle cell's d may reach 2
+        ("iTime", "if (d < md)"),  # nothing known of the start
+        ("8.0", "if (d < md && fragCoord.x > 9.0)"),  # another condition may fail
+        ("8.0", "if (d < md) md = 0.0; if (d < md)"),  # md changes outside the branch
+        ("8.0", "if (i == 9) break; if (d < md)"),  # a loop that may stop early
+    ],
+)
+def test_c103_search_that_may_never_take_its_branch(start: str, test: str) -> None:
+    src = image(_SEARCH.format(start=start, test=test), _VORONOI_HEAD)
+    assert {c for c, _ in found(src)} == {"C103"}  # mr, mg
+
+
+def test_c103_search_in_a_loop_that_may_not_run() -> None:
+    src = image(
+        _SEARCH.format(start="8.0", test="if (d < md)").replace("i <= 1", "i <= iFrame"),
+        _VORONOI_HEAD,
+    )
+    assert {c for c, _ in found(src)} == {"C103"}  # mr, mg
+
+
+_MATERIAL = (
+    "struct Mat { vec3 col; float spec; float par; };\n"
+    "Mat material(float id) {\n"
+    "  Mat m; m.col = vec3(1.); m.spec = 0.5;\n"
+    "  if (id > 1.) m.par = 1.;\n"
+    "  return m;\n"
+    "}\n"
+)
+
+
+def test_c103_returned_member_nothing_reads_is_not_reported() -> None:
+    body = "Mat m = material(fragCoord.x);\nfragColor = vec4(m.col * m.spec, 1.);"
+    assert found(image(body, _MATERIAL)) == []
+
+
+def test_c103_returned_member_read_somewhere_is_reported() -> None:
+    body = "Mat m = material(fragCoord.x);\nfragColor = vec4(m.col * m.par, 1.);"
+    findings = lint_source(image(body, _MATERIAL), "x.glsl", FAST)
+    assert [(f.code, f.line) for f in findings] == [("C103", 5)]
+    assert "`m.par`" in findings[0].message
+    # written only (`m.par = 0.`) is not read; compared whole (`==`) reads every member
+    body = "Mat m = material(fragCoord.x); m.par = 0.;\nfragColor = vec4(m.col, 1.);"
+    assert found(image(body, _MATERIAL)) == []
+    body = "Mat a = material(1.), b = material(2.);\nfragColor = vec4(a == b ? 1. : 0.);"
+    assert [c for c, _ in found(image(body, _MATERIAL))] == ["C103"]
+
+
+_FLAG = (
+    "vec3 col; bool ground = false;\n"
+    "if (fragCoord.y > 100.) col = vec3(1.);\n"
+    "else if (fragCoord.x > 50.) ground = true;\n"
+    "else col = vec3(0.);\n"
+)
+
+
+def test_c103_flag_set_where_the_write_is_left_to_a_later_branch() -> None:
+    body = _FLAG + "if (ground) col = vec3(0.5);\nfragColor = vec4(col, 1.);"
+    assert found(image(body)) == []
+    body = _FLAG + "if (!ground) {} else { col = vec3(0.5); }\nfragColor = vec4(col, 1.);"
+    assert found(image(body)) == []
+
+
+@pytest.mark.parametrize(
+    "between",
+    [
+        "ground = fragCoord.x > 60.;",  # the flag changed to anything but true
+        "",  # the flag is not tested before the read
+    ],
+)
+def test_c103_flag_that_no_longer_promises_the_write(between: str) -> None:
+    test = "if (ground) col = vec3(0.5);\n" if between else ""
+    body = _FLAG + between + "\n" + test + "fragColor = vec4(col, 1.);"
+    assert [c for c, _ in found(image(body))] == ["C103"]

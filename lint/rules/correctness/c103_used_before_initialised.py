@@ -4,7 +4,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ...analysis.flow import FunctionFlow, Read, function_flows, mask_names
+from lark import Tree
+
+from glint.compiler.glsl.ast import binary_parts, field_name, first_child
+
+from ...analysis.expression_types import expression_types
+from ...analysis.flow import FunctionFlow, Read, Var, function_flows, mask_names
 from ...context import LintContext
 from ...finding import Finding
 from .. import Rule, register
@@ -26,12 +31,15 @@ class UsedBeforeInitialised(Rule):
     bounds), `return`, `break`, `discard`, calls that write `out` arguments, and vector components
     through swizzles. A loop that surely runs is followed through its first iteration with the
     values set before it: a march whose first step cannot stop (`d = 2.0 * EPS`, `t = 0.0`) runs
-    its body, and a nearest-point search whose starting bound the first candidate beats
-    (`md = 8.0` against a distance below 2) writes what it keeps. It stays quiet where the
+    its body. A nearest-point search in loops with constant bounds writes what it keeps when
+    some cell's candidate surely beats the starting bound (`md = 8.0` against a distance below
+    2 in the middle cell, which `md` can only have lowered before). It stays quiet where the
     author ruled the path out: a read under a condition tied to the write's (`if (hit) n = ...;`
-    then `if (hit) use(n)`, or a flag set together with the value), and a case analysis of one
-    value (`if (n == 0) ... if (n == 1) ... if (n == 2)`, or an else-if chain of comparisons of
-    one value) taken as exhaustive.
+    then `if (hit) use(n)`, or a flag set together with the value), a flag set where the value
+    is left to a later `if (flag) v = ...;`, and a case analysis of one value (`if (n == 0) ...
+    if (n == 1) ... if (n == 2)`, or an else-if chain of comparisons of one value) taken as
+    exhaustive. A struct member that no code of the file reads (only written, or never named)
+    does not count: `return s;` with `s.unused` unset hands back nothing anyone looks at.
 
     Why is this bad?
         GLSL does not zero local variables. An uninitialised value is whatever the register held, so
@@ -66,7 +74,9 @@ class UsedBeforeInitialised(Rule):
         for flow in function_flows(ctx):
             reads = [r for r in flow.reads if r.var.kind == "local" and not r.correlated]
             through = [r for r in reads if r.origins]
-            direct = [r for r in reads if not r.origins]
+            # a struct's members that nothing in the file reads do not count: `return s;`
+            # with `s.unused` unset hands back nothing anyone looks at
+            direct = [r for r in reads if not r.origins and r.missing & _read(ctx, r.var)]
             for group in by_variable(direct).values():
                 yield self.variable(ctx, flow, group)
             yield from self.members(ctx, flow, through)
@@ -75,7 +85,7 @@ class UsedBeforeInitialised(Rule):
         var = group[0].var
         missing = 0
         for read in group:
-            missing |= read.missing
+            missing |= read.missing & _read(ctx, var)
         what = f"`{var.name}{mask_names(var, missing)}`"
         declared = ctx.span(var.token)[0]
         first = ctx.span(group[0].node)[0]
@@ -123,3 +133,49 @@ class UsedBeforeInitialised(Rule):
 def _reported_member_reads(ctx: LintContext) -> set[int]:
     """The callee reads (ids) of struct members already reported for this file: once each."""
     return set()
+
+
+def _read(ctx: LintContext, var: Var) -> int:
+    """The mask of `var`'s components that some code may read: for a struct, the members that
+    the file reads somewhere on a value of its type (or of a type it cannot tell); everything
+    for any other variable."""
+    if not var.fields:
+        return var.full
+    read = ctx.memo(_read_members)
+    if (var.struct, "") in read:  # compared whole
+        return var.full
+    mask = 0
+    for i, member in enumerate(var.fields):
+        if (var.struct, member) in read or ("", member) in read:
+            mask |= 1 << i
+    return mask
+
+
+def _read_members(ctx: LintContext) -> frozenset[tuple[str, str]]:
+    """(struct type, member) of each member the file reads (a field that is not only the target
+    of `=`), the type "" where it cannot be told; (struct type, "") for a struct compared with
+    `==` or `!=`, which reads every member."""
+    types = expression_types(ctx)
+    assigned: set[int] = set()  # ids of fields that an `=` only writes (`s.m = `, `s.m.x = `)
+    for node in ctx.nodes("assignment"):
+        target, op, _ = binary_parts(node)
+        while op == "=" and isinstance(target, Tree) and target.data in ("field", "index"):
+            if target.data == "field":
+                assigned.add(id(target))
+            target = first_child(target)
+    found: set[tuple[str, str]] = set()
+    for node in ctx.nodes("field"):
+        if id(node) in assigned:
+            continue
+        base = types.type_of(first_child(node))
+        if base is None:
+            found.add(("", field_name(node)))
+        elif base in types.structs:
+            found.add((base, field_name(node)))
+    for node in ctx.nodes("binary"):
+        left, op, _ = binary_parts(node)
+        if op in ("==", "!="):
+            base = types.type_of(left)
+            if base is not None and base in types.structs:
+                found.add((base, ""))
+    return frozenset(found)
