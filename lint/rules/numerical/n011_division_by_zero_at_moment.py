@@ -39,6 +39,12 @@ class DivisionByZeroAtMoment(NumericalRule):
     lint/analysis/moments/); a value it does not know exactly is never reported. A divisor
     whose range merely touches 0 is N005's (opt-in).
 
+    Only a division whose infinity or NaN reaches something is reported: the pixel's colour,
+    an out parameter, a global, a return value that goes on. One that is only compared
+    (`t > 0.0` rejects -inf and NaN), bounded (clamp, smoothstep, step; `max(0.0, -inf)` is
+    0) or left in a component nobody reads goes no further. x / 0 is an infinity, 0 / 0 and
+    mod(x, 0) are NaN, which min, max and clamp do not reliably absorb.
+
     Why is this bad?
         x / 0 is infinity and 0 / 0 is NaN, and they reach the pixel or, in a buffer, the state
         it keeps for every later frame. A moment that always comes (the first frame, the first
