@@ -468,3 +468,21 @@ def test_a_non_finite_value_written_to_a_global_escapes() -> None:
     )
     (finding,) = [f for f in lint(src) if f.code == "N011"]
     assert "reaches the global speed" in finding.message
+
+
+def test_a_value_carried_to_the_next_iteration_is_followed() -> None:
+    # b reads the infinity only on the second pass of the body
+    src = main(
+        """
+    float a = 0.0, b = 0.0;
+    for (int i = 0; i < 4; i++) { b = a; a = 1.0 / iTime; }
+    fragColor = vec4(b);"""
+    )
+    assert lines(src) == [line_of(src, "1.0 / iTime")]
+    src = main(
+        """
+    float a = 0.0, b = 0.0;
+    for (int i = 0; i < 4; i++) { b = a; a = 1.0 / iTime; }
+    fragColor = vec4(b > 1.0 ? 1.0 : 0.0);"""
+    )
+    assert lines(src) == []

@@ -22,9 +22,10 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 
-from lark import Token, Tree
+from lark import Tree
 
 from glint.compiler.glsl.ast import (
+    ConditionDeclaration,
     SwitchStatement,
     binary_parts,
     definition_parts,
@@ -235,6 +236,8 @@ class EscapeCheck:
                 self._callers(fn, returned, 1, set())
         except Escaped as escaped:
             return escaped
+        except RecursionError:  # an expression nested deeper than the walk can follow
+            return Escaped("", ALL)
         return None
 
     # --- where it starts ------------------------------------------------------------------
@@ -421,12 +424,9 @@ class _Flow:
         return current
 
     def _declare_condition(self, node: Tree, env: _Env) -> None:
-        name = next((str(c) for c in node.children if isinstance(c, Token)), None)
-        value = node.children[-1]
-        t = self.expr(value, env)
-        if name:
-            self.locals.add(name)
-            self._set(env, name, t)
+        decl = ConditionDeclaration(node)
+        self.locals.add(decl.name)
+        self._set(env, decl.name, self.expr(decl.initializer, env))
 
     def _switch(self, node: Tree, env: _Env) -> _Env | None:
         switch = SwitchStatement(node)
