@@ -333,3 +333,156 @@ def test_max_zero_as_a_divisor_is_zero_for_every_negative_value() -> None:
     (finding,) = [f for f in lint(src) if f.code == "N011"]
     assert finding.line == line_of(src, "float a")
     assert "exactly 0 for every rd.y <= 0" in finding.message
+
+
+# --- where the infinity or NaN goes (lint/analysis/moments/escape.py) -------------------------
+
+# A swept-disk test in the style of a game buffer: at the first frame the velocity step is 0,
+# so `a` is 0 and t is +-inf (or NaN where the numerator is 0).
+PLANE = """
+float iPlane(vec2 ro, vec2 rd, vec3 pla) {
+    float a = dot(rd, pla.xy);
+    float t = (1.0 - pla.z - dot(ro, pla.xy)) / a;
+    if (t >= 1.0) t = -1.0;
+    return t;
+}
+"""
+
+
+def test_a_quotient_only_compared_is_not_reported() -> None:
+    # +inf is cut inside iPlane, -inf and NaN fail `t1 > 0.0`: nothing non-finite is stored
+    src = main(
+        """
+    float t = 1000.0;
+    float t1 = iPlane(uv, vec2(iTimeDelta), vec3(-1.0, 0.0, 1.0));
+    if (t1 > 0.0 && t1 < t) { t = t1; }
+    fragColor = vec4(t);""",
+        PLANE,
+    )
+    assert lines(src) == []
+
+
+def test_a_quotient_that_passes_a_comparison_unguarded_is_reported() -> None:
+    # without the `t1 > 0.0` test, -inf (and NaN) reach the colour
+    src = main(
+        """
+    float t1 = iPlane(uv, vec2(iTimeDelta), vec3(-1.0, 0.0, 1.0));
+    fragColor = vec4(t1);""",
+        PLANE,
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "float t1 = iPlane")
+    assert "reaches fragColor (the pixel's colour)" in finding.message
+
+
+def test_an_infinity_clamped_by_max_of_its_sign_is_not_reported() -> None:
+    # -1 / +0 is -inf, and max(0.0, -inf) is 0
+    src = main("fragColor = vec4(max(0.0, -1.0 / iTime));")
+    assert lines(src) == []
+    # min(1.0, +inf) is 1, and smoothstep and clamp bound both infinities
+    src = main("fragColor = vec4(min(1.0, (uv.x + 1.0) / iTime));")
+    assert lines(src) == []
+    src = main("fragColor = vec4(smoothstep(0.0, 1.0, 0.5 + 2.0 / iTime));")
+    assert lines(src) == []
+
+
+def test_an_infinity_of_the_other_sign_passes_max() -> None:
+    src = main("fragColor = vec4(max(0.0, 1.0 / iTime));")
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert "an infinity reaches fragColor" in finding.message
+
+
+def test_0_over_0_is_nan_and_max_does_not_absorb_it() -> None:
+    src = main("fragColor = vec4(max(0.0, sin(iTime) / iTime));")
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert "(0/0: NaN)" in finding.message and "NaN reaches fragColor" in finding.message
+    # comparisons do: NaN > 0.0 is false
+    src = main("fragColor = vec4(sin(iTime) / iTime > 0.0 ? 1.0 : 0.0);")
+    assert lines(src) == []
+
+
+def test_an_infinity_stored_then_multiplied_into_the_colour_is_reported() -> None:
+    src = main(
+        """
+    float k = 1.0 / iTime;
+    vec3 col = vec3(0.5, 0.6, 0.7);
+    col *= k;
+    fragColor = vec4(col, 1.0);"""
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert finding.line == line_of(src, "1.0 / iTime")
+    assert "at the first frame (iTime = 0), and an infinity reaches fragColor" in finding.message
+
+
+def test_an_infinity_overwritten_before_use_is_not_reported() -> None:
+    src = main(
+        """
+    float k = 1.0 / iTime;
+    k = 2.0;
+    fragColor = vec4(k);"""
+    )
+    assert lines(src) == []
+
+
+REP = """
+vec3 opRep(vec3 p, vec3 c) {
+    return mod(p, c) - 0.5 * c;
+}
+"""
+
+
+def test_a_nan_component_nobody_reads_is_not_reported() -> None:
+    # mod by c.z = 0 makes only .z NaN
+    src = main(
+        """
+    vec3 q = opRep(vec3(uv, 1.0), vec3(4.0, 4.0, 0.0));
+    fragColor = vec4(length(q.xy));""",
+        REP,
+    )
+    assert lines(src) == []
+    src = main(
+        """
+    vec3 q = opRep(vec3(uv, 1.0), vec3(4.0, 4.0, 0.0));
+    fragColor = vec4(length(q));""",
+        REP,
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert "makes opRep() take mod by c" in finding.message
+    assert "NaN reaches fragColor" in finding.message
+
+
+def test_a_non_finite_argument_is_followed_into_the_callee() -> None:
+    helpers = """
+float inside(float x) { return x < 0.5 ? 1.0 : 0.0; }
+float scale(float x) { return 2.0 * x; }
+"""
+    src = main("fragColor = vec4(inside(1.0 / iTime));", helpers)
+    assert lines(src) == []
+    src = main("fragColor = vec4(scale(1.0 / iTime));", helpers)
+    assert lines(src) == [line_of(src, "1.0 / iTime")]
+
+
+def test_a_non_finite_value_written_to_a_global_escapes() -> None:
+    src = "float speed;\nvoid step_it() { speed = 1.0 / iTimeDelta; }\n" + main(
+        "step_it();\n    fragColor = vec4(0.5);"
+    )
+    (finding,) = [f for f in lint(src) if f.code == "N011"]
+    assert "reaches the global speed" in finding.message
+
+
+def test_a_value_carried_to_the_next_iteration_is_followed() -> None:
+    # b reads the infinity only on the second pass of the body
+    src = main(
+        """
+    float a = 0.0, b = 0.0;
+    for (int i = 0; i < 4; i++) { b = a; a = 1.0 / iTime; }
+    fragColor = vec4(b);"""
+    )
+    assert lines(src) == [line_of(src, "1.0 / iTime")]
+    src = main(
+        """
+    float a = 0.0, b = 0.0;
+    for (int i = 0; i < 4; i++) { b = a; a = 1.0 / iTime; }
+    fragColor = vec4(b > 1.0 ? 1.0 : 0.0);"""
+    )
+    assert lines(src) == []

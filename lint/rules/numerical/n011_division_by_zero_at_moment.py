@@ -6,10 +6,11 @@ from collections.abc import Iterator
 
 from lark import Tree
 
-from glint.compiler.glsl.ast import Arguments, leaf_text, operator
+from glint.compiler.glsl.ast import leaf_text
 
 from ...analysis.model import semantic_model
 from ...analysis.moments import Event, moments, show
+from ...analysis.moments.escape import Escaped, escape_check, kinds
 from ...analysis.syntax import call_args, callee_name
 from ...context import LintContext, walk_kind
 from ...finding import Finding
@@ -37,6 +38,12 @@ class DivisionByZeroAtMoment(NumericalRule):
     The shader is run once along that first path with exact constants (see
     lint/analysis/moments/); a value it does not know exactly is never reported. A divisor
     whose range merely touches 0 is N005's (opt-in).
+
+    Only a division whose infinity or NaN reaches something is reported: the pixel's colour,
+    an out parameter, a global, a return value that goes on. One that is only compared
+    (`t > 0.0` rejects -inf and NaN), bounded (clamp, smoothstep, step; `max(0.0, -inf)` is
+    0) or left in a component nobody reads goes no further. x / 0 is an infinity, 0 / 0 and
+    mod(x, 0) are NaN, which min, max and clamp do not reliably absorb.
 
     Why is this bad?
         x / 0 is infinity and 0 / 0 is NaN, and they reach the pixel or, in a buffer, the state
@@ -77,10 +84,17 @@ class DivisionByZeroAtMoment(NumericalRule):
         found = moments(ctx)
         reported: set[int] = set()
         events = [e for e in ordered_events(ctx, found) if e.kind in ("divide", "mod", "atan")]
-        for event, others in first_per_origin(events):
-            if event.kind == "divide" and _absorbed(ctx, event.origin()):
-                continue
-            message = self._message(ctx, event)
+        sinks: dict[int, Escaped | None] = {}
+        kept = []
+        for event in events:
+            if event.kind != "atan" and reportable(event):
+                # only where the infinity or NaN reaches something (atan(0, 0) is not one)
+                sinks[id(event)] = escape_check(ctx).escape(event)
+                if sinks[id(event)] is None:
+                    continue
+            kept.append(event)
+        for event, others in first_per_origin(kept):
+            message = self._message(ctx, event, sinks.get(id(event)))
             if message is None:
                 continue
             if others:
@@ -89,7 +103,7 @@ class DivisionByZeroAtMoment(NumericalRule):
             yield self.emit(ctx, event.where, message)
         yield from self._half_space(ctx, reported)
 
-    def _message(self, ctx: LintContext, event: Event) -> str | None:
+    def _message(self, ctx: LintContext, event: Event, sink: Escaped | None) -> str | None:
         inner = event.origin()
         if not reportable(event):
             return None
@@ -99,20 +113,21 @@ class DivisionByZeroAtMoment(NumericalRule):
         nan = ""
         if inner.kind == "divide" and inner.other is not None and inner.other.has_zero():
             nan = " (0/0: NaN)"
+        reaches = f", and {kinds(sink.values)} reaches {sink.sink}" if sink and sink.sink else ""
         shown = text(ctx, inner.expr)
         moment = moment_phrase(event.tags)
         if event.site is not None:
             head = call_phrase(ctx, event, f"{what} {shown}")
             tail = f", {moment}" if event.tags else ""
             fix = f"pass values that keep it non-zero or guard it in {event.callee}()"
-            return f"{head}{tail}{nan}; {fix}"
+            return f"{head}{tail}{nan}{reaches}; {fix}"
         if event.kind == "atan":
             head = f"atan({shown}) has both arguments 0"
         elif event.kind == "mod":
             head = f"mod by {shown}, which is {show(event.value)}"
         else:
             head = f"divides by {shown}, which is {show(event.value)}"
-        return f"{head} {moment}{nan}; {advice(event.tags, shown, 'dividing')}"
+        return f"{head} {moment}{nan}{reaches}; {advice(event.tags, shown, 'dividing')}"
 
     def _half_space(self, ctx: LintContext, reported: set[int]) -> Iterator[Finding]:
         """`x / max(0.0, y)`: 0 for every y <= 0, where y is known to go below 0."""
@@ -139,39 +154,6 @@ class DivisionByZeroAtMoment(NumericalRule):
             )
             reported.add(line)
             yield self.emit(ctx, divisor, message)
-
-
-# Where an infinity goes no further: clamp and smoothstep bound it, step and comparisons read
-# only its sign.
-_ABSORBING_CALLS = frozenset({"clamp", "smoothstep", "step"})
-_ABSORBING_OPS = frozenset({"<", ">", "<=", ">="})
-
-
-def _absorbed(ctx: LintContext, event: Event) -> bool:
-    """x / 0 with x exact and non-zero is ±inf, not NaN: harmless where it only reaches a clamp
-    through sums and products (`clamp(0.1 + 1.0 / x * 0.05, 0.0, 10.0)`)."""
-    num = event.other
-    if num is None or not num.exact() or num.has_zero():
-        return False
-    parents = ctx.parents()
-    node: Node | None = parents.get(id(event.expr))
-    while node is not None:
-        parent = parents.get(id(node))
-        if parent is None:
-            return False
-        op = operator(parent) if parent.data == "binary" else None
-        if op in ("+", "-", "*", "/") or parent.data == "unary":
-            node = parent
-        elif op is not None:
-            return op in _ABSORBING_OPS
-        elif parent.data == "arguments":
-            call = parents.get(id(parent))
-            name = callee_name(call) if isinstance(call, Tree) and call.data == "call" else None
-            first = Arguments(parent).items[0] is node
-            return name in _ABSORBING_CALLS and (first or name == "step")
-        else:
-            return False
-    return False
 
 
 def _floored_at_zero(node: Node) -> Node | None:
