@@ -4,7 +4,10 @@ reach something that matters, or is absorbed on the way.
 x / 0 is +-infinity where x is not 0, and NaN where it is (0 / 0); mod(x, 0) is NaN. Many such
 values go nowhere: a comparison reads an infinity as a sign (`t > 0.0` rejects -inf and NaN),
 clamp, smoothstep and step bound it, max(0.0, -inf) is 0, x / inf is 0, and a vector component
-no one reads is harmless. NaN is different: min, max and clamp do not reliably absorb it.
+no one reads is harmless. NaN is different: GLSL ES 3.00 (§2.1.1, "Floating-Point Computation")
+leaves what a builtin does with a NaN argument undefined, and GPUs differ (min(x, NaN) gives x
+on some, NaN on others), so a NaN that reaches min, max, clamp, smoothstep or step has escaped:
+what the shader computes from there depends on the GPU.
 
 The check follows the quotient forward through the statements of its function, with each
 variable's non-finite values per component (a subset of {+inf, -inf, NaN}): sums and products
@@ -159,6 +162,8 @@ _ELEMENTWISE: dict[str, dict[str, frozenset]] = {
     "sinh": _KEEP,
     "cosh": {POS: frozenset({POS}), NEG: frozenset({POS}), NAN: ONLY_NAN},
 }
+# Builtins whose result for a NaN argument differs between GPUs (GLSL leaves it undefined).
+_UNDEFINED_ON_NAN = frozenset({"min", "max", "clamp", "smoothstep", "step"})
 # Builtins whose result is a bool or a selection that a non-finite argument cannot make
 # non-finite (step(edge, x) is x < edge ? 0.0 : 1.0).
 _ABSORBING = frozenset(
@@ -627,6 +632,10 @@ class _Flow:
             return self._call_user(name, taints)
         if not any(_dirty(t) for t in taints):
             return CLEAN
+        if name in _UNDEFINED_ON_NAN and any(NAN in _union(t) for t in taints):
+            raise Escaped(
+                f"{name}(), whose result for a NaN argument GLSL leaves undefined", ONLY_NAN
+            )
         if name in _ABSORBING:
             return CLEAN
         if name in _ELEMENTWISE and len(taints) == 1:
