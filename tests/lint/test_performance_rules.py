@@ -558,3 +558,20 @@ def test_a_loop_guard_reads_the_loop_condition_not_its_update_or_body() -> None:
     flow = flow_of(Program(None, {}, set(), None), body)  # type: ignore[arg-type]
     guards = [set(w.reads) for w in flow.writes if w.target.startswith("#")]
     assert guards == [set(), set(), {"x", "c"}, {"x", "d"}, {"x", "a"}]
+
+
+def test_pf004_tells_overloads_apart() -> None:
+    """peek(x, y) is called in a loop with a varying y; peek(pos), the other overload, runs
+    once: neither repeats a fetch with unchanged arguments."""
+    src = """
+vec4 peek(int x, int y) { return texelFetch(iChannel0, ivec2(x, y), 0); }
+vec4 peek(int pos) { return texelFetch(iChannel0, ivec2(pos % 40, pos / 40), 0); }
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec4 c = peek(int(fragCoord.x));
+    for (int i = 0; i < 50; i++) {
+        if (peek(0, i).x > 0.5) { c += 1.0; }
+    }
+    fragColor = c;
+}
+"""
+    assert found(src, "PF004") == []

@@ -59,30 +59,40 @@ class _Site:
     stated: bool = True  # every loop on the way states its trip count (no march)
 
 
+def _key(fn: Function) -> str:
+    """A function's identity among overloads: its name and its number of parameters."""
+    return f"{fn.name}/{len(fn.param_order)}"
+
+
+def _call_key(call: Tree) -> str:
+    """The identity (as `_key` gives it) of the overload a call can reach."""
+    return f"{call_name(call)}/{len(call_args(call))}"
+
+
 def _runs(ctx: LintContext, up: dict[int, Tree]) -> dict[str, _Site]:
-    """How many times each function runs per pixel, at most (mainImage once, another function
-    the largest over its call sites of the caller's runs times the loops around the call), with
-    the call site that gives that count."""
-    defined = {f.name: f for f in functions(ctx)}
+    """How many times each function (by `_key`: overloads apart) runs per pixel, at most
+    (mainImage once, another function the largest over its call sites of the caller's runs times
+    the loops around the call), with the call site that gives that count."""
+    defined = {_key(f): f for f in functions(ctx)}
     sites: dict[str, list[tuple[Function, Tree]]] = {}
     for fn in defined.values():
         for node in walk_kind(fn.body, "call"):
-            if (name := call_name(node)) in defined and name != fn.name:
-                sites.setdefault(name or "", []).append((fn, node))
+            if (key := _call_key(node)) in defined and key != _key(fn):
+                sites.setdefault(key, []).append((fn, node))
     result: dict[str, _Site] = {}
 
     def count(name: str, depth: int) -> int:
         if name in result:
             return result[name].runs
         result[name] = _Site(1, None, None)  # a guard against call cycles
-        if name == "mainImage" or depth > 16:
+        if name.startswith("mainImage/") or depth > 16:
             return 1
         best = _Site(1, None, None)
         for caller, call in sites.get(name, ()):
-            runs = count(caller.name, depth + 1) * _repeats(ctx, call, caller, up)
+            runs = count(_key(caller), depth + 1) * _repeats(ctx, call, caller, up)
             if runs > best.runs:
-                stated = result[caller.name].stated and _stated(ctx, call, caller, up)
-                best = _Site(min(runs, 1 << 30), caller.name, call, stated)
+                stated = result[_key(caller)].stated and _stated(ctx, call, caller, up)
+                best = _Site(min(runs, 1 << 30), _key(caller), call, stated)
         result[name] = best
         return best.runs
 
@@ -129,7 +139,7 @@ def _fixed_globals(prog: Program, sites: dict[str, _Site], flows: dict[int, Flow
     for group in prog.defined.values():
         for fn in group:
             flow = flows[id(fn)]
-            if sites.get(fn.name, _Site(1, None, None)).runs > 1:
+            if sites.get(_key(fn), _Site(1, None, None)).runs > 1:
                 moving |= {w.target for w in flow.writes}
                 continue
             end = -1
@@ -362,15 +372,15 @@ class InvariantExpensiveCall(Rule):
         loops_of: dict[int, list[Tree]] = {}
         for fn in fns:
             for call in walk_kind(fn.body, "call"):
-                if (name := call_name(call)) in overloads and name != fn.name:
-                    self._calls.setdefault(name, []).append((fn, call))  # type: ignore[arg-type]
+                if call_name(call) in overloads and (key := _call_key(call)) != _key(fn):
+                    self._calls.setdefault(key, []).append((fn, call))
             flow = flows[id(fn)]
             declarations = Counter(w.target for w in flow.writes if w.declares)
             loops_of[id(fn)] = walk_kind(fn.body, *LOOPS)
             for loop in loops_of[id(fn)]:
                 self._loops[id(loop)] = _moving_in_loop(prog, fn, loop, flow, declarations)
         for fn in fns:
-            runs = sites.get(fn.name, _Site(1, None, None)).runs
+            runs = sites.get(_key(fn), _Site(1, None, None)).runs
             loops = sorted(loops_of[id(fn)], key=lambda n: n.meta.start_pos)
             for index, loop in enumerate(loops):
                 if self._covered(loop):
@@ -380,7 +390,7 @@ class InvariantExpensiveCall(Rule):
                 )
                 yield from self._loop(ctx, prog, fn, flows[id(fn)], loop, runs, up, innermost)
         for fn in fns:
-            if sites.get(fn.name, _Site(1, None, None)).runs >= 2:
+            if sites.get(_key(fn), _Site(1, None, None)).runs >= 2:
                 yield from self._function(ctx, prog, fn, flows[id(fn)], sites, fixed, up)
 
     def _covered(self, node: Tree) -> bool:
@@ -520,8 +530,8 @@ class InvariantExpensiveCall(Rule):
         params, outside = self._moving_params(ctx, prog, fn, sites, up)
         seed = params | (prog.globals - fixed) | {IMPURE}
         moving = varying(seed, flow.writes)
-        runs = sites[fn.name].runs
-        hot = _loop_of_chain(sites, fn.name, up)
+        runs = sites[_key(fn)].runs
+        hot = _loop_of_chain(sites, _key(fn), up)
         found: list[tuple[Tree, int]] = []
         share = 0
         for node in _pieces(prog, flow, CompoundStatement(fn.body).statements, moving):
@@ -534,7 +544,7 @@ class InvariantExpensiveCall(Rule):
         if not found or share < SHARE * prog.cost(fn.body, fn):
             return
         hot_line = f"the loop at line {ctx.span(hot)[0]}" if hot is not None else "its caller"
-        how_often = f"up to {runs} times" if sites[fn.name].stated else "many times"
+        how_often = f"up to {runs} times" if sites[_key(fn)].stated else "many times"
         yield from self._group(
             ctx,
             found,
@@ -562,8 +572,8 @@ class InvariantExpensiveCall(Rule):
         function that runs repeatedly, is taken to pass new values each time."""
         moving: set[str] = {p for p in fn.params if "out" in fn.params[p][0]}
         outside = 1
-        for caller, call in self._calls.get(fn.name, ()):
-            caller_runs = sites.get(caller.name, _Site(1, None, None)).runs
+        for caller, call in self._calls.get(_key(fn), ()):
+            caller_runs = sites.get(_key(caller), _Site(1, None, None)).runs
             loop = _innermost_loop(call, caller, up)
             if self._covered(call):  # the whole call is reported as the same in its loop
                 return set(fn.params), 1
