@@ -39,9 +39,12 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
+from glint.compiler.target.shadertoy import Tab
+
 from .options import Options
 from .rules import all_rules
 from .runner import lint_bytes
+from .tabs import sibling_common
 
 ROOT = Path(__file__).resolve().parents[1]
 LABELS = ROOT / "tests" / "lint" / "labelled"
@@ -107,9 +110,13 @@ def valid_files(corpus: Path = CORPUS) -> list[Path]:
 
 
 def _lint_one(path: Path) -> list[dict[str, Any]]:
+    """Every rule's findings on one file, with its Common tab in front where one is beside it
+    (`NAME.common.glsl`, as `glint lint` finds it); only the file's own findings."""
     options = Options(select=["ALL"], glslang=False)
-    result = lint_bytes(path.read_bytes(), path.name, options)
-    return [f.as_json() for f in result.findings]
+    common = sibling_common(str(path))
+    tab = None if common is None else Tab(common=common[1], common_file=common[0])
+    result = lint_bytes(path.read_bytes(), path.name, options, tab=tab)
+    return [f.as_json() for f in result.findings if f.file == path.name]
 
 
 def corpus_findings(files: list[Path], workers: int | None = None) -> list[dict[str, Any]]:

@@ -31,7 +31,7 @@ def plan(
         if file != "-" and (is_common_file(file) or (explicit and _same(file, explicit[0]))):
             planned.append((file, Tab(channels=options.channels, is_common=True)))
             continue
-        found = explicit if explicit is not None else _sibling(file)
+        found = explicit if explicit is not None else sibling_common(file)
         if found is None:
             planned.append((file, options.tab()))
             continue
@@ -60,7 +60,7 @@ def read_common(path: str, label: str = "--common") -> tuple[str, str]:
     return path, text
 
 
-def _sibling(file: str) -> tuple[str, str] | None:
+def sibling_common(file: str) -> tuple[str, str] | None:
     """`NAME.common.glsl` beside `NAME.glsl`: its name and text, if it is there and is text
     (an unreadable one is reported when it is linted itself)."""
     if file == "-":

@@ -51,6 +51,32 @@ def join(tokens: list[Tok]) -> str:
     return "".join(t.text for t in tokens)
 
 
+def join_expanded(tokens: list[Tok]) -> str:
+    """Text of a line after macro expansion: as `join`, with a space where an expanded token
+    would otherwise fuse with its neighbour into another token (`a-b` with b = `-1.` must stay
+    `a - -1.`, not become `a--1.`): the preprocessor works on tokens, not on text."""
+    out: list[str] = []
+    previous: Tok | None = None
+    for tok in tokens:
+        if (
+            previous is not None
+            and tok.kind != "ws"
+            and previous.kind != "ws"
+            and (tok.col == 0 or previous.col == 0)
+            and _fuse(previous.text, tok.text)
+        ):
+            out.append(" ")
+        out.append(tok.text)
+        previous = tok
+    return "".join(out)
+
+
+def _fuse(left: str, right: str) -> bool:
+    """Whether `left` written right before `right` lexes as something else."""
+    match = _TOKEN_RE.match(left + right)
+    return match is None or match.group() != left
+
+
 def strip_ws(tokens: list[Tok]) -> list[Tok]:
     """Drop leading and trailing whitespace tokens."""
     start, end = 0, len(tokens)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from glint.compiler.errors import InputError
 from glint.compiler.glsl.macros import Expander, Macro, MacroCallError, NeedMoreInput
 from glint.compiler.glsl.ppexpr import ExprError, evaluate
-from glint.compiler.glsl.pptokens import Tok, join, significant, tokenize
+from glint.compiler.glsl.pptokens import Tok, join, join_expanded, significant, tokenize
 
 __all__ = ["Macro", "Preprocessed", "PreprocessorError", "SourceLocation", "preprocess"]
 
@@ -185,7 +185,7 @@ class _Preprocessor:
             nxt = i + consumed + 1
             more = nxt < len(lines) and not lines[nxt].lstrip().startswith("#")
             try:
-                return consumed, join(self.expander.expand(tokens, more_input=more))
+                return consumed, join_expanded(self.expander.expand(tokens, more_input=more))
             except NeedMoreInput:
                 consumed += 1
                 tokens = [*tokens, Tok("ws", " "), *tokenize(lines[nxt])]

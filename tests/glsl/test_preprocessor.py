@@ -37,6 +37,26 @@ def test_function_like_macro_with_nested_arguments() -> None:
     assert squash(lines(src)[2]) == "floaty=(((f(1,2)+3.0))*((f(1,2)+3.0)));"
 
 
+@pytest.mark.parametrize(
+    ("source", "expanded", "fused"),
+    [
+        # `(a-b)` with b = `-1.` is a minus and a negative number, not a decrement
+        ("#define O(a,b) (a-b)+b\nfloat v = O(1.1, -1.);", "(1.1- -1.)+-1.", "--"),
+        ("#define P(a) x+a\nfloat v = P(+y);", "x+ +y", "++"),
+        ("#define A(x) x\nfloat v = A(a)A(b);", "a b", "ab"),
+        ("#define S(x) -x\nfloat v = 3-S(2);", "3- -2", "--"),
+        ("#define L(x) x<\nbool v = L(a)=b;", "a< =b", "<="),
+    ],
+)
+def test_expanded_tokens_never_fuse_with_their_neighbours(
+    source: str, expanded: str, fused: str
+) -> None:
+    """The preprocessor works on tokens: an expansion that would otherwise put `-` before `-1.`
+    or two names side by side keeps them apart (glslang reads them so)."""
+    line = lines(source)[1]
+    assert fused not in line and expanded in " ".join(line.split())
+
+
 def test_function_like_macro_name_without_call_is_left_alone() -> None:
     assert squash(lines("#define F(x) x\nfloat F = 1.0;")[1]) == "floatF=1.0;"
 
