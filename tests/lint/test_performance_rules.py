@@ -575,3 +575,26 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
 }
 """
     assert found(src, "PF004") == []
+
+
+def test_pf004_an_event_that_turns_its_own_test_off_is_not_repeated() -> None:
+    """startRound() runs when the round is over and moves the round's end on: it runs once per
+    event, not on every pass of the loop around it. The same call under a test it does not
+    change runs on every pass."""
+    src = """
+float gEnd = 0.0;
+vec4 gState;
+void startRound(float t) {
+    gEnd = t + 10.0;
+    gState = texelFetch(iChannel0, ivec2(3, 0), 0) + texelFetch(iChannel0, ivec2(4, 0), 0);
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    for (int k = 0; k < 64; k++) {
+        float end = gEnd + 1.0;
+        if (TEST) startRound(iTime);
+    }
+    fragColor = gState;
+}
+"""
+    assert found(src.replace("TEST", "iTime > end"), "PF004") == []
+    assert [f[0] for f in found(src.replace("TEST", "iTime > 5.0"), "PF004")] == ["PF004"]

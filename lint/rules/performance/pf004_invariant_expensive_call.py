@@ -14,6 +14,7 @@ from glint.compiler.glsl.ast import (
     binary_parts,
     first_child,
     for_parts,
+    if_parts,
     jump_parts,
     leaf_text,
     operand,
@@ -69,10 +70,12 @@ def _call_key(call: Tree) -> str:
     return f"{call_name(call)}/{len(call_args(call))}"
 
 
-def _runs(ctx: LintContext, up: dict[int, Tree]) -> dict[str, _Site]:
+def _runs(
+    ctx: LintContext, up: dict[int, Tree], prog: Program, flows: dict[int, Flow]
+) -> dict[str, _Site]:
     """How many times each function (by `_key`: overloads apart) runs per pixel, at most
     (mainImage once, another function the largest over its call sites of the caller's runs times
-    the loops around the call), with the call site that gives that count."""
+    the loops around the call that repeat it), with the call site that gives that count."""
     defined = {_key(f): f for f in functions(ctx)}
     sites: dict[str, list[tuple[Function, Tree]]] = {}
     for fn in defined.values():
@@ -89,7 +92,8 @@ def _runs(ctx: LintContext, up: dict[int, Tree]) -> dict[str, _Site]:
             return 1
         best = _Site(1, None, None)
         for caller, call in sites.get(name, ()):
-            runs = count(_key(caller), depth + 1) * _repeats(ctx, call, caller, up)
+            latch = _latch(prog, flows[id(caller)], call)
+            runs = count(_key(caller), depth + 1) * _repeats(ctx, call, caller, up, latch)
             if runs > best.runs:
                 stated = result[_key(caller)].stated and _stated(ctx, call, caller, up)
                 best = _Site(min(runs, 1 << 30), _key(caller), call, stated)
@@ -361,8 +365,8 @@ class InvariantExpensiveCall(Rule):
             overloads.setdefault(f.name, []).append(f)
         prog = Program(ctx, overloads, other_globals, lambda loop, fn: trip_count(ctx, loop, fn))
         up = ctx.parents()
-        sites = _runs(ctx, up)
         flows = {id(fn): flow_of(prog, fn.body) for fn in fns}
+        sites = _runs(ctx, up, prog, flows)
         fixed = _fixed_globals(prog, sites, flows)
         self._reported: list[tuple[int, int]] = []
         # what varies in every loop first: the calls in a loop tell which parameters of the
@@ -621,16 +625,32 @@ def _loops_left(node: Tree, fn: Function, up: dict[int, Tree]) -> set[int]:
     return left
 
 
-def _repeats(ctx: LintContext, node: Tree, fn: Function, up: dict[int, Tree]) -> int:
+def _latch(prog: Program, flow: Flow, call: Tree) -> frozenset[str]:
+    """The names of the caller that the called function changes: the globals it writes and
+    what the caller computes from them. A test of them guards an event (`if (iTime > endTime)
+    startRound();`, where startRound moves endTime on): once it ran, its own test fails."""
+    name = call_name(call)
+    written = prog.global_writes(name) if name in prog.defined else frozenset()
+    return frozenset(varying(written, flow.writes)) if written else frozenset()
+
+
+def _repeats(
+    ctx: LintContext, node: Tree, fn: Function, up: dict[int, Tree], latch: frozenset[str]
+) -> int:
     """How many times the node runs per run of its function, at most: the product of the trip
-    counts of the loops around it that it does not leave right after it runs."""
+    counts of the loops around it that it does not leave right after it runs, and that are not
+    outside a test the node itself turns off (`latch`)."""
     left = _loops_left(node, fn, up)
     total = 1
+    latched = False
     current: Node = node
     while (parent := up.get(id(current))) is not None and parent is not fn.node:
+        if parent.data == "if_statement" and latch and names_in(if_parts(parent)[0]) & latch:
+            latched = True
         if (
             parent.data in LOOPS
             and id(parent) not in left
+            and not latched
             and not (parent.data == "for_statement" and ForStatement(parent).init is current)
         ):
             total *= trip_count(ctx, parent, fn)
