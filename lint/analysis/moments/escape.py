@@ -29,7 +29,9 @@ from lark import Tree
 
 from glint.compiler.glsl.ast import (
     ConditionDeclaration,
+    DoStatement,
     SwitchStatement,
+    WhileStatement,
     binary_parts,
     definition_parts,
     field_parts,
@@ -393,9 +395,11 @@ class _Flow:
             env = self.stmt(init, env)  # type: ignore[assignment]
             return self._loop(env, cond, update, body)
         if kind == "while_statement":
-            return self._loop(env, node.children[0], None, node.children[-1])
+            loop = WhileStatement(node)
+            return self._loop(env, loop.condition, None, loop.body)
         if kind == "do_statement":
-            return self._loop(env, node.children[-1], None, node.children[0])
+            done = DoStatement(node)
+            return self._loop(env, done.condition, None, done.body)
         if kind == "switch_statement":
             return self._switch(node, env)
         if kind == "jump_statement":
