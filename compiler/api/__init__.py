@@ -20,13 +20,32 @@ on first use, so that `import glint` stays fast.
 
 from __future__ import annotations
 
+from importlib import import_module
+from typing import TYPE_CHECKING, Any
+
 from glint.compiler.errors import EnvironmentProblem, GlintError, InputError, UsageError
 
-from ._catalog import Catalog, Snippet, catalog
-from ._image import Image, render
-from ._lint import lint_shader
-from ._mesh import MeshShader, compose_mesh
-from ._shader import Shader, compose
+if TYPE_CHECKING:
+    from ._catalog import Catalog, Snippet, catalog
+    from ._image import Image, render
+    from ._lint import lint_shader
+    from ._mesh import MeshShader, compose_mesh
+    from ._shader import Shader, compose
+
+# Where each public name lives: imported on first use (PEP 562), so that `glint lint`, which
+# imports `glint.compiler` and with it this package, does not pay for the renderer's modules.
+_LAZY = {
+    "Catalog": "_catalog",
+    "Snippet": "_catalog",
+    "catalog": "_catalog",
+    "Image": "_image",
+    "render": "_image",
+    "lint_shader": "_lint",
+    "MeshShader": "_mesh",
+    "compose_mesh": "_mesh",
+    "Shader": "_shader",
+    "compose": "_shader",
+}
 
 __all__ = [
     "Catalog",
@@ -46,9 +65,17 @@ __all__ = [
 ]
 
 
-def __getattr__(name: str) -> str:
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        value = getattr(import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value  # the next access finds it without this hook
+        return value
     if name == "__version__":  # read on demand: importlib.metadata is slow to import
         from importlib.metadata import version
 
         return version("glint")
     raise AttributeError(f"module 'glint' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

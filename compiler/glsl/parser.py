@@ -13,14 +13,20 @@ from __future__ import annotations
 import contextlib
 import functools
 import gc
+import hashlib
 import operator
+import os
 import re
+import sys
+import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from lark import Lark, Token, Tree
+from lark import __version__ as lark_version
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 from lark.grammar import Rule
+from lark.lark import _LOAD_ALLOWED_OPTIONS as _LOAD_OPTIONS
 from lark.lark import PostLex
 from lark.parsers.lalr_analysis import Shift
 from lark.tree import Meta
@@ -377,16 +383,50 @@ def glsl_parser() -> Lark:
 
 
 def _lark() -> Lark:
-    return Lark(
-        _GRAMMAR.read_text(encoding="utf-8"),
-        parser="lalr",
-        lexer="basic",
-        postlex=_TypeNamePostLex(),
-        propagate_positions=True,
-        maybe_placeholders=False,
-        transformer=_Shape(),
-        tree_class=_tree,
-    )
+    """The parser from the tables cached by an earlier process, else built (about 80 ms: most
+    of a one-file `glint lint`) and cached. lark's own `cache=` cannot serve: it hashes the
+    options' text, and the tree class's text holds its address, new in every process."""
+    grammar = _GRAMMAR.read_text(encoding="utf-8")
+    # what is not in the tables, given again on loading (as lark's own cache does)
+    given = {
+        "postlex": _TypeNamePostLex(),
+        "transformer": _Shape(),
+        "tree_class": _tree,
+        "propagate_positions": True,
+    }
+    cached = _table_cache(grammar)
+    if cached is not None and cached.is_file():
+        try:
+            with cached.open("rb") as f:
+                return Lark.__new__(Lark)._load(f, **given)
+        except Exception:  # noqa: BLE001 - a stale or damaged cache: build anew
+            pass
+    parser = Lark(grammar, parser="lalr", lexer="basic", maybe_placeholders=False, **given)
+    if cached is not None:
+        _save_tables(parser, cached)
+    return parser
+
+
+def _table_cache(grammar: str) -> Path | None:
+    """Where the parser's tables are cached: the user's cache folder (never a shared temporary
+    one: the file is a pickle), named by what the tables depend on."""
+    base = os.environ.get("XDG_CACHE_HOME") or (Path.home() / ".cache")
+    key = f"{grammar}\0{lark_version}\0{sys.version_info[:2]}\0{sys.implementation.name}"
+    digest = hashlib.sha256(key.encode("utf-8")).hexdigest()[:24]
+    return Path(base) / "glint" / f"glsl-parser-{digest}.pickle"
+
+
+def _save_tables(parser: Lark, path: Path) -> None:
+    """Write the tables (atomically: a parallel process never reads half a file); a folder
+    that cannot be written only means building them again next time."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=path.parent, delete=False) as f:
+            parser.save(f, exclude_options=_LOAD_OPTIONS)
+        os.replace(f.name, path)
+    except OSError:
+        with contextlib.suppress(OSError, UnboundLocalError):
+            os.unlink(f.name)
 
 
 def _tree(data: str, children: list[Tree | Token], meta: object = None) -> Tree:

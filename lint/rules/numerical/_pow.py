@@ -40,12 +40,15 @@ def negative_evidence(base: Value) -> str | None:
 
 
 def pow_bases(ctx: LintContext) -> Iterator[tuple[Tree, Node, Value]]:
-    """Every builtin pow call with its base and the base's value."""
+    """Every builtin pow call with its base and the base's value (the model is built only for
+    a file that calls pow: most files do not, and it is the expensive part)."""
+    calls = [(call, args) for call, _ in builtin_calls(ctx, "pow")
+             if len(args := call_args(call)) == 2]  # fmt: skip
+    if not calls:
+        return
     model = semantic_model(ctx)
-    for call, _ in builtin_calls(ctx, "pow"):
-        args = call_args(call)
-        if len(args) == 2:
-            yield call, args[0], model.value_of(args[0])
+    for call, args in calls:
+        yield call, args[0], model.value_of(args[0])
 
 
 def range_reaches_negative(base: Value) -> bool:

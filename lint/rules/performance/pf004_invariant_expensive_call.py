@@ -358,6 +358,8 @@ class InvariantExpensiveCall(Rule):
     default = True
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
+        if not any(ctx.nodes(kind) for kind in LOOPS):
+            return  # without a loop nothing runs more than once per pixel
         _, other_globals = _global_names(ctx)
         fns = functions(ctx)
         overloads: dict[str, list[Function]] = {}
