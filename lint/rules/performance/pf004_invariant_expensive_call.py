@@ -52,6 +52,21 @@ WASTE = 40
 SHARE = 1 / 50
 
 
+class _Flows:
+    """Each function's writes (`flow_of`), found when first asked: most functions of a
+    raymarcher are distance helpers that fetch nothing and loop nowhere, and need none."""
+
+    def __init__(self, prog: Program, fns: list[Function]) -> None:
+        self._prog = prog
+        self._fns = {id(fn): fn for fn in fns}
+        self._done: dict[int, Flow] = {}
+
+    def __getitem__(self, key: int) -> Flow:
+        if key not in self._done:
+            self._done[key] = flow_of(self._prog, self._fns[key].body)
+        return self._done[key]
+
+
 @dataclass
 class _Site:
     runs: int  # how many times the function runs per pixel, at most
@@ -70,9 +85,7 @@ def _call_key(call: Tree) -> str:
     return f"{call_name(call)}/{len(call_args(call))}"
 
 
-def _runs(
-    ctx: LintContext, up: dict[int, Tree], prog: Program, flows: dict[int, Flow]
-) -> dict[str, _Site]:
+def _runs(ctx: LintContext, up: dict[int, Tree], prog: Program, flows: _Flows) -> dict[str, _Site]:
     """How many times each function (by `_key`: overloads apart) runs per pixel, at most
     (mainImage once, another function the largest over its call sites of the caller's runs times
     the loops around the call that repeat it), with the call site that gives that count."""
@@ -92,7 +105,7 @@ def _runs(
             return 1
         best = _Site(1, None, None)
         for caller, call in sites.get(name, ()):
-            latch = _latch(prog, flows[id(caller)], call)
+            latch = _latch(prog, flows, caller, call)
             runs = count(_key(caller), depth + 1) * _repeats(ctx, call, caller, up, latch)
             if runs > best.runs:
                 stated = result[_key(caller)].stated and _stated(ctx, call, caller, up)
@@ -135,22 +148,21 @@ def _loop_of_chain(sites: dict[str, _Site], name: str, up: dict[int, Tree]) -> T
     return None
 
 
-def _fixed_globals(prog: Program, sites: dict[str, _Site], flows: dict[int, Flow]) -> set[str]:
+def _fixed_globals(prog: Program, sites: dict[str, _Site], flows: _Flows) -> set[str]:
     """Globals that keep their value while any function runs repeatedly: written only by
     functions that run once per pixel, and there outside loops (`time = iTime * 0.5;` at the top
     of mainImage)."""
     moving: set[str] = set()
     for group in prog.defined.values():
         for fn in group:
-            flow = flows[id(fn)]
             if sites.get(_key(fn), _Site(1, None, None)).runs > 1:
-                moving |= {w.target for w in flow.writes}
+                moving |= fn.written & prog.globals  # every write of the body
                 continue
             end = -1
             for loop in walk_kind(fn.body, *LOOPS):  # the outermost loops, in source order
                 if loop.meta.start_pos >= end:
                     end = loop.meta.end_pos
-                    moving |= {w.target for w in flow.within(loop.meta.start_pos, end)}
+                    moving |= {w.target for w in flows[id(fn)].within(loop.meta.start_pos, end)}
     return prog.globals - moving
 
 
@@ -367,7 +379,7 @@ class InvariantExpensiveCall(Rule):
             overloads.setdefault(f.name, []).append(f)
         prog = Program(ctx, overloads, other_globals, lambda loop, fn: trip_count(ctx, loop, fn))
         up = ctx.parents()
-        flows = {id(fn): flow_of(prog, fn.body) for fn in fns}
+        flows = _Flows(prog, fns)
         sites = _runs(ctx, up, prog, flows)
         fixed = _fixed_globals(prog, sites, flows)
         self._reported: list[tuple[int, int]] = []
@@ -380,9 +392,11 @@ class InvariantExpensiveCall(Rule):
             for call in walk_kind(fn.body, "call"):
                 if call_name(call) in overloads and (key := _call_key(call)) != _key(fn):
                     self._calls.setdefault(key, []).append((fn, call))
+            loops_of[id(fn)] = walk_kind(fn.body, *LOOPS)
+            if not loops_of[id(fn)]:
+                continue
             flow = flows[id(fn)]
             declarations = Counter(w.target for w in flow.writes if w.declares)
-            loops_of[id(fn)] = walk_kind(fn.body, *LOOPS)
             for loop in loops_of[id(fn)]:
                 self._loops[id(loop)] = _moving_in_loop(prog, fn, loop, flow, declarations)
         for fn in fns:
@@ -396,7 +410,7 @@ class InvariantExpensiveCall(Rule):
                 )
                 yield from self._loop(ctx, prog, fn, flows[id(fn)], loop, runs, up, innermost)
         for fn in fns:
-            if sites.get(_key(fn), _Site(1, None, None)).runs >= 2:
+            if sites.get(_key(fn), _Site(1, None, None)).runs >= 2 and _may_stick(prog, fn):
                 yield from self._function(ctx, prog, fn, flows[id(fn)], sites, fixed, up)
 
     def _covered(self, node: Tree) -> bool:
@@ -627,13 +641,13 @@ def _loops_left(node: Tree, fn: Function, up: dict[int, Tree]) -> set[int]:
     return left
 
 
-def _latch(prog: Program, flow: Flow, call: Tree) -> frozenset[str]:
+def _latch(prog: Program, flows: _Flows, caller: Function, call: Tree) -> frozenset[str]:
     """The names of the caller that the called function changes: the globals it writes and
     what the caller computes from them. A test of them guards an event (`if (iTime > endTime)
     startRound();`, where startRound moves endTime on): once it ran, its own test fails."""
     name = call_name(call)
     written = prog.global_writes(name) if name in prog.defined else frozenset()
-    return frozenset(varying(written, flow.writes)) if written else frozenset()
+    return frozenset(varying(written, flows[id(caller)].writes)) if written else frozenset()
 
 
 def _repeats(
@@ -658,6 +672,18 @@ def _repeats(
             total *= trip_count(ctx, parent, fn)
         current = parent
     return total
+
+
+def _may_stick(prog: Program, fn: Function) -> bool:
+    """Whether the function's body has anything `_pieces` reports: a loop, a fetch, or a call
+    of a function that fetches or loops (a distance helper has none)."""
+    if walk_kind(fn.body, *LOOPS):
+        return True
+    for call in walk_kind(fn.body, "call"):
+        name = call_name(call)
+        if is_fetch(name) or (name in prog.defined and prog.function_sticky(name)):  # type: ignore[arg-type]
+            return True
+    return False
 
 
 def _fetches(node: Tree) -> bool:
