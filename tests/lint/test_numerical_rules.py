@@ -584,3 +584,37 @@ def test_one_finding_per_divisor_on_a_line_with_a_fix_for_every_occurrence() -> 
     options = Options(select=["N005"], glslang=False)
     fixed = lint_text(src, "x.glsl", options, fix=True, unsafe_fixes=True)
     assert fixed.text.count("max(d, 1e-4)") == 4 and "/ d," not in fixed.text
+
+
+@pytest.mark.parametrize(
+    ("base", "plain"),
+    [
+        ("max(d, 0.0)", True),
+        ("max(0.0, d)", True),
+        ("clamp(d, 0.0, 1.0)", True),
+        ("abs(d)", True),
+        ("length(p)", True),
+        ("texture(iChannel0, p.xy).x", False),  # a field of the fetch, not the fetch itself
+        ("texture(iChannel0, p.xy)", True),
+        ("2.0", True),
+        ("max(d, -1.0)", False),
+        ("clamp(d, -1.0, 1.0)", False),
+        ("d", False),
+        ("-abs(d)", False),
+    ],
+)
+def test_n001_skips_bases_plainly_never_negative(base: str, plain: bool) -> None:
+    """N001 builds the semantic model only for a pow whose base is not plainly never negative
+    (the model is most of a default lint run); the skip is sound: such a base has no evidence
+    of a negative value to report."""
+    from glint.compiler.glsl.parser import parse
+    from glint.lint.analysis.syntax import call_args, call_name
+    from glint.lint.context import walk_kind
+    from glint.lint.rules.numerical._pow import never_negative
+
+    tree = parse(f"float f(float d, vec3 p) {{ return pow({base}, 2.0); }}")
+    (call,) = [c for c in walk_kind(tree, "call") if call_name(c) == "pow"]
+    assert never_negative(call_args(call)[0]) is plain
+    if plain:  # and the rule agrees: nothing to report where the base cannot be negative
+        src = shader(f"float d = sin(iTime); vec3 p = vec3(d); float v = pow({base}, 2.0);")
+        assert codes(src, "N001") == []

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 from lark import Tree
 
@@ -11,7 +11,7 @@ from glint.compiler.glsl import types as T
 from ...analysis import witness as W
 from ...analysis.model import semantic_model
 from ...analysis.ranges import _num
-from ...analysis.syntax import call_args
+from ...analysis.syntax import call_args, call_name
 from ...analysis.values import Value
 from ...context import LintContext, Node
 from ._common import SLACK, builtin_calls, is_raw_dot, reaches_below
@@ -39,11 +39,45 @@ def negative_evidence(base: Value) -> str | None:
     return None
 
 
-def pow_bases(ctx: LintContext) -> Iterator[tuple[Tree, Node, Value]]:
-    """Every builtin pow call with its base and the base's value (the model is built only for
-    a file that calls pow: most files do not, and it is the expensive part)."""
+# Builtins whose result is never negative, whatever their arguments (texture: no input of a
+# texture is known, so nothing can witness a negative texel either).
+_NEVER_NEGATIVE = frozenset(
+    {"abs", "length", "distance", "sqrt", "inversesqrt", "exp", "exp2", "fract", "smoothstep",
+     "step", "texture", "textureLod", "textureGrad", "textureProj", "texelFetch"}
+)  # fmt: skip
+
+
+def never_negative(node: Node) -> bool:
+    """Whether the expression is plainly never negative, by its form alone: a literal, one of
+    `_NEVER_NEGATIVE`, `max` with a literal >= 0, `clamp` with a lower bound literal >= 0."""
+    if not isinstance(node, Tree):
+        return False
+    if node.data in ("float_literal", "int_literal"):  # a negative number is a unary minus
+        return True
+    if node.data != "call":
+        return False
+    name, args = call_name(node), call_args(node)
+    if name in _NEVER_NEGATIVE:
+        return True
+    if name == "max" and len(args) == 2:
+        return any(_literal_at_least_zero(a) for a in args)
+    if name == "clamp" and len(args) == 3:
+        return _literal_at_least_zero(args[1])
+    return False
+
+
+def _literal_at_least_zero(node: Node) -> bool:
+    return isinstance(node, Tree) and node.data in ("float_literal", "int_literal")
+
+
+def pow_bases(
+    ctx: LintContext, skip: Callable[[Node], bool] | None = None
+) -> Iterator[tuple[Tree, Node, Value]]:
+    """Every builtin pow call with its base and the base's value, leaving out the bases `skip`
+    accepts. The model, the expensive part, is built only for a file with a pow to judge: most
+    files call none, or only on bases like `max(x, 0.0)`."""
     calls = [(call, args) for call, _ in builtin_calls(ctx, "pow")
-             if len(args := call_args(call)) == 2]  # fmt: skip
+             if len(args := call_args(call)) == 2 and not (skip and skip(args[0]))]  # fmt: skip
     if not calls:
         return
     model = semantic_model(ctx)

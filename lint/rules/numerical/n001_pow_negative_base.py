@@ -8,7 +8,7 @@ from ...context import LintContext
 from ...finding import Finding
 from .. import register
 from ._common import NumericalRule, text, wrap_fix
-from ._pow import negative_evidence, pow_bases
+from ._pow import negative_evidence, never_negative, pow_bases
 
 
 @register
@@ -54,7 +54,8 @@ class PowNegativeBase(NumericalRule):
     fixable = "unsafe"
 
     def check(self, ctx: LintContext) -> Iterator[Finding]:
-        for _, base_node, base in pow_bases(ctx):
+        # a base that is plainly never negative has no evidence of a negative value to find
+        for _, base_node, base in pow_bases(ctx, skip=never_negative):
             why = negative_evidence(base)
             if why is None:
                 continue
