@@ -18,6 +18,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.glsl import Preprocessed
 from glint.compiler.glsl.ast import Variable, first_child
 from glint.compiler.glsl.binder import Bindings, bind
+from glint.compiler.glsl.pptokens import Segment
 from glint.compiler.target.glslang import Diagnostic, validate
 from glint.compiler.target.shadertoy import Tab, shadertoy_types
 
@@ -68,6 +69,7 @@ class LintContext:
     # Analyses computed once per file and shared by rules (the semantic model, the data flow,
     # ...), keyed by the function that computes them: see `memo`.
     _memo: dict[Callable[..., Any], Any] = field(default_factory=dict)
+    _pre_lines: list[str] | None = None  # `pre`'s lines, split when a column map needs them
     _glslang: list[Diagnostic] | None = None
     _index: dict[str, list[Tree]] | None = None
     _all_kinds: bool = False  # whether `_index` holds every kind (the tree is not indexed)
@@ -136,7 +138,8 @@ class LintContext:
 
     def span(self, node: Node) -> Span:
         """The node's span in the user's file. Tree positions are lines of the preprocessed
-        text; the line map takes them back. Columns are exact on lines without macros."""
+        text; the line map takes them back, and on a line that macros changed the columns of
+        the user's own tokens do (a node made by a macro spans the macro's name and arguments)."""
         if isinstance(node, Token):
             line, col = node.line or 1, node.column or 1
             end_line, end_col = node.end_line or line, node.end_column or col + len(node)
@@ -145,7 +148,43 @@ class LintContext:
             if meta.empty:
                 return (1, 1, 1, 1)
             line, col, end_line, end_col = meta.line, meta.column, meta.end_line, meta.end_column
+        col = self._source_column(line, col, end=False)[0]
+        end_col = self._source_column(end_line, end_col, end=True)[0]
         return (self._origin(line), col, self._origin(end_line), end_col)
+
+    def _source_column(self, pre_line: int, col: int, end: bool) -> tuple[int, bool]:
+        """The column in the user's line of a column of a preprocessed line (a start, or with
+        `end` an end, exclusive), and whether the text between is the user's: the column lies
+        in one of the user's own tokens, or at the edge of a whole macro call (`PI`, `SPEC(r,
+        v)`), which then stands for its expansion. Inside an expansion: the start of that
+        macro's call in the source, or its end, and not exact."""
+        segments = self.pre.columns.get(pre_line) if self.pre is not None else None
+        file_line = self.file_line(pre_line)
+        if not segments or not 1 <= file_line <= len(self.lines):
+            return col, not segments
+        offset = col - 1
+        source = self.lines[file_line - 1]
+        pre = self._pre_line(pre_line)
+        before: Segment | None = None
+        for start, stop, at in segments:
+            if (start <= offset < stop) if not end else (start < offset <= stop):
+                return at + offset - start, True
+            if stop <= offset:
+                before = (start, stop, at)
+            elif end:  # the expansion ends before the user's next token: trim the gap
+                gap = source[: at - 1].rstrip()
+                return len(gap) + 1, not pre[offset:start].strip()
+        if end:
+            return len(source.rstrip()) + 1, not pre[offset:].strip()
+        after = 0 if before is None else before[2] - 1 + before[1] - before[0]
+        skipped = len(source[after:]) - len(source[after:].lstrip())
+        whole = not pre[(0 if before is None else before[1]) : offset].strip()
+        return after + skipped + 1, whole
+
+    def _pre_line(self, pre_line: int) -> str:
+        if self._pre_lines is None:
+            self._pre_lines = self.pre.text.split("\n") if self.pre is not None else []
+        return self._pre_lines[pre_line - 1] if 0 < pre_line <= len(self._pre_lines) else ""
 
     def _origin(self, pre_line: int) -> int:
         # The preprocessor keeps one output line per input line, so the physical line is the
@@ -168,12 +207,24 @@ class LintContext:
     # --- text -----------------------------------------------------------------------------
 
     def node_text(self, node: Node) -> str:
-        """The node's source as preprocessed (macros expanded, comments blanked)."""
+        """The node's text as the user wrote it (`sin(iTime * PI)`, not the expansion of PI)
+        where its ends are the user's own tokens, else as preprocessed (macros expanded,
+        comments blanked: a node a macro made)."""
         if isinstance(node, Token):
             return str(node)
         if self.pre is None or node.meta.empty:
             return ""
-        start, end = node.meta.start_pos, node.meta.end_pos
+        meta = node.meta
+        start, end = meta.start_pos, meta.end_pos
+        columns = self.pre.columns
+        if columns and (meta.line in columns or meta.end_line in columns):
+            first, exact_first = self._source_column(meta.line, meta.column, end=False)
+            last, exact_last = self._source_column(meta.end_line, meta.end_column, end=True)
+            lines = range(self.file_line(meta.line), self.file_line(meta.end_line) + 1)
+            inside = lines.start >= 1 and lines.stop - 1 <= len(self.lines)
+            if exact_first and exact_last and inside:
+                text = "\n".join(self.lines[n - 1] for n in lines)
+                return text[first - 1 : len(text) - len(self.lines[lines.stop - 2]) + last - 1]
         return self.pre.text[start:end]
 
     # --- findings and edits ---------------------------------------------------------------

@@ -51,11 +51,23 @@ def join(tokens: list[Tok]) -> str:
     return "".join(t.text for t in tokens)
 
 
-def join_expanded(tokens: list[Tok]) -> str:
+# Where the user's own tokens landed on an expanded line: (start, end) offsets in the output
+# line (0-based, end exclusive) and the token's column in the source line (1-based).
+Segment = tuple[int, int, int]
+
+
+def join_expanded(
+    tokens: list[Tok],
+    segments: list[Segment] | None = None,
+    arguments: frozenset[int] = frozenset(),
+) -> str:
     """Text of a line after macro expansion: as `join`, with a space where an expanded token
     would otherwise fuse with its neighbour into another token (`a-b` with b = `-1.` must stay
-    `a - -1.`, not become `a--1.`): the preprocessor works on tokens, not on text."""
+    `a - -1.`, not become `a--1.`): the preprocessor works on tokens, not on text. With
+    `segments`, records where each token of the source line (col > 0) went, but for the
+    `arguments` of macro calls (by column): they went inside an expansion."""
     out: list[str] = []
+    length = 0
     previous: Tok | None = None
     for tok in tokens:
         if (
@@ -66,7 +78,11 @@ def join_expanded(tokens: list[Tok]) -> str:
             and _fuse(previous.text, tok.text)
         ):
             out.append(" ")
+            length += 1
+        if segments is not None and tok.col > 0 and tok.kind != "ws" and tok.col not in arguments:
+            segments.append((length, length + len(tok.text), tok.col))
         out.append(tok.text)
+        length += len(tok.text)
         previous = tok
     return "".join(out)
 

@@ -14,7 +14,14 @@ from dataclasses import dataclass, field
 from glint.compiler.errors import InputError
 from glint.compiler.glsl.macros import Expander, Macro, MacroCallError, NeedMoreInput
 from glint.compiler.glsl.ppexpr import ExprError, evaluate
-from glint.compiler.glsl.pptokens import Tok, join, join_expanded, significant, tokenize
+from glint.compiler.glsl.pptokens import (
+    Segment,
+    Tok,
+    join,
+    join_expanded,
+    significant,
+    tokenize,
+)
 
 __all__ = ["Macro", "Preprocessed", "PreprocessorError", "SourceLocation", "preprocess"]
 
@@ -37,6 +44,9 @@ class Preprocessed:
     version: str | None = None  # e.g. "300 es"
     extensions: list[str] = field(default_factory=list)  # names from #extension
     expansions: dict[int, set[str]] = field(default_factory=dict)  # output line -> macros used
+    # output line -> where the source's own tokens are on it (pptokens.Segment), for a line
+    # that macros changed (one line of source: a call over several lines has none)
+    columns: dict[int, list[Segment]] = field(default_factory=dict)
     # with `lenient`: the errors it went past (an undefined name in `#if`, taken as 0)
     problems: list[PreprocessorError] = field(default_factory=list)
 
@@ -136,6 +146,7 @@ class _Preprocessor:
         out = [""] * len(lines)
         line_map: list[SourceLocation] = []
         expansions: dict[int, set[str]] = {}
+        columns: dict[int, list[Segment]] = {}
         i = 0
         while i < len(lines):
             self.index = i
@@ -150,9 +161,12 @@ class _Preprocessor:
                 i += 1
                 continue
             self.seen_content = True
-            consumed, out[i] = self._expand_line(lines, i)
+            segments: list[Segment] = []
+            consumed, out[i] = self._expand_line(lines, i, segments)
             if self.expander.used:
                 expansions[i + 1] = set(self.expander.used)
+                if consumed == 0:
+                    columns[i + 1] = segments
             for extra in range(1, consumed + 1):  # lines folded into a multi-line macro call
                 self.index = i + extra
                 line_map.append(self.location())
@@ -169,11 +183,15 @@ class _Preprocessor:
             version=self.version,
             extensions=self.extensions,
             expansions=expansions,
+            columns=columns,
             problems=self.problems,
         )
 
-    def _expand_line(self, lines: list[str], i: int) -> tuple[int, str]:
-        """Expand one code line, pulling in following lines while a macro call is open."""
+    def _expand_line(
+        self, lines: list[str], i: int, segments: list[Segment] | None = None
+    ) -> tuple[int, str]:
+        """Expand one code line, pulling in following lines while a macro call is open; where
+        the source's own tokens went, in `segments`."""
         self.expander.used.clear()
         if not any(self._expandable(name) for name in _NAME.findall(lines[i])):
             return 0, lines[i]  # fast path: nothing to expand, text untouched
@@ -185,13 +203,38 @@ class _Preprocessor:
             nxt = i + consumed + 1
             more = nxt < len(lines) and not lines[nxt].lstrip().startswith("#")
             try:
-                return consumed, join_expanded(self.expander.expand(tokens, more_input=more))
+                arguments = self._arguments(tokens) if segments is not None else frozenset()
+                expanded = self.expander.expand(tokens, more_input=more)
+                if segments is not None:
+                    segments.clear()
+                return consumed, join_expanded(expanded, segments, arguments)
             except NeedMoreInput:
                 consumed += 1
                 tokens = [*tokens, Tok("ws", " "), *tokenize(lines[nxt])]
                 self.expander.used.clear()
             except MacroCallError as exc:
                 raise self.error(exc.col, str(exc)) from None
+
+    def _arguments(self, tokens: list[Tok]) -> frozenset[int]:
+        """The columns of the tokens inside the argument lists of function-like macro calls on
+        a line: they land inside an expansion, where no column of the line is theirs alone."""
+        found: set[int] = set()
+        sig = significant(tokens)
+        i = 0
+        while i < len(sig):
+            tok = sig[i]
+            macro = self.macros.get(tok.text) if tok.kind == "ident" else None
+            called = macro is not None and macro.params is not None
+            if called and i + 1 < len(sig) and sig[i + 1].text == "(":
+                depth = 0
+                for j in range(i + 1, len(sig)):
+                    depth += {"(": 1, ")": -1}.get(sig[j].text, 0)
+                    found.add(sig[j].col)
+                    if depth == 0:
+                        break
+                i = j
+            i += 1
+        return frozenset(found)
 
     def _expandable(self, name: str) -> bool:
         return name in self.macros or name in ("__LINE__", "__FILE__")
