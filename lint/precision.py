@@ -154,9 +154,7 @@ class RuleStats:
     @classmethod
     def from_json(cls, code: str, entry: dict[str, Any]) -> RuleStats:
         """A stored measurement back (the extra corpus's, where that corpus is absent)."""
-        verdicts = Counter(
-            {"worth": entry["worth"], "not-worth": entry["not_worth"], "wrong": entry["wrong"]}
-        )
+        verdicts = _verdicts(entry)
         return cls(code, entry["count"], entry["files"], entry["labelled"], verdicts, Counter())
 
     def __add__(self, other: RuleStats) -> RuleStats:
@@ -177,6 +175,13 @@ class RuleStats:
             and self.precision is not None
             and self.precision >= DEFAULT_PRECISION
         )
+
+
+def _verdicts(entry: dict[str, Any]) -> Counter[str]:
+    """The verdict counts of a stored measurement (`as_json`'s keys)."""
+    return Counter(
+        {"worth": entry["worth"], "not-worth": entry["not_worth"], "wrong": entry["wrong"]}
+    )
 
 
 def combined(shared: dict[str, RuleStats], extra: dict[str, RuleStats]) -> dict[str, RuleStats]:
@@ -244,10 +249,7 @@ class DefaultSample:
 
     @classmethod
     def from_json(cls, entry: dict[str, Any]) -> DefaultSample:
-        verdicts = Counter(
-            {"worth": entry["worth"], "not-worth": entry["not_worth"], "wrong": entry["wrong"]}
-        )
-        return cls(entry["count"], entry["labelled"], verdicts, [])
+        return cls(entry["count"], entry["labelled"], _verdicts(entry), [])
 
     def as_json(self) -> dict[str, Any]:
         return {
@@ -434,7 +436,8 @@ def main(argv: list[str] | None = None) -> int:
         for f in sample.unlabelled:
             print(f"  unlabelled: {f['code']} {f['file']}:{f['line']}:{f['column']}")
         if extra:
-            print("Extra corpus: " + DefaultSample.from_json(extra["default"]).line())
+            line = DefaultSample.from_json(extra["default"]).line()
+            print("Extra corpus: " + line.replace("on the corpus", "on the extra corpus"))
         return 0
     stats = measure(labels, findings)
     measured = {

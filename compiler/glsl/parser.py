@@ -410,7 +410,10 @@ def _lark() -> Lark:
 def _table_cache(grammar: str) -> Path | None:
     """Where the parser's tables are cached: the user's cache folder (never a shared temporary
     one: the file is a pickle), named by what the tables depend on."""
-    base = os.environ.get("XDG_CACHE_HOME") or (Path.home() / ".cache")
+    try:
+        base = os.environ.get("XDG_CACHE_HOME") or (Path.home() / ".cache")
+    except (RuntimeError, KeyError):  # no home to find (a bare container): no cache
+        return None
     key = f"{grammar}\0{lark_version}\0{sys.version_info[:2]}\0{sys.implementation.name}"
     digest = hashlib.sha256(key.encode("utf-8")).hexdigest()[:24]
     return Path(base) / "glint" / f"glsl-parser-{digest}.pickle"
