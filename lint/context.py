@@ -150,7 +150,18 @@ class LintContext:
             line, col, end_line, end_col = meta.line, meta.column, meta.end_line, meta.end_column
         col = self._source_column(line, col, end=False)[0]
         end_col = self._source_column(end_line, end_col, end=True)[0]
-        return (self._origin(line), col, self._origin(end_line), end_col)
+        first, last = self._origin(line), self._origin(end_line)
+        # a line spliced with `\` or a macro call over several lines makes one long
+        # preprocessed line: keep the columns on the user's line
+        col = min(col, self._width(first))
+        end_col = min(end_col, self._width(last))
+        if last == first and end_col < col:
+            end_col = col
+        return (first, col, last, end_col)
+
+    def _width(self, line: int) -> int:
+        """One past the last column of the file's line (any column for a line it lacks)."""
+        return len(self.lines[line - 1]) + 1 if 1 <= line <= len(self.lines) else 1 << 30
 
     def _source_column(self, pre_line: int, col: int, end: bool) -> tuple[int, bool]:
         """The column in the user's line of a column of a preprocessed line (a start, or with
