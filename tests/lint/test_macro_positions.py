@@ -58,3 +58,18 @@ def test_node_text_inside_a_function_macro_falls_back_to_the_expansion() -> None
     assert "SCALE(c) + 1.0 / (iTime * PI)" in texts
     assert "iTime * PI" in texts  # written out on lines 5 and 6: quoted as written
     assert "iTime *  3.14159" in texts  # inside CAM: no text of its own, shown expanded
+
+
+def test_columns_stay_on_the_users_line_after_a_splice() -> None:
+    """A line continued with `\\` is one preprocessed line: a finding on it still points inside
+    the line it reports (it used to point past its end)."""
+    src = (
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    float v = 0.5 + \\\n"
+        "        pow(sin(iTime), 3.0);\n"
+        "    fragColor = vec4(v);\n"
+        "}\n"
+    )
+    (finding,) = lint_source(src, "s.glsl", Options(select=["N001"], glslang=False))
+    width = len(src.split("\n")[finding.line - 1]) + 1
+    assert 1 <= finding.column <= width and finding.column <= finding.end_column <= width
