@@ -208,12 +208,20 @@ class LintContext:
         return pre_line - self.line_offset if self.line_offset else max(pre_line, 1)
 
     def has_macros(self, node: Node) -> bool:
-        """Whether a macro was expanded on the node's lines (its columns are then approximate
-        and no edit may be computed from them)."""
+        """Whether the node's lines were changed before parsing: a macro expanded on them, or
+        a line continued with `\\` (its columns are then approximate and no edit may be
+        computed from them)."""
         if self.pre is None:
             return True
         first, last = _pre_lines(node)
-        return any(line in self.pre.expansions for line in range(first, last + 1))
+        for line in range(first, last + 1):
+            if line in self.pre.expansions:
+                return True
+            file_line = self.file_line(line)
+            text = self.lines[file_line - 1] if 1 <= file_line <= len(self.lines) else ""
+            if text.rstrip().endswith("\\"):
+                return True
+        return False
 
     # --- text -----------------------------------------------------------------------------
 

@@ -73,3 +73,4 @@ def test_columns_stay_on_the_users_line_after_a_splice() -> None:
     (finding,) = lint_source(src, "s.glsl", Options(select=["N001"], glslang=False))
     width = len(src.split("\n")[finding.line - 1]) + 1
     assert 1 <= finding.column <= width and finding.column <= finding.end_column <= width
+    assert finding.fix is None  # no edit from approximate columns
