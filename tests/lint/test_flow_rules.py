@@ -499,31 +499,9 @@ def test_c103_value_known_in_an_outer_loop_holds_only_on_its_first_iteration() -
 _VORONOI_HEAD = "vec2 hash(vec2 p) { return fract(sin(p * 591.32) * 43758.5); }\n"
 
 
-def test_c103_nearest_point_loop_writes_on_its_first_iteration() -> None:
-    # the Chebyshev distance to the first cell's point is below 2, under the starting 8.0
-    src = image(
-        "vec2 x = fragCoord / 40.0; vec2 n = floor(x); vec2 f = fract(x);\n"
-        "vec2 mr; float md = 8.0;\n"
-        "for (int j = -1; j <= 1; j++)\n"
-        "for (int i = -1; i <= 1; i++) {\n"
-        "  vec2 g = vec2(float(i), float(j)); vec2 o = hash(n + g); vec2 r = g + o - f;\n"
-        "  float d = max(abs(r.x), abs(r.y));\n"
-        "  if (d < md) { md = d; mr = r; } }\n"
-        "fragColor = vec4(mr, md, 1.0);",
-        _VORONOI_HEAD,
-    )
-    assert found(src) == []
-
-
-@pytest.mark.parametrize(
-    "start",
-    [
-        "1.0",  # the first cell's point may be farther than 1.0
-        "iTime",  # nothing known of the starting bound
-    ],
-)
-def test_c103_nearest_point_loop_with_a_bound_it_may_not_beat(start: str) -> None:
-    src = image(
+def _nearest_point_loop(start: str) -> str:
+    """A 3x3 nearest-point search (Chebyshev distance) whose bound starts at `start`."""
+    return image(
         "vec2 x = fragCoord / 40.0; vec2 n = floor(x); vec2 f = fract(x);\n"
         f"vec2 mr; float md = {start};\n"
         "for (int j = -1; j <= 1; j++)\n"
@@ -534,7 +512,22 @@ def test_c103_nearest_point_loop_with_a_bound_it_may_not_beat(start: str) -> Non
         "fragColor = vec4(mr, md, 1.0);",
         _VORONOI_HEAD,
     )
-    assert [c for c, _ in found(src)] == ["C103"]
+
+
+def test_c103_nearest_point_loop_writes_on_its_first_iteration() -> None:
+    # the Chebyshev distance to the first cell's point is below 2, under the starting 8.0
+    assert found(_nearest_point_loop("8.0")) == []
+
+
+@pytest.mark.parametrize(
+    "start",
+    [
+        "1.0",  # the first cell's point may be farther than 1.0
+        "iTime",  # nothing known of the starting bound
+    ],
+)
+def test_c103_nearest_point_loop_with_a_bound_it_may_not_beat(start: str) -> None:
+    assert [c for c, _ in found(_nearest_point_loop(start))] == ["C103"]
 
 
 def test_c103_value_stored_in_one_branch_is_not_known_in_the_other() -> None:

@@ -137,21 +137,15 @@ class ExpressionWalker:
             )
         return v
 
-    def _prefix(self, node: Tree, state: State) -> MV:
+    def _step(self, node: Tree, state: State) -> MV:
+        """`++x` / `x--`: store the stepped value; the expression is the new value (prefix) or
+        the old one (postfix)."""
         op, target = operator(node), operand(node)
         old = self.expr(target, state)
         new = arith("+" if op == "++" else "-", old, MV("int", (1,)))
         new = self._convert(old.type, new, state) if old.type else new  # type: ignore[arg-type]
         self._store(target, new, state)
-        return new
-
-    def _postfix(self, node: Tree, state: State) -> MV:
-        target, op = operand(node), operator(node)
-        old = self.expr(target, state)
-        new = arith("+" if op == "++" else "-", old, MV("int", (1,)))
-        new = self._convert(old.type, new, state) if old.type else new  # type: ignore[arg-type]
-        self._store(target, new, state)
-        return old
+        return new if node.data == "prefix" else old
 
     def _binary(self, node: Tree, state: State) -> MV:
         left, op, right = binary_parts(node)
@@ -323,8 +317,8 @@ _HANDLERS: dict[str, Callable[[ExpressionWalker, Tree, State], MV]] = {
     "sequence": ExpressionWalker._sequence,
     "ternary": ExpressionWalker._ternary,
     "unary": ExpressionWalker._unary,
-    "prefix": ExpressionWalker._prefix,
-    "postfix": ExpressionWalker._postfix,
+    "prefix": ExpressionWalker._step,
+    "postfix": ExpressionWalker._step,
     "binary": ExpressionWalker._binary,
     "assignment": ExpressionWalker._assignment,
     "field": ExpressionWalker._field,
