@@ -4,6 +4,7 @@ apply fixes when asked. Nothing here raises on bad input: every problem is a fin
 from __future__ import annotations
 
 import codecs
+import re
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -40,7 +41,15 @@ class LintResult:
 
     def encoded(self) -> bytes:
         """The bytes to write back after fixes: UTF-8, the file's byte-order mark kept."""
-        return (codecs.BOM_UTF8 if self.bom else b"") + self.text.encode("utf-8")
+        # surrogateescape gives back, byte for byte, what a comment held that was not UTF-8
+        body = self.text.encode("utf-8", "surrogateescape")
+        return (codecs.BOM_UTF8 if self.bom else b"") + body
+
+
+# A comment, which may hold bytes of an older encoding (a Latin-1 `°` in a 2013 shader): GLSL
+# and glslang ignore what a comment holds, so only a byte outside comments makes a file unreadable.
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?(?:\*/|\Z)", re.S)
+_ESCAPED = re.compile("[\udc80-\udcff]")
 
 
 def decode(data: bytes, file: str) -> tuple[str, str | None]:
@@ -52,9 +61,14 @@ def decode(data: bytes, file: str) -> tuple[str, str | None]:
     try:
         # utf-8-sig drops a byte-order mark, which editors on Windows write and GLSL rejects.
         return data.decode("utf-8-sig"), None
-    except UnicodeDecodeError as exc:
-        line = data[: exc.start].count(b"\n") + 1
-        return "", f"not UTF-8 text (invalid byte 0x{data[exc.start]:02x} on line {line})"
+    except UnicodeDecodeError:
+        text = data.decode("utf-8-sig", "surrogateescape")
+    stray = _ESCAPED.search(_COMMENT.sub(lambda m: " " * len(m.group()), text))
+    if stray is None:
+        return text, None
+    line = text[: stray.start()].count("\n") + 1
+    byte = ord(stray.group()) - 0xDC00
+    return "", f"not UTF-8 text (invalid byte 0x{byte:02x} on line {line})"
 
 
 def build_context(text: str, file: str, options: Options, tab: Tab | None = None) -> LintContext:

@@ -99,7 +99,7 @@ def _compile(
     stage)."""
     validator = find_validator()
     shader = os.path.join(workdir, f"shader.{stage}")
-    with open(shader, "w", encoding="utf-8") as handle:
+    with open(shader, "w", encoding="utf-8", errors="surrogateescape") as handle:
         handle.write(wrapped)
     return _run([validator, *extra_args, shader])
 
@@ -330,7 +330,7 @@ def _validate_batch(
         paths = []
         for index, (text, _) in enumerate(wrapped):
             path = os.path.join(workdir, f"{index:05d}.frag")  # .frag: the fragment stage
-            with open(path, "w", encoding="utf-8") as handle:
+            with open(path, "w", encoding="utf-8", errors="surrogateescape") as handle:
                 handle.write(text)
             paths.append(path)
         timeout = TIMEOUT_S + BATCH_FILE_TIMEOUT_S * len(paths)

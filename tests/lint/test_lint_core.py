@@ -213,6 +213,15 @@ def test_unreadable_bytes_are_one_c005_finding(data: bytes, why: str) -> None:
     assert codes(result.findings) == ["C005"] and why in result.findings[0].message
 
 
+def test_a_byte_of_an_older_encoding_in_a_comment_is_linted_and_kept_by_a_fix() -> None:
+    # Real shaders of 2013 carry Latin-1 in comments (`// rotate 180\xb0`); glslang ignores
+    # comments, so the file is linted, and a fix writes the byte back as it was.
+    data = b"// rotate 18\xb0 /* caf\xe9 */\nvoid f() { vec4 c = texture2D(iChannel0, vec2(0)); }\n"
+    result = lint_bytes(data, "x.glsl", Options(select=["P003"], glslang=False), fix=True)
+    assert "C005" not in codes(result.findings) and result.fixed == 1
+    assert result.encoded() == data.replace(b"texture2D", b"texture")
+
+
 def test_edits_apply_from_the_end_so_positions_stay_valid() -> None:
     text = "aa bb\ncc dd\n"
     edits = [Edit(1, 1, 1, 3, "x"), Edit(2, 4, 2, 6, "yyy"), Edit(1, 4, 2, 1, "")]

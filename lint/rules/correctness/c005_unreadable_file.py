@@ -11,8 +11,12 @@ from .. import Rule, register
 
 @register
 class Unreadable(Rule):
-    """Finds files that are not GLSL text: binary data, bytes that are not UTF-8, or a file too
-    large to analyse (over 1 MB).
+    """Finds files that are not GLSL text: binary data, bytes that are not UTF-8 outside
+    comments, or a file too large to analyse (over 1 MB).
+
+    A comment may hold bytes of an older encoding (a Latin-1 degree sign in a shader of 2013):
+    GLSL and glslang ignore what a comment holds, so such a file is linted, and a fix writes
+    those bytes back unchanged.
 
     Why is this bad?
         A shader is text; anything else is a wrong path or a corrupted file, and should be said
