@@ -378,13 +378,19 @@ def has_extra_corpus() -> bool:
     return (EXTRA_CORPUS / "glslang-valid.txt").is_file()
 
 
+@cache
+def extra_findings() -> list[dict[str, Any]]:
+    """Every rule's findings on the extra corpus's glslang-valid files (linted once a run)."""
+    return corpus_findings(valid_files(EXTRA_CORPUS))
+
+
 def measure_extra() -> dict[str, Any] | None:
     """The extra corpus measured with its own labels, as stored in precision.json (None
     where the corpus is absent)."""
     if not has_extra_corpus():
         return None
     files = valid_files(EXTRA_CORPUS)
-    labels, findings = load_labels(EXTRA_LABELS), corpus_findings(files)
+    labels, findings = load_labels(EXTRA_LABELS), extra_findings()
     stats = measure(labels, findings)
     for code, s in stats.items():
         if s.gone:
@@ -436,8 +442,11 @@ def main(argv: list[str] | None = None) -> int:
         for f in sample.unlabelled:
             print(f"  unlabelled: {f['code']} {f['file']}:{f['line']}:{f['column']}")
         if extra:
-            line = DefaultSample.from_json(extra["default"]).line()
-            print("Extra corpus: " + line.replace("on the corpus", "on the extra corpus"))
+            extra_sample = default_sample(load_labels(EXTRA_LABELS), extra_findings())
+            line = extra_sample.line().replace("on the corpus", "on the extra corpus")
+            print("Extra corpus: " + line)
+            for f in extra_sample.unlabelled:
+                print(f"  unlabelled: {f['code']} {f['file']}:{f['line']}:{f['column']}")
         return 0
     stats = measure(labels, findings)
     measured = {

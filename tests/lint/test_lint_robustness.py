@@ -52,7 +52,7 @@ CASES: dict[str, tuple[Callable[[], bytes], set[str]]] = {
     "truncated": (lambda: _shader(b"fragColor = vec4(")[:-3], {"C003"}),
     "truncated-in-comment": (lambda: HEAD + b"/* unfinished", {"C004"}),
     "binary-junk": (lambda: bytes(range(256)) * 64, {"C005"}),
-    "not-utf8": (lambda: _shader(b"float x = 1.0; // caf\xe9"), {"C005"}),
+    "not-utf8": (lambda: _shader(b"float caf\xe9 = 1.0;"), {"C005"}),  # outside a comment
     "png-header": (lambda: b"\x89PNG\r\n\x1a\n" + b"\x00" * 64, {"C005"}),
     "extra-closing-brace": (lambda: _shader(b"fragColor = vec4(1.0);") + b"}\n}\n", {"C003"}),
     "missing-closing-brace": (lambda: HEAD + b"if (true) {\nfragColor = vec4(1.0);\n", {"C003"}),
