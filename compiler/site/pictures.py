@@ -171,21 +171,40 @@ def cache_key(text: str) -> str:
     return hashlib.sha256(data.encode("utf-8")).hexdigest()
 
 
+# The preview scene made to show a slot (snippets/previews/), where the default scene would
+# hide its variants: a lobe's shape shows on a roughness sweep lit at a grazing angle, not on
+# one sphere under a high sun. A slot not named here is shown in the scenes below.
+PREVIEWS = {
+    "D": "surface",
+    "F": "surface",
+    "V": "surface",
+    "specular": "surface",
+    "diffuse": "surface",
+}
+
+
 def scene_using(slot: str) -> tuple[str | None, str | None] | None:
     """The scene to show a variant of `slot` in, as (path for glint.compose, file as the page
-    names it): the default scene (None, None) if its plan uses the slot, else the first example
-    scene that does."""
-    for path, name, slots in _scene_slots():
+    names it): the slot's preview scene, else the default scene (None, None) if its plan uses
+    the slot, else the first example scene that does."""
+    for path, name, slots in _scene_slots(PREVIEWS.get(slot)):
         if slot in slots:
             return path, name
     return None
 
 
 @cache
-def _scene_slots() -> tuple[tuple[str | None, str | None, frozenset[str]], ...]:
+def _scene_slots(
+    preview: str | None = None,
+) -> tuple[tuple[str | None, str | None, frozenset[str]], ...]:
     """Each candidate scene (path, name) and the slots its plan fills (composed once per build
-    process): the default scene first, then the example scenes by name."""
-    scenes: list[tuple[str | None, str | None]] = [(None, None)]
+    process): the preview scene named, then the default scene, then the example scenes by
+    name."""
+    scenes: list[tuple[str | None, str | None]] = []
+    if preview is not None:
+        file = snippets_root() / "previews" / f"{preview}.toml"
+        scenes.append((os.fspath(file), f"snippets/previews/{file.name}"))
+    scenes.append((None, None))
     for file in sorted((snippets_root() / "scenes").glob("*.toml")):
         # A variant's picture is a ShaderToy shader composed with the variant: mesh scenes
         # (rasterized, each material with its own models) are not candidates.
