@@ -56,6 +56,11 @@ CLASS_RULES: dict[str, frozenset[str]] = {
 }
 CLASSES = tuple(CLASS_RULES)
 CONFIDENCES = ("certain", "likely")
+# What a second, independent reading of a defect found (absent: it confirmed it). A
+# host-dependent defect is real on ShaderToy, the corpus's target and glint's, but not on the
+# host the corpus was collected from (a port that sets its own uniforms from a GUI).
+SECOND_READINGS = ("host-dependent", "doubtful", "not-a-defect", "misreading")
+CONFIRMED = (None, "host-dependent")
 
 
 @dataclass(frozen=True)
@@ -68,6 +73,8 @@ class Defect:
     why: str
     trigger: str
     confidence: str
+    second_reading: str | None = None  # one of SECOND_READINGS; None: confirmed
+    second_reading_note: str = ""
 
     def found_by(self, codes_on_line: set[str]) -> set[str]:
         """The codes among those reported on this defect's line that address its class."""
@@ -99,12 +106,16 @@ def load_ground_truth(folder: Path = GROUND_TRUTH) -> GroundTruth:
                 entry["why"],
                 entry["trigger"],
                 entry.get("confidence", "certain"),
+                entry.get("second_reading"),
+                entry.get("second_reading_note", ""),
             )
             where = f"{path.name}: {defect.file}:{defect.line}"
             if defect.kind not in CLASS_RULES:
                 raise ValueError(f"{where}: class {defect.kind!r} is not one of {CLASSES}")
             if defect.confidence not in CONFIDENCES:
                 raise ValueError(f"{where}: confidence {defect.confidence!r} is unknown")
+            if defect.second_reading not in (None, *SECOND_READINGS):
+                raise ValueError(f"{where}: second_reading {defect.second_reading!r} is unknown")
             defects.append(defect)
     unread = {d.file for d in defects} - set(read)
     if unread:
@@ -130,6 +141,13 @@ class Recall:
         total = len(self.found) + len(self.missed)
         return len(self.found) / total if total else 0.0
 
+    def confirmed(self) -> Recall:
+        """The same measure on the defects a second reading confirmed (SECOND_READINGS)."""
+        return Recall(
+            [(d, c) for d, c in self.found if d.second_reading in CONFIRMED],
+            [d for d in self.missed if d.second_reading in CONFIRMED],
+        )
+
 
 def measure(truth: GroundTruth, corpus: Path, options: Options) -> Recall:
     files = corpus / "shadertoy"
@@ -153,6 +171,11 @@ def report(name: str, recall: Recall) -> str:
         if by_class[kind] or found_class[kind]:
             seen = found_class[kind]
             lines.append(f"  {kind:<26} {seen} of {seen + by_class[kind]}")
+    confirmed = recall.confirmed()
+    lines.append(
+        f"  confirmed by a second reading: {len(confirmed.found)} of "
+        f"{len(confirmed.found) + len(confirmed.missed)} ({confirmed.share:.0%})"
+    )
     return "\n".join(lines)
 
 
@@ -165,7 +188,9 @@ def main(argv: list[str] | None = None) -> int:
         print(f"no corpus at {args.corpus}/shadertoy", file=sys.stderr)
         return 2
     truth = load_ground_truth()
-    print(f"{len(truth.read)} shaders read, {len(truth.defects)} serious defects recorded")
+    contested = Counter(d.second_reading for d in truth.defects if d.second_reading)
+    print(f"{len(truth.read)} shaders read, {len(truth.defects)} serious defects recorded; "
+          f"a second reading contested some: {dict(sorted(contested.items()))}")  # fmt: skip
     for name, options in (("default rules", Options()), ("every rule (ALL)", Options(["ALL"]))):
         recall = measure(truth, args.corpus, options)
         print(report(name, recall))

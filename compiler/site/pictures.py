@@ -180,6 +180,8 @@ PREVIEWS = {
     "V": "surface",
     "specular": "surface",
     "diffuse": "surface",
+    "shadow": "penumbra",
+    "ao": "corner",
 }
 
 

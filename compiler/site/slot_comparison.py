@@ -11,7 +11,9 @@ by a hash of the data it shows, like the pictures.
 from __future__ import annotations
 
 import hashlib
+import itertools
 import json
+import statistics
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
@@ -109,14 +111,55 @@ def _flip_table(
     if len(rows) < 2:
         return ""
     scene = ref_picture.scene
+    shown = {i: files[p.path] for i in ids if (p := pictures.get(i)) and p.path in files}
     return (
         "## Side by side\n\n"
         f"Each variant in {scene}, and its FLIP error image against {md_code(reference or '')}, "
         "the variant the reference tier takes (black: no visible difference; bright: "
-        "large). The last column is the mean FLIP error over the picture.\n\n"
+        "large). The last column is the mean FLIP error over the picture. "
+        + _how_much_they_differ(shown)
+        + "\n\n"
         + table(["variant", "picture", "FLIP against the reference", "mean FLIP"], rows)
         + "\n"
     )
+
+
+def _how_much_they_differ(pngs: Mapping[str, bytes]) -> str:
+    """What the pictures show of the choice, in numbers: the median share of pixels two
+    variants' pictures differ in (variant_contrast.py), and the variants whose pictures are the
+    same here, so that a reader does not look for a difference that is not there."""
+    from .variant_contrast import differing_share  # also a script: not imported with the package
+
+    ids = list(pngs)
+    same: dict[str, str] = {i: i for i in ids}  # each variant's group: the first one like it
+
+    def group(i: str) -> str:
+        while same[i] != i:
+            i = same[i]
+        return i
+
+    shares = []
+    for a, b in itertools.combinations(ids, 2):
+        share = differing_share(pngs[a], pngs[b])
+        shares.append(share)
+        if share == 0.0:
+            same[group(b)] = group(a)
+    text = (
+        f"Between two variants' pictures, a median {statistics.median(shares):.1%} of the "
+        f"pixels differ by more than 3/255."
+    )
+    groups: dict[str, list[str]] = {}
+    for i in ids:
+        groups.setdefault(group(i), []).append(i)
+    for members in groups.values():
+        if len(members) > 1:
+            names = ", ".join(md_code(m) for m in members[:-1]) + f" and {md_code(members[-1])}"
+            text += (
+                f" {names} give the same picture here (no pixel differs by more than 3/255): "
+                "they differ in cost or float16 behaviour, or on inputs this scene does not "
+                "reach (their pages say where)."
+            )
+    return text
 
 
 def _image(alt: str, path: PurePosixPath) -> str:

@@ -65,9 +65,11 @@ def _rendered(slots: Iterable[str], cache_dir: Path) -> dict[str, list[bytes]]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m glint.compiler.site.variant_contrast",
-                                     description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)  # fmt: skip
+    parser = argparse.ArgumentParser(
+        prog="python -m glint.compiler.site.variant_contrast",
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
     parser.add_argument("slots", nargs="*", default=list(MEASURED_SLOTS))
     parser.add_argument("--cache-dir", type=Path, default=None)
     args = parser.parse_args(argv)
@@ -75,8 +77,9 @@ def main(argv: list[str] | None = None) -> int:
         pictures = _rendered(args.slots, args.cache_dir or Path(tmp))
     for slot, share in contrasts(pictures).items():
         shown = "—" if share is None else f"{share:.1%}"
-        mark = "" if share is None or slot not in MEASURED_SLOTS else (
-            "  ok" if share >= GOAL else f"  below {GOAL:.0%}")  # fmt: skip
+        mark = ""
+        if share is not None and slot in MEASURED_SLOTS:
+            mark = "  ok" if share >= GOAL else f"  below {GOAL:.0%}"
         print(f"{slot:<10} {len(pictures[slot]):>2} pictures  median pairwise {shown}{mark}")
     return 0
 
