@@ -1,8 +1,10 @@
 """The picture on each variant's page: glint's own render of a scene composed with that variant,
 so a reader sees what choosing it does rather than reading about it.
 
-The default scene is used where it uses the variant's slot; otherwise the first example scene
-(`snippets/scenes/*.toml`) whose plan uses the slot, named on the page. Library snippets (sdf
+A slot with a preview scene made to show it (`snippets/previews/*.toml`, PREVIEWS: a roughness
+sweep for the surface slots, long penumbrae for shadows, a small corner for AO) is shown there;
+any other in the default scene where that uses the slot, else in the first example scene
+(`snippets/scenes/*.toml`) whose plan uses it, named on the page. Library snippets (sdf
 primitives, core helpers) fill no slot a scene can override, so they get no picture. A variant
 that fails to compose or render gets no picture and a line saying so: one bad snippet must not
 break the site.
