@@ -20,7 +20,7 @@ from glint.compiler.cli import build_parser
 from glint.compiler.errors import UsageError
 from glint.compiler.render.images import png_pixels
 from glint.compiler.site import build_docs
-from glint.compiler.site.catalog_pages import VariantDoc, variant_page
+from glint.compiler.site.catalog_pages import VariantDoc, catalog_pages, slot_path, variant_page
 from glint.compiler.site.cli_reference import commands
 from glint.compiler.site.katex_assets import KATEX_DIR
 from glint.compiler.site.measured import Accuracy, accuracy_section
@@ -373,3 +373,26 @@ def test_a_variant_measured_on_samples_is_plotted_as_the_bench_measures_it(
     assert float(measured.error.max()) == pytest.approx(row["max_abs"], rel=1e-3, abs=1e-4)
     # a variant whose error comes from a render, not probes, gets no sample plot
     assert sample_errors(load_catalog().get("normal.derivative_flat")) is None
+
+
+def _headings_glued_to_the_line_above(markdown: str) -> list[str]:
+    """Headings (outside fenced code) whose line above is not blank: under a table, Markdown
+    reads such a heading as one more row of it."""
+    glued, fenced, previous = [], False, ""
+    for line in markdown.split("\n"):
+        if line.lstrip().startswith("```"):
+            fenced = not fenced
+        elif not fenced and line.startswith("#") and previous.strip():
+            glued.append(line)
+        previous = line
+    return glued
+
+
+def test_a_slots_compared_variants_come_under_their_own_heading() -> None:
+    # The slot page ends with its table of variants; the comparison section after it used to
+    # be read as one more row of that table, its heading lost (14 of 26 slot pages).
+    pages = catalog_pages(slot_sections={"D": "## Side by side\n\nEach variant.\n"})
+    page = pages[slot_path("D")]
+    assert "## Side by side" in page
+    assert _headings_glued_to_the_line_above(page) == []
+    assert all(_headings_glued_to_the_line_above(text) == [] for text in pages.values())

@@ -89,9 +89,8 @@ def catalog_pages(
     slot_sections = slot_sections or {}
     slots = slot_docs(variants)
     pages = {CATALOG_DIR / "index.md": index_page(variants, slots, pictures, accuracy)}
-    pages |= {
-        slot_path(slot.name): slot_page(slot) + slot_sections.get(slot.name, "") for slot in slots
-    }
+    pages |= {slot_path(slot.name): _joined(slot_page(slot), slot_sections.get(slot.name, ""))
+              for slot in slots}  # fmt: skip
     pages |= {
         variant_path(doc.id): variant_page(doc, pictures.get(doc.id), accuracy.get(doc.id), machine)
         for doc in variants
@@ -226,6 +225,12 @@ def slot_page(slot: SlotDoc) -> str:
     rows = [[_variant_link(id_, "../"), md_prose(summary)] for id_, summary in slot.variants]
     parts.append(table(["variant", "summary"], rows))
     return "".join(parts)
+
+
+def _joined(*sections: str) -> str:
+    """Markdown sections one after another, a blank line between: a heading right under a table's
+    last row would be read as one more row of it."""
+    return "\n".join(s.rstrip("\n") + "\n" for s in sections if s)
 
 
 def variant_page(
