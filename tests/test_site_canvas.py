@@ -288,6 +288,57 @@ def test_a_drag_orbits_the_camera_and_play_runs_the_clock(
     _no_problems(log)
 
 
+def test_many_canvases_keep_within_the_context_budget_and_come_back(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    """A page of more canvases than Chrome keeps contexts for (the tiers page had over 16):
+    scrolled through, no more than the script's budget stay alive besides those in view; one
+    scrolled back to draws again; one whose context is taken comes back when seen."""
+    page, _ = browser_page
+    folder = live_site.site / "img" / "live-many"
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "ramp.glsl").write_text(
+        "void mainImage(out vec4 c, in vec2 p) {\n"
+        "    c = vec4(p.x / iResolution.x, 0.6, 0.3, 1.0);\n}\n",
+        encoding="utf-8",
+    )
+    count = 22
+    canvases = "".join(
+        f'<div class="glint-live" id="live{i}"><canvas class="glint-live-canvas" width="64" '
+        'height="36" data-shader="img/live-many/ramp.glsl"></canvas></div>'
+        for i in range(count)
+    )
+    page.goto(live_site.url)
+    page.set_content(
+        "<!doctype html><html><head><meta charset='utf-8'><style>"
+        ".glint-live{height:700px}.glint-live canvas{width:64px!important}</style></head><body>"
+        + canvases
+        + f'<script src="{live_site.url}assets/live-canvas.js"></script></body></html>'
+    )
+    budget = page.evaluate("window.glintLive.budget")
+    assert count > 16 > budget
+    most = 0
+    for i in range(count):
+        _drawn(page, f"#live{i} canvas")
+        most = max(most, page.evaluate("window.glintLive.contexts()"))
+    assert most <= budget + 2, most  # the budget, plus the one or two in view
+    parked = page.evaluate(
+        """() => [...document.querySelectorAll("canvas.glint-live-canvas")]
+           .filter(c => c.dataset.state === "lost").map(c => c.style.backgroundImage)"""
+    )
+    assert len(parked) >= count - budget - 2 and all(s.startswith('url("data:') for s in parked)
+    # the first canvas, parked long ago, draws again when scrolled back to
+    _drawn(page, "#live0 canvas")
+    assert _pixels(page, "#live0 canvas").mean() > 0.2
+    # a context taken away (as a GPU reset or the browser's own limit does) comes back too
+    page.evaluate("document.querySelector('#live0 canvas').glintLive.lose.loseContext()")
+    page.wait_for_function("document.querySelector('#live0 canvas').dataset.state === 'lost'")
+    page.locator("#live5 canvas").scroll_into_view_if_needed()
+    _drawn(page, "#live0 canvas")
+    assert _pixels(page, "#live0 canvas").mean() > 0.2
+    assert page.evaluate("window.glintLive.contexts()") <= budget + 2
+
+
 COVERAGE_BATCH = 12  # canvases per page: Chrome keeps about 16 WebGL contexts alive
 
 

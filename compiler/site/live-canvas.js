@@ -8,8 +8,14 @@
 // clock; the time slider scrubs it; a mouse drag sets iMouse as ShaderToy does; each parameter
 // of the shader's /* glint-params */ manifest gets a slider that sets its uniform. A
 // <select class="glint-live-choice"> beside the canvas swaps its shader for the chosen one
-// (a slot's variants). Compile errors appear in a <pre> under the canvas. Canvases start when scrolled into view, and lose
-// their WebGL context when the page changes, since Chrome keeps only about 16 alive at once.
+// (a slot's variants). Compile errors appear in a <pre> under the canvas.
+//
+// Chrome keeps only about 16 WebGL contexts alive at once and drops the oldest beyond that, so
+// a page of many canvases manages its own: a canvas starts when scrolled into view; when more
+// than MAX_CONTEXTS are alive, those out of view longest give theirs up (parked: their last
+// frame stays as a picture) and get it back when scrolled into view again. A context the
+// browser takes away (a GPU reset, its own limit) is restored the same way. Every context is
+// given up when the page changes.
 (function () {
   "use strict";
 
@@ -65,8 +71,10 @@
     ".glint-live-errors{white-space:pre-wrap;color:#c62828}" +
     ".glint-live-choice{margin:0 0 .5em;font-size:.75rem}";
 
+  var MAX_CONTEXTS = 8; // well under Chrome's ~16, which other pages' canvases share
   var instances = [];
   var observer = null;
+  var clock = 0; // counts the times a canvas scrolled into view: the most recent is the highest
 
   function addStyle() {
     if (document.getElementById("glint-live-style")) return;
@@ -128,7 +136,13 @@
     this.params = [];
     this.values = {};
     this.started = false;
-    this.lost = false;
+    this.released = false; // the page changed: for good
+    this.contextLost = false; // parked by the budget, or taken by the browser: comes back
+    this.visible = false;
+    this.seen = 0; // when it last scrolled into view (clock)
+    this.text = null; // the shader, kept to compile again when a lost context comes back
+    this.compiled = null; // the text of the program that runs
+    this.lose = null; // the WEBGL_lose_context extension: park and restore
   }
 
   Live.prototype.start = function () {
@@ -140,7 +154,33 @@
     this.canvas.insertAdjacentElement("afterend", this.errors);
     this.errors.insertAdjacentElement("afterend", this.controls);
     this.bindMouse();
+    var self = this;
+    this.canvas.addEventListener("webglcontextlost", function (event) {
+      event.preventDefault(); // without it the browser never gives the context back
+      self.contextLost = true;
+      self.program = null; // gone with the context
+      if (self.playing) self.setPlaying(false);
+      self.canvas.dataset.state = "lost";
+    });
+    this.canvas.addEventListener("webglcontextrestored", function () {
+      self.contextLost = false;
+      if (self.text !== null) self.compile(self.text);
+      self.canvas.style.backgroundImage = ""; // the live frame is back in front
+    });
     this.load();
+  };
+
+  // Give the context up, keeping the last frame as the canvas's background picture.
+  Live.prototype.park = function () {
+    if (!this.gl || this.contextLost || !this.lose) return;
+    this.canvas.style.backgroundImage = "url(" + this.canvas.toDataURL() + ")";
+    this.canvas.style.backgroundSize = "100% 100%";
+    this.lose.loseContext(); // fires webglcontextlost
+  };
+
+  // Back in view: a context that was parked or taken comes back (webglcontextrestored).
+  Live.prototype.unpark = function () {
+    if (this.contextLost && this.lose && !this.released) this.lose.restoreContext();
   };
 
   // Fetch the shader that data-shader names and compile it, in place of any shader before it.
@@ -155,7 +195,9 @@
       })
       .then(function (text) {
         // a later choice may have been made while this one loaded: only the last one counts
-        if (!self.lost && self.canvas.dataset.shader === path) self.compile(text);
+        if (self.released || self.canvas.dataset.shader !== path) return;
+        self.text = text;
+        if (!self.contextLost) self.compile(text);
       })
       .catch(function (error) {
         self.fail(String(error.message || error));
@@ -165,7 +207,7 @@
   // A selector's choice: another shader on the same canvas, at the same time and mouse.
   Live.prototype.choose = function (path) {
     this.canvas.dataset.shader = path;
-    if (this.started && !this.lost) this.load();
+    if (this.started && !this.released) this.load();
   };
 
   Live.prototype.fail = function (message) {
@@ -182,6 +224,9 @@
     });
     if (!gl) return this.fail("This browser has no WebGL2.");
     this.gl = gl;
+    this.lose = this.lose || gl.getExtension("WEBGL_lose_context");
+    // the same shader again (a context given back): its sliders keep where the reader left them
+    var kept = text === this.compiled ? this.values : {};
     this.reset();
     var complete = /^\s*#version/.test(text);
     var source = complete ? text : PRELUDE + text + EPILOGUE;
@@ -201,8 +246,10 @@
     this.program = program;
     this.params = manifest(text);
     for (var i = 0; i < this.params.length; i++) {
-      this.values[this.params[i].name] = this.params[i].default;
+      var name = this.params[i].name;
+      this.values[name] = name in kept ? kept[name] : this.params[i].default;
     }
+    this.compiled = text;
     this.buildControls();
     this.canvas.dataset.state = "ready";
     this.draw();
@@ -210,7 +257,7 @@
 
   // Forget the shader before this one: its program, its parameters and their controls.
   Live.prototype.reset = function () {
-    if (this.program) this.gl.deleteProgram(this.program);
+    if (this.program && !this.contextLost) this.gl.deleteProgram(this.program);
     this.program = null;
     this.params = [];
     this.values = {};
@@ -251,7 +298,8 @@
     this.params.forEach(function (param) {
       var isInt = param.type === "int";
       var step = isInt ? 1 : (param.max - param.min) / 200;
-      var control = slider(param.name, param.min, param.max, step, param.default, function (v) {
+      var value = self.values[param.name];
+      var control = slider(param.name, param.min, param.max, step, value, function (v) {
         self.values[param.name] = v;
         if (!self.playing) self.draw();
       });
@@ -305,7 +353,7 @@
     if (!playing) return;
     this.last = performance.now();
     function tick(now) {
-      if (!self.playing || self.lost) return;
+      if (!self.playing || self.released || self.contextLost) return;
       var delta = (now - self.last) / 1000;
       self.last = now;
       self.time = (self.time + delta) % TIME_MAX;
@@ -323,7 +371,7 @@
 
   Live.prototype.draw = function (delta) {
     var gl = this.gl;
-    if (!gl || !this.program || this.lost) return;
+    if (!gl || !this.program || this.released || this.contextLost) return;
     var width = this.canvas.width;
     var height = this.canvas.height;
     var now = new Date();
@@ -356,17 +404,30 @@
   };
 
   Live.prototype.release = function () {
-    this.lost = true;
+    this.released = true;
     this.playing = false;
     cancelAnimationFrame(this.raf);
     if (observer) observer.unobserve(this.canvas);
-    if (this.gl) {
-      var lose = this.gl.getExtension("WEBGL_lose_context");
-      if (lose) lose.loseContext();
-      this.gl = null;
-    }
+    if (this.gl && !this.contextLost && this.lose) this.lose.loseContext();
+    this.gl = null;
     this.canvas.dataset.state = "released";
   };
+
+  function alive(live) {
+    return live.gl && !live.contextLost && !live.released;
+  }
+
+  // At most MAX_CONTEXTS alive: park those out of view, the longest out of view first.
+  function keepWithinBudget() {
+    var active = instances.filter(alive);
+    var spare = active.filter(function (live) {
+      return !live.visible;
+    });
+    spare.sort(function (a, b) {
+      return a.seen - b.seen;
+    });
+    for (var i = 0; active.length - i > MAX_CONTEXTS && i < spare.length; i++) spare[i].park();
+  }
 
   function releaseDetached() {
     instances = instances.filter(function (live) {
@@ -382,10 +443,14 @@
     if (!observer && "IntersectionObserver" in window) {
       observer = new IntersectionObserver(function (entries) {
         entries.forEach(function (entry) {
+          var live = entry.target.glintLive;
+          live.visible = entry.isIntersecting;
           if (!entry.isIntersecting) return;
-          observer.unobserve(entry.target);
-          entry.target.glintLive.start();
+          live.seen = ++clock;
+          if (!live.started) live.start();
+          else live.unpark();
         });
+        keepWithinBudget();
       });
     }
     var canvases = document.querySelectorAll("canvas.glint-live-canvas[data-shader]");
@@ -408,10 +473,9 @@
   // For tests and the curious: how many canvases hold a live WebGL context.
   window.glintLive = {
     contexts: function () {
-      return instances.filter(function (live) {
-        return live.gl && !live.lost;
-      }).length;
+      return instances.filter(alive).length;
     },
+    budget: MAX_CONTEXTS,
   };
 
   window.addEventListener("pagehide", function () {
