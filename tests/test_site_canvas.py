@@ -143,16 +143,40 @@ def test_a_parameter_slider_changes_the_picture(
     before = _pixels(page)
     names = page.eval_on_selector_all("input[data-param]", "els => els.map(e => e.dataset.param)")
     assert "CAMERA_FOCAL" in names
-    page.eval_on_selector(
-        "input[data-param='CAMERA_FOCAL']",
-        "el => { el.value = '3'; el.dispatchEvent(new Event('input')); }",
-    )
+    slider = "input[data-param='CAMERA_FOCAL']"
+    typed = page.locator(slider).locator("xpath=following-sibling::input[@type='number']")
+    default = float(typed.input_value())
+
+    def frames_after(count: int) -> None:
+        page.wait_for_function(
+            "n => Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > n",
+            arg=count,
+        )
+
+    # the value typed in: the slider follows it, the picture changes
     frames = int(state["frames"])
-    page.wait_for_function(
-        f"Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > {frames}"
-    )
+    typed.fill(str(default / 2))
+    typed.press("Enter")
+    frames_after(frames)
     after = _pixels(page)
-    assert np.abs(after - before).mean() > 0.01, "the slider did not change the picture"
+    assert np.abs(after - before).mean() > 0.01, "the typed value did not change the picture"
+    # CAMERA_FOCAL spans three decades (0.1 to 100): the slider is on a log scale, so half the
+    # value moves it by log(2) / log(1000) of its travel, not by 1.5 / 99.9
+    assert page.get_attribute(slider, "data-scale") == "log"
+    moved = int(page.input_value(slider))
+    expected = round(1000 * np.log(default / 0.1) / np.log(1000))
+    assert abs(expected - moved - 1000 * np.log(2) / np.log(1000)) <= 2
+    # the slider itself, dragged to its middle: the value shown is the log-scale midpoint
+    page.eval_on_selector(
+        slider, "el => { el.value = '500'; el.dispatchEvent(new Event('input')); }"
+    )
+    assert abs(float(typed.input_value()) - np.sqrt(0.1 * 100)) < 0.01
+    # reset: the first value again, and the first picture
+    frames = int(page.get_attribute("canvas.glint-live-canvas", "data-frames") or "0")
+    page.locator(slider).locator("xpath=following-sibling::button").click()
+    frames_after(frames)
+    assert float(typed.input_value()) == default
+    assert np.abs(_pixels(page) - before).mean() < 1e-3
     _no_problems(log)
 
 

@@ -67,7 +67,8 @@
     "max-width:640px;font-size:.7rem}" +
     ".glint-live-slider{display:flex;align-items:center;gap:.5em}" +
     ".glint-live-name{font-family:var(--md-code-font-family,monospace)}" +
-    ".glint-live-value{min-width:4em}" +
+    ".glint-live-value{width:5.5em;font:inherit}" +
+    ".glint-live-reset{border:0;background:none;cursor:pointer;font:inherit;padding:0 .2em}" +
     ".glint-live-errors{white-space:pre-wrap;color:#c62828}" +
     ".glint-live-choice{margin:0 0 .5em;font-size:.75rem}";
 
@@ -102,25 +103,75 @@
     return node;
   }
 
+  // A slider with the value typed in beside it and a reset to its first value. Over a range that
+  // spans two decades or more (0.01 to 1000), the slider moves on a log scale, so that every
+  // decade gets the same travel and the default can be found again.
   function slider(label, min, max, step, value, onInput) {
-    var row = element("label", "glint-live-slider");
+    var initial = value;
+    var log = min > 0 && max / min >= 100;
+    var row = element("span", "glint-live-slider");
     var name = element("span", "glint-live-name", label);
     var input = element("input");
     input.type = "range";
-    input.min = String(min);
-    input.max = String(max);
-    input.step = String(step);
-    input.value = String(value);
     input.setAttribute("aria-label", label);
-    var shown = element("output", "glint-live-value", String(value));
+    if (log) {
+      input.min = "0";
+      input.max = "1000";
+      input.step = "1";
+      input.dataset.scale = "log";
+    } else {
+      input.min = String(min);
+      input.max = String(max);
+      input.step = String(step);
+    }
+    var typed = element("input", "glint-live-value");
+    typed.type = "number";
+    typed.min = String(min);
+    typed.max = String(max);
+    typed.step = "any";
+    typed.setAttribute("aria-label", label + " value");
+    var reset = element("button", "glint-live-reset", "\u21ba");
+    reset.type = "button";
+    reset.title = "reset " + label + " to " + initial;
+    reset.setAttribute("aria-label", "reset " + label);
+
+    function position(v) {
+      if (!log) return String(v);
+      return String(Math.round((1000 * Math.log(v / min)) / Math.log(max / min)));
+    }
+    function fromPosition() {
+      if (!log) return Number(input.value);
+      var v = min * Math.pow(max / min, Number(input.value) / 1000);
+      return Number(v.toPrecision(4));
+    }
+    function show(v) {
+      input.value = position(v);
+      typed.value = String(Number(Number(v).toPrecision(6)));
+    }
+    function set(v, notify) {
+      v = Math.min(max, Math.max(min, v));
+      show(v);
+      if (notify) onInput(v);
+    }
     input.addEventListener("input", function () {
-      shown.textContent = input.value;
-      onInput(Number(input.value));
+      var v = fromPosition();
+      typed.value = String(v);
+      onInput(v);
     });
+    typed.addEventListener("change", function () {
+      var v = Number(typed.value);
+      if (typed.value === "" || !isFinite(v)) return show(fromPosition()); // keep what ran
+      set(v, true);
+    });
+    reset.addEventListener("click", function () {
+      set(initial, true);
+    });
+    show(value);
     row.appendChild(name);
     row.appendChild(input);
-    row.appendChild(shown);
-    return { row: row, input: input, shown: shown };
+    row.appendChild(typed);
+    row.appendChild(reset);
+    return { row: row, input: input, shown: typed, set: set, reset: reset };
   }
 
   function Live(canvas) {
@@ -357,8 +408,7 @@
       var delta = (now - self.last) / 1000;
       self.last = now;
       self.time = (self.time + delta) % TIME_MAX;
-      self.timeSlider.input.value = String(self.time);
-      self.timeSlider.shown.textContent = self.time.toFixed(2);
+      self.timeSlider.set(self.time, false);
       self.draw(delta);
       self.raf = requestAnimationFrame(tick);
     }
