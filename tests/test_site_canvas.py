@@ -243,7 +243,9 @@ def test_a_slot_pages_selector_swaps_the_variant_on_its_canvas(
     )
     assert _flip_against_glint(live_site, chosen, _pixels(page)) < FLIP_LIMIT
     # the new shader's parameters got sliders, and only one set of them
-    assert page.locator(".glint-live-controls button").count() == 1
+    assert page.locator(".glint-live-controls .glint-live-play").count() == 1
+    sliders = page.locator(".glint-live-controls .glint-live-slider").count()
+    assert sliders == page.locator(".glint-live-controls .glint-live-reset").count() >= 2
     _no_problems(log)
 
 
