@@ -137,3 +137,34 @@ def test_cli_writes_a_shader_that_validates(tmp_path: Path) -> None:
     assert main(["compose", "--target", "webgl2", "--params-as-uniforms", "-o", str(out)]) == 0
     assert read_manifest(out.read_text())
     assert main(["validate", "--target", "webgl2", str(out)]) == 0
+
+
+def test_the_scenes_lights_materials_and_exposure_are_knobs_too() -> None:
+    """Issue 27: a page sets a light's intensity, a material's roughness and metallic and the
+    exposure live; ShaderToy code names the same values as #defines a reader can change."""
+    scene = Path(__file__).parents[1] / "snippets" / "scenes" / "metal_spheres.toml"
+    shader = compose(scene, target="webgl2", params_as_uniforms=True)
+    by_name = {p.name: p for p in read_manifest(shader.text)}
+    copper = by_name["MAT_COPPER_ROUGHNESS"]
+    assert (copper.default, copper.min, copper.max) == (0.3, 0.0, 1.0)
+    assert by_name["MAT_COPPER_METALLIC"].default == 1.0
+    assert "MAT_PLASTIC_METALLIC" not in by_name  # a dielectric has no metallic path to turn
+    sun = by_name["SUN_INTENSITY"]
+    assert sun.default == 3.0 and sun.min > 0 and sun.max / sun.min >= 100  # a log slider
+    assert by_name["EXPOSURE"].default == 1.0
+    toy = compose(scene).text
+    assert "#define SUN_INTENSITY 3.0" in toy and "#define EXPOSURE 1.0" in toy
+    assert "makeSurface(P, N, V, vec3(0.95, 0.64, 0.54), MAT_COPPER_ROUGHNESS)" in toy
+
+
+@pytest.mark.render
+def test_post_exposure_scales_the_light_before_the_tone_map(tmp_path: Path) -> None:
+    import glint
+
+    text = (Path(__file__).parents[1] / "snippets" / "scenes" / "default.toml").read_text()
+    brighter = tmp_path / "brighter.toml"
+    brighter.write_text(text.replace("[post]\n", "[post]\nexposure = 2.0\n"))
+    assert "exposure = 2.0" in brighter.read_text()
+    plain = glint.render(glint.compose(None), size=(64, 36), time=1.0).pixels
+    lit = glint.render(glint.compose(brighter), size=(64, 36), time=1.0).pixels
+    assert lit.mean() > plain.mean() + 0.05

@@ -180,6 +180,40 @@ def test_a_parameter_slider_changes_the_picture(
     _no_problems(log)
 
 
+def test_material_and_light_controls_change_the_picture_as_they_should(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    """Exposure brightens; a light's intensity brightens where it lights; a material's
+    roughness changes its spheres' highlights (the D slot's roughness-sweep preview)."""
+    page, log = browser_page
+    page.goto(live_site.url + "catalog/D.ggx/")
+    _drawn(page)
+    names = page.eval_on_selector_all("input[data-param]", "els => els.map(e => e.dataset.param)")
+    assert {"EXPOSURE", "SUN_INTENSITY", "MAT_DIELECTRIC0_ROUGHNESS"} <= set(names)
+
+    def typed(name: str, value: float) -> np.ndarray:
+        frames = int(page.get_attribute("canvas.glint-live-canvas", "data-frames") or "0")
+        field = page.locator(f"input[data-param='{name}']").locator(
+            "xpath=following-sibling::input[@type='number']"
+        )
+        field.fill(str(value))
+        field.press("Enter")
+        page.wait_for_function(
+            "n => Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > n",
+            arg=frames,
+        )
+        return _pixels(page)
+
+    before = _pixels(page)
+    brighter = typed("EXPOSURE", 4.0)
+    assert brighter.mean() > before.mean() + 0.03
+    typed("EXPOSURE", 1.0)
+    rough = typed("MAT_DIELECTRIC0_ROUGHNESS", 0.9)  # the near-mirror sphere turned rough
+    changed = np.abs(rough - before).max(axis=-1) > 3 / 255
+    assert 0.002 < changed.mean() < 0.2  # that one sphere, not the whole picture
+    _no_problems(log)
+
+
 def test_instant_navigation_starts_the_next_pages_canvas(
     live_site: LiveSite, browser_page: tuple[Page, PageLog]
 ) -> None:

@@ -28,9 +28,7 @@ def _pictures(slot: str, cache: Path) -> dict[str, bytes]:
 
 
 @pytest.mark.parametrize("slot", HELD)
-def test_a_slots_variant_pictures_differ_where_the_variants_do(
-    slot: str, tmp_path: Path
-) -> None:
+def test_a_slots_variant_pictures_differ_where_the_variants_do(slot: str, tmp_path: Path) -> None:
     scene = scene_using(slot)
     assert scene is not None and scene[1] == f"snippets/previews/{PREVIEWS[slot]}.toml"
     pictures = _pictures(slot, tmp_path)

@@ -82,14 +82,17 @@ class Shader:
         """The same composition emitted for `target` (with `params_as_uniforms`, webgl2 only),
         without planning it again: what `compose` with those options gives for the scene."""
         from glint.compiler.compose.pipeline import emit_shader
+        from glint.compiler.compose.scene_code import generate
 
         _check_choice("target", target, COMPOSE_TARGETS)
         params_as_uniforms = _args.flag("params_as_uniforms", params_as_uniforms)
         _check_uniforms(target, params_as_uniforms)
         emit_as = "shadertoy" if target in LANGS else target
+        knobs = generate(self.scene).knobs if params_as_uniforms else None
         composed = emit_shader(
-            self.scene.name, self.plan, list(self.units), emit_as, params_as_uniforms
-        )
+            self.scene.name, self.plan, list(self.units), emit_as, params_as_uniforms,
+            knobs=knobs,
+        )  # fmt: skip
         return Shader(
             _converted(composed.text, target, self.scene.name),
             target,

@@ -18,8 +18,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from glint.compiler.catalog.loader import glsl_float
 from glint.compiler.compose.scene import Scene
-from glint.compiler.compose.scene_code import light_code, shade_unit, surface_unit
+from glint.compiler.compose.scene_code import EXPOSURE, light_code, shade_unit, surface_unit
 from glint.compiler.compose.units import Unit, generated
 from glint.compiler.target.mesh import ATTRIBUTES, UNIFORMS
 
@@ -88,7 +89,8 @@ def mesh_code(scene: Scene, material: str) -> MeshCode:
     else:
         vertex = [_vertex_main(lit=False, normal=shading == "phong")]
         fragment = [*lit, _fragment_main(None, _fragment_normal(shading), post)]
-    return MeshCode(lights.defines, vertex, fragment)
+    defines = {**lights.defines, EXPOSURE: glsl_float(scene.post.exposure)}
+    return MeshCode(defines, vertex, fragment)
 
 
 def _declarations(kind: str, pairs: list[tuple[str, str]]) -> list[str]:
@@ -165,7 +167,7 @@ def _fragment_main(color_in: str | None, normal: list[str], post: list[tuple[str
         lines.append("    vec3 color = shade(surfaceAt(P, N, V));")
         requires += ["shade", "surfaceAt"]
         why.insert(0, ("shade", "phong and flat shading light each pixel"))
-    lines += ["    fragColor = vec4(outputTransfer(tonemap(color)), 1.0);", "}"]
+    lines += ["    fragColor = vec4(outputTransfer(tonemap(color * EXPOSURE)), 1.0);", "}"]
     return generated(FRAGMENT_MAIN, ["main"], requires, "\n".join(lines) + "\n", why=why)
 
 
@@ -177,7 +179,7 @@ def background_unit(scene: Scene) -> Unit:
         "    vec3 ro;\n"
         "    vec3 rd;\n"
         "    cameraRay(fragCoord, ro, rd);\n"
-        "    fragColor = vec4(outputTransfer(tonemap(background(rd))), 1.0);\n"
+        "    fragColor = vec4(outputTransfer(tonemap(background(rd) * EXPOSURE)), 1.0);\n"
         "}\n"
     )
     why = [

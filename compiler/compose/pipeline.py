@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 from dataclasses import replace
 from importlib.metadata import version as package_version
 from pathlib import Path
@@ -63,7 +63,7 @@ def compose_scene(
         # the same calls, written so that the normal is taken in uniform control flow
         code = generate(scene, normal_in_uniform_flow=True)
     units = assemble(code.units, catalog, the_plan, code.defines)
-    return emit_shader(scene.name, the_plan, units, target, params_as_uniforms, catalog)
+    return emit_shader(scene.name, the_plan, units, target, params_as_uniforms, catalog, code.knobs)
 
 
 def assemble(
@@ -91,6 +91,7 @@ def emit_shader(
     target: str,
     params_as_uniforms: bool = False,
     catalog: Catalog | None = None,
+    knobs: Mapping[str, UniformParam] | None = None,
 ) -> Shader:
     """Emit composed units for `target`: the last step of composing, also used to emit one
     composition for a second target without planning it again (the site's live canvases)."""
@@ -100,21 +101,30 @@ def emit_shader(
     uniforms: list[UniformParam] = []
     if params_as_uniforms:
         catalog = catalog or load_catalog()
-        units, uniforms = _params_as_uniforms(scene_name, the_plan, units, catalog, target)
+        units, uniforms = _params_as_uniforms(
+            scene_name, the_plan, units, catalog, target, knobs or {}
+        )
     text = emit(scene_name, the_plan, units, target, glint_version())
     return Shader(text=text, units=units, plan=the_plan, uniforms=uniforms)
 
 
 def _params_as_uniforms(
-    scene_name: str, the_plan: Plan, units: list[Unit], catalog: Catalog, target: str
+    scene_name: str,
+    the_plan: Plan,
+    units: list[Unit],
+    catalog: Catalog,
+    target: str,
+    knobs: Mapping[str, UniformParam],
 ) -> tuple[list[Unit], list[UniformParam]]:
     """The units with the ranged parameters the pruned block still defines turned into
-    uniforms, except those the shader needs as constants; and those uniforms, in block order."""
+    uniforms, except those the shader needs as constants; and those uniforms, in block order.
+    `knobs` are the scene's own values a page may set (scene_code: light intensities, material
+    roughness and metallic, exposure)."""
     index = next((i for i, unit in enumerate(units) if unit.id == CONSTANTS), None)
     if index is None:
         return units, []
     block = units[index].body
-    ranged = candidates(units, catalog, the_plan)
+    ranged = {**candidates(units, catalog, the_plan), **knobs}
     params = [ranged[name] for name in defined_params(block, ranged)]
     by_name = {p.name: p for p in params}
 

@@ -352,6 +352,8 @@ class Post(Strict):
     """The tone map applied before output."""
     output: Literal["gamma22", "srgb"] = "gamma22"
     """The transfer function to the display."""
+    exposure: Positive = 1.0
+    """Scales the linear colour before the tone map (2 is one stop brighter)."""
 
 
 class MeshSettings(Strict):

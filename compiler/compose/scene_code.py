@@ -5,7 +5,9 @@ scene-specific glue, and it calls slots only through their entry functions.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
 from glint.compiler.compose.bounds import span_unit
@@ -31,11 +33,17 @@ from glint.compiler.compose.user_geometry import (
 )
 from glint.compiler.errors import InputError
 
+if TYPE_CHECKING:  # uniform_params imports the planner, which imports this module
+    from glint.compiler.compose.uniform_params import UniformParam
+
 
 @dataclass
 class SceneCode:
     defines: dict[str, str]  # light constants: name -> GLSL expression
     units: list[Unit]  # map, materials, shading, mainImage
+    # the scene's values a page may set live (--params-as-uniforms): the lights' intensities,
+    # the materials' roughness and metallic, the exposure; each is one of `defines`
+    knobs: dict[str, UniformParam] = field(default_factory=dict)
 
 
 @dataclass
@@ -46,6 +54,7 @@ class LightCode:
     directional: list[str]  # the identifier of each directional light (SUN, LIGHT1, ...)
     why: list[tuple[str, str]]  # (function called, the light that makes `shade` call it)
     labels: list[str]  # `lights[i] (type)` of each light, in the scene's order
+    knobs: dict[str, UniformParam] = field(default_factory=dict)  # each light's intensity
 
 
 def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
@@ -70,7 +79,8 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
         albedo_by_user = ALBEDO in user.provides
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials, objects))
-    units.append(surface_unit(scene, materials, albedo_by_user))
+    values = material_values(scene, materials)
+    units.append(surface_unit(scene, materials, albedo_by_user, values))
     # Translucency is lit by directional lights only; without one it has nothing to show.
     translucent = bool(lights.directional) and any(
         scene.materials[m].subsurface is not None for m in materials
@@ -85,15 +95,18 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
             units.append(_submerged_unit(scene.medium.level))
             path = "submerged(ro, rd, t)"
     units.append(_main_unit(scene, normal_in_uniform_flow, path))
-    return SceneCode(defines=lights.defines, units=units)
+    knobs = dict(lights.knobs)
+    for material_knobs in values.values():
+        knobs.update((knob.name, knob) for knob in material_knobs)
+    knobs[EXPOSURE] = exposure_knob(scene)
+    defines = dict(lights.defines)  # the lights' knobs are there already, within expressions
+    for knob in knobs.values():
+        defines.setdefault(knob.name, glsl_float(knob.default))
+    return SceneCode(defines=defines, units=units, knobs=knobs)
 
 
 def _vec3(v: list[float]) -> str:
     return glsl_value(v, "vec3")
-
-
-def _scaled(color: list[float], intensity: float) -> str:
-    return _vec3(color) if intensity == 1.0 else f"({_vec3(color)} * {glsl_float(intensity)})"
 
 
 def light_code(scene: Scene) -> LightCode:
@@ -105,6 +118,7 @@ def light_code(scene: Scene) -> LightCode:
     why: list[tuple[str, str]] = []
     labels = [f"lights[{i}] ({light.type})" for i, light in enumerate(scene.lights)]
     counts: dict[str, int] = {}
+    knobs: dict[str, UniformParam] = {}
 
     def name(base: str) -> str:
         n = counts.get(base, 0)
@@ -123,6 +137,13 @@ def light_code(scene: Scene) -> LightCode:
                 "the scene has no directional light before it"
             )
 
+    def colour(ident: str, color: list[float], intensity: float) -> None:
+        # the intensity apart from the colour: a knob a page can turn, and one a reader of the
+        # ShaderToy code finds by name
+        defines[f"{ident}_INTENSITY"] = glsl_float(intensity)
+        defines[f"{ident}_COLOR"] = f"({_vec3(color)} * {ident}_INTENSITY)"
+        knobs[f"{ident}_INTENSITY"] = _intensity_knob(f"{ident}_INTENSITY", intensity)
+
     def shaded_through_brdf(i: int, function: str, shadow: bool) -> None:
         why.append((function, f"{labels[i]} is shaded through the BRDF"))
         if shadow:
@@ -133,7 +154,7 @@ def light_code(scene: Scene) -> LightCode:
             ident = name("SUN") if "SUN" not in counts else name("LIGHT")
             directional.append(ident)
             defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
-            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            colour(ident, light.color, light.intensity)
             visibility = "vec3(1.0)"
             if light.shadow:
                 dist = glsl_float(light.shadow_distance)
@@ -149,7 +170,7 @@ def light_code(scene: Scene) -> LightCode:
         elif isinstance(light, PointLight):
             ident = name("POINT")
             defines[f"{ident}_POS"] = _vec3(light.position)
-            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            colour(ident, light.color, light.intensity)
             defines[f"{ident}_RANGE"] = glsl_float(light.range)
             visibility = "vec3(1.0)"
             if light.shadow:
@@ -161,14 +182,14 @@ def light_code(scene: Scene) -> LightCode:
             shaded_through_brdf(i, "pointLight", light.shadow)
         elif isinstance(light, SkyLight):
             ident = name("SKY")
-            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            colour(ident, light.color, light.intensity)
             calls.append(f"skyLight(s, {ident}_COLOR, occlusion)")
             requires.append("skyLight")
             why.append(("skyLight", f"{labels[i]} fills the shading"))
         elif isinstance(light, BackLight | BounceLight):
             ident = name(light.type.upper())
             fill_direction(i, ident, light.direction)
-            defines[f"{ident}_COLOR"] = _scaled(light.color, light.intensity)
+            colour(ident, light.color, light.intensity)
             function = f"{light.type}Light"
             calls.append(f"{function}(s, {ident}_DIR, {ident}_COLOR, occlusion)")
             requires.append(function)
@@ -176,10 +197,52 @@ def light_code(scene: Scene) -> LightCode:
         elif isinstance(light, EnvironmentLight):
             ident = name("ENV_LIGHT")
             defines[f"{ident}_SCALE"] = glsl_float(light.intensity)
+            knobs[f"{ident}_SCALE"] = _intensity_knob(f"{ident}_SCALE", light.intensity)
             calls.append(f"irradianceLight(s, {ident}_SCALE, occlusion)")
             requires.append("irradianceLight")
             why.append(("irradianceLight", f"{labels[i]} lights with the environment's irradiance"))
-    return LightCode(defines, calls, requires, directional, why, labels)
+    return LightCode(defines, calls, requires, directional, why, labels, knobs)
+
+
+def _intensity_knob(name: str, value: float) -> UniformParam:
+    """A light's intensity as a knob: a log slider over four decades around 1 (0.01 to 100),
+    wider where the scene's own value lies outside."""
+    from glint.compiler.compose.uniform_params import UniformParam
+
+    low = min(0.01, value) if value > 0 else 0.0
+    return UniformParam(name, "float", value, low, max(100.0, value))
+
+
+EXPOSURE = "EXPOSURE"
+
+
+def exposure_knob(scene: Scene) -> UniformParam:
+    """[post] exposure, which scales the linear colour before the tone map: five stops either
+    way of 1, wider where the scene's own value lies outside."""
+    from glint.compiler.compose.uniform_params import UniformParam
+
+    value = scene.post.exposure
+    return UniformParam(EXPOSURE, "float", value, min(1 / 32, value), max(32.0, value))
+
+
+def material_values(scene: Scene, materials: list[str]) -> dict[str, list[UniformParam]]:
+    """Per material, its roughness and (for a metal) metallic as named constants
+    (MAT_<NAME>_ROUGHNESS, MAT_<NAME>_METALLIC) in [0, 1]: knobs a page can turn."""
+    from glint.compiler.compose.uniform_params import UniformParam
+
+    out: dict[str, list[UniformParam]] = {}
+    taken: set[str] = set()
+    for name in materials:
+        material = scene.materials[name]
+        ident = "MAT_" + re.sub(r"[^A-Za-z0-9]", "_", name).upper()
+        if ident in taken:  # two names that read the same in capitals
+            ident += f"_{len(taken)}"
+        taken.add(ident)
+        knobs = [UniformParam(f"{ident}_ROUGHNESS", "float", material.roughness, 0.0, 1.0)]
+        if material.metallic > 0.0:
+            knobs.append(UniformParam(f"{ident}_METALLIC", "float", material.metallic, 0.0, 1.0))
+        out[name] = knobs
+    return out
 
 
 def _map_unit(scene: Scene, objects: list[ObjectCode]) -> Unit:
@@ -292,8 +355,15 @@ def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
     return lines + [f"    {line}" for line in bodies[0]], ["materialAt"]
 
 
-def surface_unit(scene: Scene, materials: list[str], albedo_by_user: bool) -> Unit:
-    """`surfaceAt`; `albedo_by_user`: the user's file defines sceneAlbedo."""
+def surface_unit(
+    scene: Scene,
+    materials: list[str],
+    albedo_by_user: bool,
+    values: dict[str, list[UniformParam]] | None = None,
+) -> Unit:
+    """`surfaceAt`; `albedo_by_user`: the user's file defines sceneAlbedo; `values`: the named
+    constants that hold each material's roughness and metallic (material_values), where the
+    code reads them rather than literals."""
     requires = ["Surface", "makeSurface"]
     bodies = []
     procedural = _procedural_albedo_ids(scene) if albedo_by_user else {}
@@ -304,7 +374,8 @@ def surface_unit(scene: Scene, materials: list[str], albedo_by_user: bool) -> Un
         if name in procedural:  # the user's sceneAlbedo makes it from the material's own
             albedo = f"{ALBEDO}(P, {procedural[name]}, {albedo})"
             requires.append(ALBEDO)
-        body, extra = _material_body(material, albedo)
+        named = {k.name.rsplit("_", 1)[1]: k.name for k in (values or {}).get(name, [])}
+        body, extra = _material_body(material, albedo, named)
         requires += extra
         bodies.append(body)
     branches, lookup = _by_material(bodies)
@@ -327,19 +398,24 @@ def _procedural_albedo_ids(scene: Scene) -> dict[str, int]:
     return ids
 
 
-def _material_body(material: Material, albedo: str) -> tuple[list[str], list[str]]:
+def _material_body(
+    material: Material, albedo: str, named: dict[str, str] | None = None
+) -> tuple[list[str], list[str]]:
     """The lines that build one material's Surface, and what they require beyond makeSurface:
     the metallic path and the diffuse roughness appear only for materials that have them."""
     metal = material.metallic > 0.0
     prelude = []
     if metal and albedo.startswith(("mix(", ALBEDO)):  # a pattern: evaluate it once for both
         prelude, albedo = [f"vec3 albedo = {albedo};"], "albedo"
-    call = f"makeSurface(P, N, V, {albedo}, {glsl_float(material.roughness)})"
+    named = named or {}
+    roughness = named.get("ROUGHNESS", glsl_float(material.roughness))
+    call = f"makeSurface(P, N, V, {albedo}, {roughness})"
     if not metal and material.diffuse_roughness is None:
         return [f"return {call};"], []
     lines = [*prelude, f"Surface s = {call};"]
     if metal:
-        lines.append(f"applyMetallic(s, {albedo}, {glsl_float(material.metallic)});")
+        metallic = named.get("METALLIC", glsl_float(material.metallic))
+        lines.append(f"applyMetallic(s, {albedo}, {metallic});")
     if material.diffuse_roughness is not None:
         lines.append(f"s.diffuseRoughness = {glsl_float(material.diffuse_roughness)};")
     return [*lines, "return s;"], ["applyMetallic"] if metal else []
@@ -478,7 +554,7 @@ def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | No
         "    vec3 color = background(rd);\n"
         "    float t = raymarch(ro, rd);\n"
         f"{hit}"
-        "    color = outputTransfer(tonemap(color));\n"
+        "    color = outputTransfer(tonemap(color * EXPOSURE));\n"
         "    fragColor = vec4(color, 1.0);\n"
         "}\n"
     )

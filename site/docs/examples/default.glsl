@@ -32,10 +32,16 @@
 // source: <generated>:1
 // Scene constants (light directions point toward the light).
 #define SUN_DIR normalize(vec3(0.6, 0.8, -0.5))
-#define SUN_COLOR (vec3(1.0, 0.95, 0.85) * 2.0)
-#define SKY_COLOR (vec3(0.2, 0.5, 1.0) * 0.4)
+#define SUN_INTENSITY 2.0
+#define SUN_COLOR (vec3(1.0, 0.95, 0.85) * SUN_INTENSITY)
+#define SKY_INTENSITY 0.4
+#define SKY_COLOR (vec3(0.2, 0.5, 1.0) * SKY_INTENSITY)
 #define BACK_DIR normalize(vec3(-SUN_DIR.x, 0.0, -SUN_DIR.z))
-#define BACK_COLOR vec3(0.15, 0.1, 0.08)
+#define BACK_INTENSITY 1.0
+#define BACK_COLOR (vec3(0.15, 0.1, 0.08) * BACK_INTENSITY)
+#define MAT_RED_ROUGHNESS 0.35
+#define MAT_GROUND_ROUGHNESS 0.8
+#define EXPOSURE 1.0
 // Parameters of the snippets below.
 #define ENV_TOP vec3(0.5, 0.7, 1.0)
 #define ENV_BOTTOM vec3(0.8, 0.85, 0.9)
@@ -375,9 +381,9 @@ int materialAt(vec3 p) {
 Surface surfaceAt(vec3 P, vec3 N, vec3 V) {
     int id = materialAt(P);
     if (id == 1) {
-        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), 0.8);
+        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), MAT_GROUND_ROUGHNESS);
     }
-    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), 0.35);
+    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), MAT_RED_ROUGHNESS);
 }
 
 // source: <generated>:1
@@ -471,6 +477,6 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
         vec3 P = ro + t * rd;
         color = shade(surfaceAt(P, calcNormal(P), -rd));
     }
-    color = outputTransfer(tonemap(color));
+    color = outputTransfer(tonemap(color * EXPOSURE));
     fragColor = vec4(color, 1.0);
 }
