@@ -173,10 +173,38 @@ def table(header: list[str], rows: list[list[str]]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _one_definition_a_line(latex: str) -> str:
+    """A formula that states several things side by side, `a = ..., \\quad b = ...` (the
+    catalog's way of giving a term and then its parts), as one line each, centred: KaTeX never
+    breaks a display formula, and one line of three definitions runs past a page's width (the
+    env BRDF approximation was 1,544 px in a 688 px column). The separators are taken only at
+    the formula's top level, outside every brace group, \\left...\\right pair and environment."""
+    parts, depth, start, i = [], 0, 0, 0
+    while i < len(latex):
+        char = latex[i]
+        if char == "{" or latex.startswith(("\\left", "\\begin"), i):
+            depth += 1
+        elif char == "}" or latex.startswith(("\\right", "\\end"), i):
+            depth -= 1
+        elif depth == 0 and latex.startswith("\\quad", i) and not latex[i + 5 : i + 6].isalpha():
+            parts.append(latex[start:i])
+            start = i + 5
+            i = start
+            continue
+        i += 1
+    parts.append(latex[start:])
+    parts = [part.strip().rstrip(",").rstrip("\\,").strip() for part in parts]
+    parts = [part for part in parts if part]
+    if len(parts) < 2:
+        return latex
+    return "\\begin{gathered}\n" + " \\\\\n".join(parts) + "\n\\end{gathered}"
+
+
 def math_block(latex: str) -> str:
     """Display math as pymdownx.arithmatex's generic mode writes it, for the local KaTeX: the
     same div, written here as raw HTML with the LaTeX escaped, so that no formula can leave it
     (through `$$`, a line of HTML or a blank line in a formula would end up on the page)."""
     body = "\n".join(line for line in latex.strip().splitlines() if line.strip())
+    body = _one_definition_a_line(body)
     escaped = html.escape(body, quote=False).replace('"', "&quot;")  # as arithmatex escapes
     return f'<div class="arithmatex">\\[\n{escaped}\n\\]</div>\n'

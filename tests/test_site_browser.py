@@ -44,6 +44,7 @@ VARIANTS = (
     "tonemap.aces",
     "env.gradient",
     "shadow.hard",
+    "ibl.env_brdf_approx",  # the widest formula: four definitions
 )
 OTHER_PAGES = ("", "catalog/", "rules/", "cli/", "architecture/", "bench/bench/")
 
@@ -61,6 +62,9 @@ _INSPECT = """async () => {
     // with throwOnError: false, a parse error becomes .katex-error and an unknown macro red text
     katexErrors: document.querySelectorAll(
       '.katex-error, .katex [mathcolor="#cc0000"]').length,
+    // display formulas wider than their column: a reader sees them cut at the right edge
+    scrolled: [...document.querySelectorAll("div.arithmatex")].filter(
+      (e) => e.scrollWidth > e.clientWidth + 1).map((e) => e.textContent.slice(0, 40)),
   };
 }"""
 _TYPESET = """() => [...document.querySelectorAll(".arithmatex")].every(
@@ -92,6 +96,7 @@ def _visit(page: Page, url: str) -> tuple[dict[str, Any], list[str]]:
         problems.append(f"{url}: {found['formulas'] - found['typeset']} formulas not typeset")
     if found["katexErrors"]:
         problems.append(f"{url}: {found['katexErrors']} KaTeX errors")
+    problems += [f"{url}: formula wider than its column: {text}" for text in found["scrolled"]]
     problems += [f"{url}: picture {src} not decoded" for src, width in found["images"] if not width]
     return found, problems
 

@@ -274,11 +274,15 @@ def test_a_formula_stays_math(render: Any, latex: str) -> None:
 
 
 def test_a_formula_renders_as_arithmatex_renders_it(render: Any) -> None:
-    """The real formulas come out as they did through `$$` (arithmatex's own block)."""
+    """The real formulas come out as they would through `$$` (arithmatex's own block), with
+    side-by-side definitions one a line (math_block)."""
+    from glint.compiler.markdown import _one_definition_a_line
+
     formulas = [s.formula for s in glint.catalog().values() if s.formula]
     assert formulas
     for latex in formulas:
-        assert render(math_block(latex)) == render(f"$$\n{latex.strip()}\n$$\n")
+        lines = _one_definition_a_line(latex.strip())
+        assert render(math_block(latex)) == render(f"$$\n{lines}\n$$\n")
 
 
 def test_the_real_catalog_reads_as_before(render: Any) -> None:
@@ -459,3 +463,17 @@ def test_the_bench_report_is_text(render: Any) -> None:
                          [goal])  # fmt: skip
     words = _words(_assert_inert(render(to_markdown(result))))
     assert IMG in words and LINK in words
+
+
+def test_side_by_side_definitions_become_one_line_each() -> None:
+    from glint.compiler.markdown import math_block
+
+    block = math_block(r"F = F_0 + (1 - F_0)\,x^5, \quad x = 1 - \cos\theta")
+    assert (
+        "\\begin{gathered}\nF = F_0 + (1 - F_0)\\,x^5 \\\\\nx = 1 - \\cos\\theta\n\\end{gathered}"
+        in block
+    )
+    # only at the top level: not inside a brace group, a \left...\right pair or an environment
+    for kept in (r"\text{a}_{b \quad c} = 1", r"\left( a \quad b \right)",
+                 r"\begin{cases} a \quad b \end{cases}", r"a \qquad b"):  # fmt: skip
+        assert "gathered" not in math_block(kept), kept
