@@ -156,12 +156,16 @@ def path_url(path: PurePosixPath, up: str = "") -> str:
     return up + "/".join(url_part(part) for part in path.parts)
 
 
-def fenced(code: str, language: str = "", indent: str = "") -> str:
+def fenced(code: str, language: str = "", indent: str = "", searchable: bool = True) -> str:
     """`code` as a fenced block (ending with a newline), every line prefixed with `indent`
-    (four spaces put it inside a tab of pymdownx.tabbed)."""
+    (four spaces put it inside a tab of pymdownx.tabbed). `searchable=False` keeps it out of
+    the site's search index (Material skips a block marked data-search-exclude): a composed
+    shader holds the code of every snippet it uses and would match every search."""
     longest = max((len(run) for run in _BACKTICKS.findall(code)), default=0)
     fence = "`" * max(3, longest + 1)
-    lines = [f"{fence}{language}", *code.rstrip("\n").split("\n"), fence]
+    opening = f"{fence}{language}" if searchable else (
+        f'{fence} {{ .{language or "text"} data-search-exclude="" }}')  # fmt: skip
+    lines = [opening, *code.rstrip("\n").split("\n"), fence]
     return "".join(f"{indent}{line}\n" if line else "\n" for line in lines)
 
 

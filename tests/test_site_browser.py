@@ -280,3 +280,34 @@ def test_shader_text_stays_text_in_the_browser(
         assert page.locator("img[onerror]").count() == 0
         assert page.locator("img[src='x']").count() == 0
     assert not log.problems()
+
+
+def test_search_finds_a_variant_by_its_name_first_and_not_in_composed_shaders(
+    built_site: BuiltSite, site_url: str, browser_page: tuple[Page, PageLog]
+) -> None:
+    """The issue-27 search: composed shaders, which hold every snippet they use, are not
+    indexed (they matched every search); a variant's page comes first for its own name."""
+    import json
+
+    index = json.loads((built_site.root / "search" / "search_index.json").read_text())
+    texts = [doc["text"] for doc in index["docs"]]
+    composed = re.compile(r"// glint \S+ - scene '")  # the first line of a composed shader
+    assert sum(1 for t in texts if composed.search(t)) == 0
+    page, _ = browser_page
+    page.goto(site_url)
+    first_result = """() => { const a = document.querySelector(".md-search-result__item a");
+                              return a ? a.getAttribute("href") : ""; }"""
+    expected = (
+        ("ggx", "catalog/D.ggx/"),
+        ("mediump", "catalog/D.ggx_mediump/"),
+        ("schlick", "catalog/F.schlick/"),
+    )
+    for query, first in expected:
+        field = page.locator("input.md-search__input")
+        field.fill("")
+        field.press_sequentially(query, delay=20)  # typed: Material searches on keystrokes
+        # the results are replaced as the worker answers: wait for the expected one on top
+        try:
+            page.wait_for_function(f"() => ({first_result})().endsWith({first!r})", timeout=20_000)
+        except Exception:  # noqa: BLE001 (report what came first instead of a timeout)
+            pytest.fail(f"{query!r}: first result {page.evaluate(first_result)!r}, not {first}")

@@ -233,6 +233,11 @@ def _joined(*sections: str) -> str:
     return "\n".join(s.rstrip("\n") + "\n" for s in sections if s)
 
 
+# A variant's own page comes first among the results of a search for its name (Material's
+# search boost, in the page's front matter): "ggx" finds D.ggx before pages that mention it.
+SEARCH_FIRST = "---\nsearch:\n  boost: 4\n---\n\n"
+
+
 def variant_page(
     doc: VariantDoc,
     picture: Picture | None = None,
@@ -243,6 +248,7 @@ def variant_page(
     tiers, sources."""
     slot = _slot_link(doc.slot, "")
     parts = [
+        SEARCH_FIRST,
         f"# {md_code(doc.id)}\n\n",
         f"{md_prose(doc.summary)}. Slot {slot}; file {md_code(doc.file)}.\n\n",
     ]
@@ -260,7 +266,7 @@ def variant_page(
         f'=== "{md_code("glint catalog show")}"\n\n',
         "    The snippet with everything it needs (other slots at their balanced-tier "
         "variants), as one block to paste:\n\n",
-        fenced(doc.standalone, "glsl", indent="    "),
+        fenced(doc.standalone, "glsl", indent="    ", searchable=False),
         "\n",
     ]
     if picture is not None and picture.shader:
@@ -268,7 +274,7 @@ def variant_page(
             f'=== "{_scene_tab(picture)}"\n\n',
             f"    What `glint compose` writes for {picture.scene} with this variant, to paste "
             "into ShaderToy's Image tab: the shader of the picture above.\n\n",
-            fenced(picture.shader, "glsl", indent="    "),
+            fenced(picture.shader, "glsl", indent="    ", searchable=False),
             "\n",
         ]
     parts += [
