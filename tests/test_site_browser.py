@@ -311,3 +311,19 @@ def test_search_finds_a_variant_by_its_name_first_and_not_in_composed_shaders(
             page.wait_for_function(f"() => ({first_result})().endsWith({first!r})", timeout=20_000)
         except Exception:  # noqa: BLE001 (report what came first instead of a timeout)
             pytest.fail(f"{query!r}: first result {page.evaluate(first_result)!r}, not {first}")
+
+
+def test_dark_mode_follows_the_system_and_the_toggle(site_url: str, browser: Any) -> None:
+    context = browser.new_context(color_scheme="dark", viewport={"width": 1200, "height": 800})
+    try:
+        page = context.new_page()
+        page.goto(site_url + "catalog/")
+        scheme = "document.body.getAttribute('data-md-color-scheme')"
+        background = "getComputedStyle(document.body).backgroundColor"
+        assert page.evaluate(scheme) == "slate"
+        dark = page.evaluate(background)
+        page.locator("label.md-header__button[title='Light mode']").first.click()
+        page.wait_for_function(f"{scheme} === 'default'")
+        assert page.evaluate(background) != dark
+    finally:
+        context.close()
