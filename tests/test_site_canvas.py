@@ -277,9 +277,62 @@ def test_a_slot_pages_selector_swaps_the_variant_on_its_canvas(
     )
     assert _flip_against_glint(live_site, chosen, _pixels(page)) < FLIP_LIMIT
     # the new shader's parameters got sliders, and only one set of them
-    assert page.locator(".glint-live-controls .glint-live-play").count() == 1
-    sliders = page.locator(".glint-live-controls .glint-live-slider").count()
-    assert sliders == page.locator(".glint-live-controls .glint-live-reset").count() >= 2
+    live = page.locator(".glint-live").first  # the Live section's (the comparison has two)
+    assert live.locator(".glint-live-controls .glint-live-play").count() == 1
+    sliders = live.locator(".glint-live-controls .glint-live-slider").count()
+    assert sliders == live.locator(".glint-live-controls .glint-live-reset").count() >= 2
+    _no_problems(log)
+
+
+def test_the_ab_split_shows_both_variants_and_their_difference(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    """The slot page's comparison: left of the divider is A's picture, right of it B's (each
+    as glint renders it), the divider moves the split, and the difference view is bright
+    where A and B differ and dark where they agree."""
+    page, log = browser_page
+    page.goto(live_site.url + "catalog/slots/D/")
+    a_sel, b_sel = ".glint-compare-a-view canvas", ".glint-compare-b-view canvas"
+    page.locator(".glint-compare").scroll_into_view_if_needed()
+    for selector in (a_sel, b_sel):
+        page.wait_for_function(
+            "s => document.querySelector(s).dataset.state === 'drawn'", arg=selector,
+            timeout=60_000,
+        )  # fmt: skip
+    a_shader = page.get_attribute(a_sel, "data-shader")
+    b_shader = page.get_attribute(b_sel, "data-shader")
+    assert a_shader != b_shader
+    a, b = _pixels(page, a_sel), _pixels(page, b_sel)
+    assert _flip_against_glint(live_site, a_shader or "", a) < FLIP_LIMIT
+    assert _flip_against_glint(live_site, b_shader or "", b) < FLIP_LIMIT
+    differ = np.abs(a - b).max(axis=-1) > 3 / 255
+    assert differ.mean() > 0.01, "the two variants draw the same picture"
+
+    def shown() -> np.ndarray:
+        """What the reader sees of the stage: a screenshot of it, scaled to the canvases."""
+        png = page.locator(a_sel).screenshot()  # B's canvas lies over A's: both show
+        image = Image.open(io.BytesIO(png)).convert("RGB").resize(a.shape[1::-1])
+        return np.asarray(image, dtype=np.float32) / 255.0
+
+    for percent in (50, 20):
+        page.eval_on_selector(
+            ".glint-compare-divider",
+            f"el => {{ el.value = '{percent}'; el.dispatchEvent(new Event('input')); }}",
+        )
+        seen = shown()
+        cut = a.shape[1] * percent // 100
+        left, right = slice(2, cut - 2), slice(cut + 2, -2)
+        assert np.abs(seen[:, left] - a[:, left]).mean() < np.abs(seen[:, left] - b[:, left]).mean()
+        assert (
+            np.abs(seen[:, right] - b[:, right]).mean()
+            < np.abs(seen[:, right] - a[:, right]).mean()
+        )
+    page.check(".glint-compare-show-difference")
+    page.wait_for_function(
+        "document.querySelector('.glint-compare-difference').dataset.state === 'drawn'"
+    )
+    amplified = _pixels(page, ".glint-compare-difference").max(axis=-1)
+    assert amplified[differ].mean() > 0.2 and amplified[~differ].mean() < 0.05
     _no_problems(log)
 
 

@@ -16,6 +16,10 @@
 // frame stays as a picture) and get it back when scrolled into view again. A context the
 // browser takes away (a GPU reset, its own limit) is restored the same way. Every context is
 // given up when the page changes.
+//
+// A <div class="glint-compare"> holds two such canvases, A and B, stacked: B shows right of a
+// divider the reader drags, and a checkbox shows |A - B| times a gain instead. A's controls
+// drive both (time, mouse, the parameters both shaders have); B's are hidden.
 (function () {
   "use strict";
 
@@ -70,7 +74,14 @@
     ".glint-live-value{width:5.5em;font:inherit}" +
     ".glint-live-reset{border:0;background:none;cursor:pointer;font:inherit;padding:0 .2em}" +
     ".glint-live-errors{white-space:pre-wrap;color:#c62828}" +
-    ".glint-live-choice{margin:0 0 .5em;font-size:.75rem}";
+    ".glint-live-choice{margin:0 0 .5em;font-size:.75rem}" +
+    ".glint-compare-stage{position:relative;max-width:640px}" +
+    ".glint-compare-b-view{position:absolute;left:0;top:0;width:100%;pointer-events:none}" +
+    ".glint-compare-b-view .glint-live-controls,.glint-compare-b-view .glint-live-errors:empty" +
+    "{display:none}" +
+    ".glint-compare-difference{position:absolute;left:0;top:0;width:100%;height:auto;" +
+    "image-rendering:pixelated}" +
+    ".glint-compare-tools,.glint-compare-choices{font-size:.75rem;margin:.3em 0}";
 
   var MAX_CONTEXTS = 8; // well under Chrome's ~16, which other pages' canvases share
   var instances = [];
@@ -303,7 +314,8 @@
     this.compiled = text;
     this.buildControls();
     this.canvas.dataset.state = "ready";
-    this.draw();
+    if (this.leader && this.leader.program) this.follow(this.leader);
+    else this.draw();
   };
 
   // Forget the shader before this one: its program, its parameters and their controls.
@@ -451,6 +463,18 @@
     this.frame += 1;
     this.canvas.dataset.frames = String(this.frame);
     this.canvas.dataset.state = "drawn";
+    if (this.follower) this.follower.follow(this);
+    if (this.onDrawn) this.onDrawn();
+  };
+
+  // A comparison's B: the same time, mouse and shared parameters as A, drawn right after it.
+  Live.prototype.follow = function (leader) {
+    this.time = leader.time;
+    this.mouse = leader.mouse.slice();
+    for (var name in leader.values) {
+      if (name in this.values) this.values[name] = leader.values[name];
+    }
+    this.draw();
   };
 
   Live.prototype.release = function () {
@@ -518,6 +542,62 @@
       if (observer) observer.observe(canvas);
       else live.start();
     });
+    Array.prototype.forEach.call(document.querySelectorAll(".glint-compare"), setupCompare);
+  }
+
+  // The A/B comparison (see the top of this file).
+  function setupCompare(box) {
+    if (box.glintCompare) return;
+    box.glintCompare = true;
+    var a = box.querySelector(".glint-compare-a-view canvas").glintLive;
+    var b = box.querySelector(".glint-compare-b-view canvas").glintLive;
+    var bView = box.querySelector(".glint-compare-b-view");
+    var divider = box.querySelector(".glint-compare-divider");
+    var showDifference = box.querySelector(".glint-compare-show-difference");
+    var gain = box.querySelector(".glint-compare-gain");
+    var difference = box.querySelector(".glint-compare-difference");
+    a.follower = b;
+    b.leader = a;
+    function split() {
+      bView.style.clipPath = "inset(0 0 0 " + divider.value + "%)";
+    }
+    function pixels(canvas) {
+      var flat = document.createElement("canvas");
+      flat.width = canvas.width;
+      flat.height = canvas.height;
+      var context = flat.getContext("2d");
+      context.drawImage(canvas, 0, 0);
+      return context.getImageData(0, 0, flat.width, flat.height);
+    }
+    function drawDifference() {
+      difference.hidden = !showDifference.checked;
+      bView.style.visibility = showDifference.checked ? "hidden" : "";
+      if (!showDifference.checked || b.canvas.dataset.state !== "drawn") return;
+      if (a.canvas.dataset.state !== "drawn") return;
+      var pa = pixels(a.canvas);
+      var pb = pixels(b.canvas);
+      var out = difference.getContext("2d").createImageData(pa.width, pa.height);
+      var k = Number(gain.value);
+      for (var i = 0; i < pa.data.length; i += 4) {
+        for (var c = 0; c < 3; c++) {
+          out.data[i + c] = Math.min(255, Math.abs(pa.data[i + c] - pb.data[i + c]) * k);
+        }
+        out.data[i + 3] = 255;
+      }
+      difference.getContext("2d").putImageData(out, 0, 0);
+      difference.dataset.state = "drawn";
+    }
+    b.onDrawn = drawDifference;
+    divider.addEventListener("input", split);
+    showDifference.addEventListener("change", drawDifference);
+    gain.addEventListener("change", drawDifference);
+    box.querySelector(".glint-compare-a").addEventListener("change", function (event) {
+      a.choose(event.target.value);
+    });
+    box.querySelector(".glint-compare-b").addEventListener("change", function (event) {
+      b.choose(event.target.value);
+    });
+    split();
   }
 
   // For tests and the curious: how many canvases hold a live WebGL context.

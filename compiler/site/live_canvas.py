@@ -96,6 +96,56 @@ def slot_live_section(
     )
 
 
+def slot_compare_section(
+    slot: str, ids: Sequence[str], pictures: Mapping[str, Picture], first: str | None
+) -> str:
+    """A slot page's A/B comparison: two variants' live shaders on one picture split by a
+    divider the reader drags, and their difference amplified; the first pair is the reference
+    tier's variant and the next one."""
+    choices = [(id_, live_path(id_)) for id_ in ids if id_ in pictures and pictures[id_].live]
+    if len(choices) < 2:
+        return ""
+    paths = [path for _, path in choices]
+    a = live_path(first) if first is not None and live_path(first) in paths else paths[0]
+    b = next(path for path in paths if path != a)
+    width, height = VARIANT_SIZE
+
+    def chooser(which: str, selected: PurePosixPath) -> str:
+        options = "".join(
+            f'<option value="{html_attr(path.as_posix())}"'
+            f"{' selected' if path == selected else ''}>{html_text(name)}</option>"
+            for name, path in choices
+        )
+        label = html_attr(f"slot {slot}: variant {which.upper()}")
+        return f'<select class="glint-compare-{which}" aria-label="{label}">{options}</select>'
+
+    def canvas(which: str, shader: PurePosixPath) -> str:
+        return (
+            f'<div class="glint-live glint-compare-{which}-view">'
+            f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
+            f'data-shader="{html_attr(shader.as_posix())}" data-time="{TIME:g}" '
+            f'aria-label="{html_attr(f"slot {slot}, variant {which.upper()}")}"></canvas></div>'
+        )
+
+    return (
+        "## Compare two variants\n\n"
+        "Variant A on the left of the divider, B on the right, in the same scene, time and "
+        "camera: drag the divider, or show where they differ, amplified. The sliders under the "
+        "picture drive both.\n\n"
+        '<div class="glint-compare">\n'
+        f'<div class="glint-compare-choices">A {chooser("a", a)} B {chooser("b", b)}</div>\n'
+        f'<div class="glint-compare-stage">{canvas("a", a)}{canvas("b", b)}'
+        f'<canvas class="glint-compare-difference" width="{width}" height="{height}" hidden '
+        f'aria-label="{html_attr(f"slot {slot}: |A - B|, amplified")}"></canvas></div>\n'
+        '<div class="glint-compare-tools"><label>divider <input type="range" '
+        'class="glint-compare-divider" min="0" max="100" value="50"></label> '
+        '<label><input type="checkbox" class="glint-compare-show-difference"> |A − B| ×'
+        '<select class="glint-compare-gain"><option>4</option><option selected>16</option>'
+        "<option>64</option></select></label></div>\n"
+        "</div>\n\n"
+    )
+
+
 def home_canvas() -> str:
     return canvas_html(DEFAULT_SHADER, HOME_SIZE, "the default scene, live")
 

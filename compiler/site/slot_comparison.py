@@ -35,7 +35,7 @@ from glint.compiler.markdown import (
 )
 from glint.compiler.render.images import flip_image, png_bytes, png_pixels
 
-from .live_canvas import slot_live_section
+from .live_canvas import slot_compare_section, slot_live_section
 from .measured import Bench, figure_png, pyplot
 from .pictures import Picture
 
@@ -73,6 +73,7 @@ def slot_comparisons(
         parts = [
             _flip_table(ids, reference, pictures, picture_files, result),
             slot_live_section(slot, ids, pictures, reference),
+            slot_compare_section(slot, ids, pictures, reference),
         ]
         rows = [bench.variants[i] for i in ids if i in bench.variants]
         if rows:
