@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import glint
@@ -47,3 +48,30 @@ def test_the_page_names_the_variants_whose_pictures_are_the_same(tmp_path: Path)
     assert "`F.schlick`, `F.schlick_f90` and `F.schlick_fast` give the same picture" in said
     assert "F.dielectric" not in said.split("give the same")[0]
     assert f"a median {slot_contrast(pictures.values()):.1%} of the pixels differ" in said
+
+
+def test_a_slots_curves_show_every_variant_and_the_reference(tmp_path: Path) -> None:
+    """The D chart: every variant along the half-vector angle, the reference tier's variant on
+    its float64 reference, and the difference the docs talk about (GGX's long tail) in the
+    data; on the slot page under its own heading."""
+    from glint.compiler.catalog.tiers import tier_table
+    from glint.compiler.site.measured import Bench
+    from glint.compiler.site.slot_comparison import reference_variant, slot_comparisons
+    from glint.compiler.site.slot_curves import ANGLES, slot_curves
+
+    ids = sorted(i for i, s in glint.catalog().items() if s.slot == "D")
+    reference = reference_variant("D", tier_table())
+    curves = slot_curves("D", ids, reference)
+    assert curves is not None and curves.reference_variant == reference == "D.ggx"
+    for _, values, exact in curves.panels:
+        assert set(values) == set(ids)
+        assert exact is not None
+        assert np.allclose(values["D.ggx"], exact, rtol=1e-3, atol=1e-6)
+        tail = ANGLES > 50
+        assert values["D.ggx"][tail].min() > 10 * values["D.beckmann"][tail].max()
+    built = variant_pictures(["D.ggx", "D.beckmann"], tmp_path)
+    files = {p.path: built.files[p.path] for p in built.by_id.values() if p.path}
+    section = slot_comparisons({"D": ids}, built.by_id, files, Bench(), tmp_path).sections["D"]
+    assert (
+        "## Curves\n\n![every D variant along the sweep](../../img/charts/D-curves.png)" in section
+    )

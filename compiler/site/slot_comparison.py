@@ -13,6 +13,7 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
+import logging
 import statistics
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -41,6 +42,7 @@ from .pictures import Picture
 
 FLIP_DIR = PurePosixPath("img") / "flip"
 CHART_DIR = PurePosixPath("img") / "charts"
+log = logging.getLogger(__name__)
 CHART_VERSION = "1"  # bump when the chart's look changes
 
 
@@ -75,6 +77,8 @@ def slot_comparisons(
             slot_live_section(slot, ids, pictures, reference),
             slot_compare_section(slot, ids, pictures, reference),
         ]
+        if any(i in pictures for i in ids):  # drawn where the build draws the slot's pictures
+            parts.append(_curves(slot, ids, reference, cache_dir, result))
         rows = [bench.variants[i] for i in ids if i in bench.variants]
         if rows:
             parts.append(_bench_section(slot, rows, bench.machine, cache_dir, result))
@@ -161,6 +165,25 @@ def _how_much_they_differ(pngs: Mapping[str, bytes]) -> str:
                 "reach (their pages say where)."
             )
     return text
+
+
+def _curves(
+    slot: str, ids: list[str], reference: str | None, cache_dir: Path | None,
+    result: SlotComparisons,
+) -> str:  # fmt: skip
+    """The slot's curves chart (slot_curves.py), where the slot has a sweep."""
+    from .slot_curves import curves_png, curves_section, slot_curves
+
+    try:
+        curves = slot_curves(slot, ids, reference)
+    except glint.InputError as error:  # no GPU context to probe with: the page goes without
+        log.warning("site: no curves for slot %s: %s", slot, error)
+        return ""
+    if curves is None:
+        return ""
+    path = CHART_DIR / f"{slot}-curves.png"
+    result.files[path] = curves_png(curves, cache_dir)
+    return curves_section(path_url(path, "../../"), curves)
 
 
 def _image(alt: str, path: PurePosixPath) -> str:
