@@ -7,11 +7,11 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
 from glint.compiler.compose.bounds import span_unit
 from glint.compiler.compose.field_code import ObjectCode, object_code
+from glint.compiler.compose.knobs import UniformParam
 from glint.compiler.compose.scene import (
     BackLight,
     BounceLight,
@@ -32,9 +32,6 @@ from glint.compiler.compose.user_geometry import (
     user_unit,
 )
 from glint.compiler.errors import InputError
-
-if TYPE_CHECKING:  # uniform_params imports the planner, which imports this module
-    from glint.compiler.compose.uniform_params import UniformParam
 
 
 @dataclass
@@ -207,7 +204,6 @@ def light_code(scene: Scene) -> LightCode:
 def _intensity_knob(name: str, value: float) -> UniformParam:
     """A light's intensity as a knob: a log slider over four decades around 1 (0.01 to 100),
     wider where the scene's own value lies outside."""
-    from glint.compiler.compose.uniform_params import UniformParam
 
     low = min(0.01, value) if value > 0 else 0.0
     return UniformParam(name, "float", value, low, max(100.0, value))
@@ -219,7 +215,6 @@ EXPOSURE = "EXPOSURE"
 def exposure_knob(scene: Scene) -> UniformParam:
     """[post] exposure, which scales the linear colour before the tone map: five stops either
     way of 1, wider where the scene's own value lies outside."""
-    from glint.compiler.compose.uniform_params import UniformParam
 
     value = scene.post.exposure
     return UniformParam(EXPOSURE, "float", value, min(1 / 32, value), max(32.0, value))
@@ -228,7 +223,6 @@ def exposure_knob(scene: Scene) -> UniformParam:
 def material_values(scene: Scene, materials: list[str]) -> dict[str, list[UniformParam]]:
     """Per material, its roughness and (for a metal) metallic as named constants
     (MAT_<NAME>_ROUGHNESS, MAT_<NAME>_METALLIC) in [0, 1]: knobs a page can turn."""
-    from glint.compiler.compose.uniform_params import UniformParam
 
     out: dict[str, list[UniformParam]] = {}
     taken: set[str] = set()

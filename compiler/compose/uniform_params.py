@@ -21,11 +21,12 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Callable, Collection, Iterator
-from dataclasses import asdict, dataclass
+from dataclasses import asdict
 
 from lark import Token, Tree
 
 from glint.compiler.catalog.loader import Catalog
+from glint.compiler.compose.knobs import UniformParam
 from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.units import Unit
 from glint.compiler.glsl import Macro, parse_source, preprocess
@@ -38,20 +39,6 @@ UNIFORM_TYPES = ("float", "int")  # what a slider can set
 _DEFINE = re.compile(r"^#define (\w+) (.+)$")
 _STORAGE = {"uniform", "in", "out"}  # globals whose initialiser need not be constant (none may)
 _CONDITIONALS = ("if", "elif", "ifdef", "ifndef")
-
-
-@dataclass(frozen=True)
-class UniformParam:
-    """One manifest entry: a parameter the page sets through a uniform."""
-
-    name: str
-    type: str  # "float" or "int"
-    default: float | int
-    min: float | int
-    max: float | int
-
-    def declaration(self) -> str:
-        return f"uniform {self.type} {self.name};"
 
 
 def candidates(units: list[Unit], catalog: Catalog, plan: Plan) -> dict[str, UniformParam]:
