@@ -296,11 +296,13 @@ def test_accuracy_section_from_plain_data() -> None:
     assert accuracy_section("X.y", None, "") == ""
 
 
-def test_scene_reference_has_every_key_and_example_scene() -> None:
-    from glint.compiler.compose.scene import Scene
-    from glint.compiler.site.scene_pages import example_scenes, scene_reference_page
+def test_scene_reference_has_every_key_and_the_gallery_every_example_scene() -> None:
+    from pathlib import PurePosixPath
 
-    page = scene_reference_page({})
+    from glint.compiler.compose.scene import Scene
+    from glint.compiler.site.scene_pages import example_scenes, gallery_page, scene_reference_page
+
+    page = scene_reference_page()
     schema = Scene.model_json_schema()
     for model in [schema, *schema["$defs"].values()]:
         for key in model["properties"]:
@@ -308,11 +310,21 @@ def test_scene_reference_has_every_key_and_example_scene() -> None:
     for name in schema["$defs"]:
         assert f"{{ #{name.lower()} }}" in page, name
     assert "| `roughness` | number (≥ 0, ≤ 1) | `0.5` |" in page
+    assert "[gallery](gallery.md)" in page and "### default" not in page  # no longer buried
+    live = {(s.stem, tier): PurePosixPath(f"img/live/scene-{s.stem}-{tier}.glsl")
+            for s in example_scenes() for tier in ("fast", "balanced", "reference")}  # fmt: skip
+    gallery = gallery_page({"default": PurePosixPath("img/scenes/default-large.png")}, live)
     for scene in example_scenes():
-        assert f"### {scene.stem}\n" in page
-        assert scene.read_text(encoding="utf-8").strip().splitlines()[-1] in page
+        assert f"## {scene.stem}\n" in gallery
+        assert scene.read_text(encoding="utf-8").strip().splitlines()[-1] in gallery
+    default = gallery.split("## default\n", 1)[1].split("\n## ", 1)[0]
+    assert "img/scenes/default-large.png" in default and "(768x432 pixels" in default
+    # the tier switch: one tab per tier, each with the scene live at that tier
+    for tier in ("fast", "balanced", "reference"):
+        assert f'=== "{tier}"' in default
+        assert f'data-shader="img/live/scene-default-{tier}.glsl"' in default
     # the mesh example: its TOML and why it has no live canvas (its picture needs a render)
-    mesh = page.split("### eight_models\n", 1)[1].split("### ", 1)[0]
+    mesh = gallery.split("## eight_models\n", 1)[1].split("\n## ", 1)[0]
     assert 'builtin = "icosphere"' in mesh and "glint-live" not in mesh
     assert "no live canvas, which runs ShaderToy shaders" in mesh
 
@@ -323,21 +335,23 @@ def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Pa
 
     built = scene_pages(ROOT / "site" / "docs", tmp_path, pictured=("default", "eight_models"))
     pictures = sorted(p.name for p in built.files if p.suffix == ".png")
-    # the mesh example: one picture, at its own tier (its materials choose their models)
-    assert pictures == sorted([*(f"default-{t}.png" for t in TIERS), "eight_models.png"])
+    # the mesh example: one picture, at its own tier (its materials choose their models); the
+    # default scene at every tier, and large for the gallery
+    expected_pictures = [*(f"default-{t}.png" for t in TIERS), "default-large.png"]
+    assert pictures == sorted([*expected_pictures, "eight_models.png"])
+    large = png_pixels(built.files[PurePosixPath("img/scenes/default-large.png")])
+    assert large.shape == (432, 768, 3) and large.std() > 0.05
     mesh = png_pixels(built.files[PurePosixPath("img/scenes/eight_models.png")])
     assert mesh.std() > 0.05  # the spheres are drawn, not only the sky
     assert (
         "![the eight_models scene](img/scenes/eight_models.png)"
-        in built.pages[PurePosixPath("scenes.md")]
+        in built.pages[PurePosixPath("gallery.md")]
     )
-    # every raymarched scene runs live as written (scene reference) and at every tier (tiers
-    # page's tabs); the mesh scene does not (it is no ShaderToy shader)
+    # every raymarched scene runs live as written and at every tier (the tabs of the tiers
+    # page and the gallery); the mesh scene does not (it is no ShaderToy shader)
     live = sorted(p.name for p in built.files if p.suffix == ".glsl")
     stems = [scene.stem for scene in example_scenes() if scene.stem != "eight_models"]
-    expected = [f"scene-{s}.glsl" for s in stems] + [
-        f"scene-{s}-{t}.glsl" for s in stems for t in TIERS
-    ]
+    expected = [f"scene-{s}-{t}.glsl" for s in stems for t in TIERS]
     assert live == sorted(expected)
     tiers = built.pages[PurePosixPath("tiers.md")]
     rows = dict(re.findall(r"\| `(\w+)` \| !\[default at \w+\]\([^)]+\) \| ([0-9.]+) \|", tiers))
@@ -346,8 +360,8 @@ def test_tiers_page_pictures_every_tier_with_flip_against_reference(tmp_path: Pa
     assert 0.0 < float(rows["fast"]) < 0.1  # another normal, marcher and AO: not the same pixels
     assert "[`ggx`](catalog/D.ggx.md)" in tiers
     assert (
-        "![the default scene](img/scenes/default-balanced.png)"
-        in built.pages[PurePosixPath("scenes.md")]
+        "![the default scene](img/scenes/default-large.png)"
+        in built.pages[PurePosixPath("gallery.md")]
     )
 
 

@@ -38,7 +38,7 @@ from glint.compiler.site.catalog_pages import (
 from glint.compiler.site.live_canvas import LIVE_DIR
 from glint.compiler.site.measured import Accuracy, Bench, accuracy_section
 from glint.compiler.site.pictures import Picture
-from glint.compiler.site.scene_pages import scene_reference_page, tiers_page
+from glint.compiler.site.scene_pages import gallery_page, tiers_page
 from glint.compiler.site.slot_comparison import slot_comparisons
 
 ROOT = Path(__file__).parent.parent
@@ -404,16 +404,16 @@ def test_scene_pages_of_hostile_scenes_are_text(tmp_path: Path, render: Any) -> 
     stem = scene.stem
     renders = {(stem, tier): PurePosixPath(f"img/scenes/{stem}-{tier}.png")
                for tier in ("fast", "balanced", "reference")}  # fmt: skip
-    live = {stem: LIVE_DIR / f"scene-{stem}.glsl"}
+    large = {stem: PurePosixPath(f"img/scenes/{stem}-large.png")}
     live_tiers = {(stem, tier): LIVE_DIR / f"scene-{stem}-{tier}.glsl"
                   for tier in ("fast", "balanced", "reference")}  # fmt: skip
     meshes = {mesh.stem: PurePosixPath(f"img/scenes/{mesh.stem}.png")}
-    reference = scene_reference_page(renders, live, meshes, [scene, mesh])
+    gallery = gallery_page(large, live_tiers, meshes, [scene, mesh])
     encoded = "%3Cimg%20src%3Dx%20onerror%3Dalert%281%29%3E"
     parsed = _assert_inert(
-        render(reference),
+        render(gallery),
         (
-            f"img/scenes/{encoded}%20%7Bonclick%3Dalert%281%29%7D-balanced.png",
+            f"img/scenes/{encoded}%20%7Bonclick%3Dalert%281%29%7D-large.png",
             f"img/scenes/mesh{encoded}.png",
         ),
     )
@@ -421,7 +421,7 @@ def test_scene_pages_of_hostile_scenes_are_text(tmp_path: Path, render: Any) -> 
     assert stem in words and mesh.stem in words  # the hostile names, as text
     assert f"glint render snippets/scenes/{scene.name}" in words
     assert f"isl`and`{IMG}``.glsl, the scene's own distance function" in words
-    headings = [t for t, _ in parsed.tags if t == "h3"]
+    headings = [t for t, _ in parsed.tags if t == "h2"]
     assert len(headings) == 2
     tiers = tiers_page(renders, {}, {}, live_tiers, [scene, mesh])
     parsed = _assert_inert(

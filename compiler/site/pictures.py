@@ -144,14 +144,16 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
     return picture
 
 
-def render_cached(shader: glint.Shader | glint.MeshShader, cache_dir: Path) -> tuple[bytes, bool]:
-    """glint's render of `shader` (a ShaderToy shader, or a mesh scene's programs) at the
-    pictures' size and time as PNG, from `cache_dir` where it holds it, and whether it had to
-    be rendered. Raises glint.InputError when the shader does not render."""
-    cached = cache_dir / f"{cache_key(_shader_text(shader))}.png"
+def render_cached(
+    shader: glint.Shader | glint.MeshShader, cache_dir: Path, size: tuple[int, int] = SIZE
+) -> tuple[bytes, bool]:
+    """glint's render of `shader` (a ShaderToy shader, or a mesh scene's programs) at `size`
+    (the pictures' by default) and the pictures' time as PNG, from `cache_dir` where it holds
+    it, and whether it had to be rendered. Raises glint.InputError when it does not render."""
+    cached = cache_dir / f"{cache_key(_shader_text(shader), size)}.png"
     if cached.is_file():
         return cached.read_bytes(), False
-    png = glint.render(shader, size=SIZE, time=TIME).to_png()
+    png = glint.render(shader, size=size, time=TIME).to_png()
     cache_dir.mkdir(parents=True, exist_ok=True)
     write_atomic(cached, png)
     return png, True
@@ -166,10 +168,10 @@ def _shader_text(shader: glint.Shader | glint.MeshShader) -> str:
     return shader.text
 
 
-def cache_key(text: str) -> str:
+def cache_key(text: str, size: tuple[int, int] = SIZE) -> str:
     """What a picture depends on: the shader, the size, the time and glint's version (the
     renderer's code is glint's)."""
-    data = f"{glint.__version__}\n{SIZE[0]}x{SIZE[1]}\n{TIME!r}\n{text}"
+    data = f"{glint.__version__}\n{size[0]}x{size[1]}\n{TIME!r}\n{text}"
     return hashlib.sha256(data.encode("utf-8")).hexdigest()
 
 

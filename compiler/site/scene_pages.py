@@ -45,6 +45,8 @@ log = logging.getLogger(__name__)
 SCENE_PICTURES = PurePosixPath("img") / "scenes"
 SCENES_PAGE = PurePosixPath("scenes.md")
 TIERS_PAGE = PurePosixPath("tiers.md")
+GALLERY_PAGE = PurePosixPath("gallery.md")
+GALLERY_SIZE = (768, 432)  # the gallery's large pictures, four times the variant pictures' width
 LIVE_SIZE = VARIANT_SIZE  # small: a software rasteriser draws several on one page
 
 
@@ -72,9 +74,9 @@ def scene_pages(
     out = ScenePages()
     renders: dict[tuple[str, str], PurePosixPath] = {}
     pixels: dict[tuple[str, str], np.ndarray] = {}
-    live: dict[str, PurePosixPath] = {}
     live_tiers: dict[tuple[str, str], PurePosixPath] = {}
     meshes: dict[str, PurePosixPath] = {}
+    large: dict[str, PurePosixPath] = {}
     for scene in scenes:
         pictures = cache_dir is not None and (pictured is None or scene.stem in pictured)
         if is_mesh_example(scene):
@@ -85,18 +87,22 @@ def scene_pages(
                 meshes[scene.stem] = SCENE_PICTURES / f"{scene.stem}.png"
                 out.files[meshes[scene.stem]] = png
             continue
-        # the scene as written (its own tier, live on the scene reference), then at every
-        # tier (pictured, and live in the tiers page's tabs): each composed once
+        # the scene as written (its own tier: the gallery's large picture), then at every
+        # tier (pictured, and live in the tabs of the tiers page and the gallery)
         for tier in (None, *TIERS):
             shader = _compose(scene, tier)
             if shader is None:
                 continue
-            path = LIVE_DIR / f"scene-{scene.stem}{'-' + tier if tier else ''}.glsl"
+            if tier is None:
+                if pictures and cache_dir:  # the gallery's large picture, at its own tier
+                    png = _render(shader, scene, "its own tier", cache_dir, GALLERY_SIZE)
+                    if png is not None:
+                        large[scene.stem] = SCENE_PICTURES / f"{scene.stem}-large.png"
+                        out.files[large[scene.stem]] = png
+                continue
+            path = LIVE_DIR / f"scene-{scene.stem}-{tier}.glsl"
             live_text = shader.retarget("webgl2", params_as_uniforms=True).text
             out.files[path] = live_text.encode("utf-8")
-            if tier is None:
-                live[scene.stem] = path
-                continue
             live_tiers[(scene.stem, tier)] = path
             png = _render(shader, scene, tier, cache_dir) if pictures and cache_dir else None
             if png is not None:
@@ -104,7 +110,8 @@ def scene_pages(
                 out.files[picture] = png
                 renders[(scene.stem, tier)] = picture
                 pixels[(scene.stem, tier)] = png_pixels(png)
-    out.pages[SCENES_PAGE] = scene_reference_page(renders, live, meshes, scenes)
+    out.pages[SCENES_PAGE] = scene_reference_page()
+    out.pages[GALLERY_PAGE] = gallery_page(large, live_tiers, meshes, scenes)
     bench = load_bench(source).tiers
     out.pages[TIERS_PAGE] = tiers_page(renders, pixels, bench, live_tiers, scenes)
     return out
@@ -133,9 +140,11 @@ def _compose(scene: Path, tier: str | None) -> glint.Shader | None:
         return None
 
 
-def _render(shader: glint.Shader, scene: Path, tier: str, cache_dir: Path) -> bytes | None:
+def _render(
+    shader: glint.Shader, scene: Path, tier: str, cache_dir: Path, size: tuple[int, int] = SIZE
+) -> bytes | None:
     try:
-        return render_cached(shader, cache_dir)[0]
+        return render_cached(shader, cache_dir, size)[0]
     except glint.InputError as error:
         log.warning("site: %s does not render at %s: %s", scene.name, tier, error)
         return None
@@ -144,18 +153,9 @@ def _render(shader: glint.Shader, scene: Path, tier: str, cache_dir: Path) -> by
 # --- the scene reference ------------------------------------------------------------------
 
 
-def scene_reference_page(
-    renders: Mapping[tuple[str, str], PurePosixPath],
-    live: Mapping[str, PurePosixPath] | None = None,
-    meshes: Mapping[str, PurePosixPath] | None = None,
-    scenes: Sequence[Path] | None = None,
-) -> str:
-    """Every key of a scene file, then every example scene (or each of `scenes`) with its
-    picture, its live canvas (the shader in `live`, by scene stem) and its TOML. A mesh scene's
-    picture is in `meshes` (by stem), at its own tier, and it has no live canvas."""
-    scenes = example_scenes() if scenes is None else scenes
-    live = live or {}
-    meshes = meshes or {}
+def scene_reference_page() -> str:
+    """Every key of a scene file, generated from the scene model; the example scenes are in
+    the gallery (gallery_page)."""
     schema = Scene.model_json_schema()
     defs: dict[str, Any] = schema.get("$defs", {})
     parts = [
@@ -163,7 +163,8 @@ def scene_reference_page(
         "A scene is a TOML file that `glint compose` and `glint render` take (without one they "
         "use the embedded default scene). Nothing in it runs code. Every key below is "
         "generated from the scene model, so it is exactly what glint accepts: an unknown key "
-        "or a value out of range is an error that names it.\n\n",
+        "or a value out of range is an error that names it. The example scenes, with their "
+        "pictures, live canvases and files, are in the [gallery](gallery.md).\n\n",
         "## Top level\n\n",
         _keys_table(schema, defs),
         "\n",
@@ -174,27 +175,50 @@ def scene_reference_page(
         if model.get("description"):
             parts.append(f"{md_prose(_sentence(model['description']))}\n\n")
         parts += [_keys_table(model, defs), "\n"]
-    parts.append("## Example scenes\n\n")
+    return "".join(parts)
+
+
+def gallery_page(
+    large: Mapping[str, PurePosixPath],
+    live: Mapping[tuple[str, str], PurePosixPath] | None = None,
+    meshes: Mapping[str, PurePosixPath] | None = None,
+    scenes: Sequence[Path] | None = None,
+) -> str:
+    """Every example scene (or each of `scenes`): its description, a large picture at its own
+    tier (`large`, by stem), the scene live at each tier in tabs (`live`, by stem and tier),
+    and its files. A mesh scene's picture is in `meshes`; it has no live canvas."""
+    scenes = example_scenes() if scenes is None else scenes
+    live = live or {}
+    meshes = meshes or {}
+    parts = [
+        "# Gallery\n\n",
+        "Every example scene of `snippets/scenes/`: glint's render at the scene's own tier, the "
+        "scene running live in your browser at each tier (switch with the tabs; drag to orbit, "
+        "the sliders set its lights, materials and exposure), and the files that make it. "
+        "Each is `glint compose` and `glint render` of the TOML below; every key is in the "
+        "[scene reference](scenes.md).\n\n",
+    ]
     for scene in scenes:
-        parts.append(f"### {md_text(scene.stem)}\n\n")
+        loaded = load_scene(scene)
+        parts.append(f"## {md_text(scene.stem)}\n\n")
+        if loaded.description:
+            parts.append(f"{md_prose(_sentence(loaded.description))}\n\n")
         if is_mesh_example(scene):
             parts.append(_mesh_example(scene, meshes.get(scene.stem)))
             continue
-        picture = renders.get((scene.stem, "balanced"))
+        picture = large.get(scene.stem)
         if picture is not None:
             parts.append(
                 f"{_picture(f'the {scene.stem} scene', picture)}\n\n"
-                f"{_render_command(scene)} at the balanced tier "
-                f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n\n"
+                f"{_render_command(scene)} ({GALLERY_SIZE[0]}x{GALLERY_SIZE[1]} pixels, time "
+                f"{TIME:g}).\n\n"
             )
-        if scene.stem in live:
-            parts.append(canvas_html(live[scene.stem], LIVE_SIZE, f"the {scene.stem} scene, live"))
-            parts.append("\n")
+        parts.append(_live_tabs(scene.stem, live))
+        parts.append(f"The scene, {md_code(f'snippets/scenes/{scene.name}')}:\n\n")
         parts.append(fenced(scene.read_text(encoding="utf-8"), "toml") + "\n")
-        geometry = load_scene(scene).geometry
-        if geometry is not None:  # the user's own GLSL the scene names
-            parts.append(f"{md_code(geometry.file)}, the scene's own distance function:\n\n")
-            parts.append(fenced(geometry.source, "glsl") + "\n")
+        if loaded.geometry is not None:  # the user's own GLSL the scene names
+            parts.append(f"{md_code(loaded.geometry.file)}, the scene's own distance function:\n\n")
+            parts.append(fenced(loaded.geometry.source, "glsl") + "\n")
     return "".join(parts)
 
 
