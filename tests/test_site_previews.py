@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import glint
+from glint.compiler.render.images import png_pixels
 from glint.compiler.site.pictures import PREVIEWS, scene_using, variant_pictures
 from glint.compiler.site.slot_comparison import _how_much_they_differ
 from glint.compiler.site.variant_contrast import GOAL, differing_share, slot_contrast
@@ -75,3 +76,25 @@ def test_a_slots_curves_show_every_variant_and_the_reference(tmp_path: Path) -> 
     assert (
         "## Curves\n\n![every D variant along the sweep](../../img/charts/D-curves.png)" in section
     )
+
+
+def test_every_shape_intersection_light_and_pattern_card_has_a_picture(tmp_path: Path) -> None:
+    """The catalog's library snippets that a scene takes by its content (a shape, an analytic
+    intersection, a light, the checker) each get a small scene of their own that uses them;
+    the core helpers, which every scene uses alike, stay without."""
+    from glint.compiler.catalog.slots import SLOTS
+
+    library = sorted(i for i, s in glint.catalog().items()
+                     if SLOTS.get(s.slot) is None or SLOTS[s.slot].many)  # fmt: skip
+    built = variant_pictures(library, tmp_path)
+    without = sorted(i for i, p in built.by_id.items() if p.path is None)
+    assert without == [i for i in library if i.startswith("core.")]
+    for snippet_id, picture in built.by_id.items():
+        if picture.path is None:
+            continue
+        assert picture.own_scene and snippet_id in picture.shader.split("Snippets, in order:")[1]
+        pixels = np.asarray(png_pixels(built.files[picture.path]))
+        assert pixels.std() > 0.05, snippet_id  # a scene, not a flat colour
+    # a shape's picture shows that shape: the torus and the sphere differ
+    torus, sphere = (built.files[built.by_id[i].path] for i in ("sdf.torus", "sdf.sphere"))
+    assert differing_share(torus, sphere) > 0.05

@@ -293,6 +293,8 @@ def variant_page(
 
 def _scene_tab(picture: Picture) -> str:
     """The tab's title: the scene the variant is composed into."""
+    if picture.own_scene:
+        return "Its scene"
     if picture.scene_file is None:
         return "The default scene with it"
     return md_text(f"{PurePosixPath(picture.scene_file).stem} scene with it")
@@ -336,10 +338,16 @@ def picture_block(doc: VariantDoc, picture: Picture) -> str:
     if picture.path is None:
         return f"{picture.note}\n"  # Markdown, escaped where pictures.py makes it
     variant = doc.id.split(".", 1)[-1]
+    image = safe_image(_alt(doc.id, picture), path_url(picture.path, "../"))
+    if picture.own_scene:  # a library snippet: its scene's shader is in the tab below
+        return (
+            f"{image}\n\nglint's render of {picture.scene}, which takes it "
+            f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n"
+        )
     scene = f" {picture.scene_file}" if picture.scene_file else ""
     command = md_code(f"glint compose{scene} --variant {doc.slot}={variant}")
     return (
-        f"{safe_image(_alt(doc.id, picture), path_url(picture.path, '../'))}\n\n"
+        f"{image}\n\n"
         f"glint's render of {picture.scene} composed with {command} "
         f"({SIZE[0]}x{SIZE[1]} pixels, time {TIME:g}).\n"
     )

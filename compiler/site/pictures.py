@@ -36,6 +36,7 @@ PICTURE_DIR = PurePosixPath("img") / "variants"
 SIZE = (192, 108)  # small: 83 renders on llvmpipe in well under a minute
 TIME = 1.0
 DEFAULT_SCENE = "the default scene"
+OWN_SCENE = "a small scene made to show it"
 
 
 @dataclass(frozen=True)
@@ -48,15 +49,20 @@ class Picture:
     note: str = ""  # why there is no picture, when `path` is None (Markdown, escaped here)
     shader: str = ""  # the composed shader the picture shows (ShaderToy Image-tab code)
     live: str = ""  # the same composition for the live canvas (webgl2, parameters as uniforms)
+    own_scene: bool = False  # a small scene made for a library snippet (card_scenes.py)
 
     @property
     def scene(self) -> str:
         """The scene as the page names it (Markdown, its file name in a code span)."""
+        if self.own_scene:
+            return OWN_SCENE
         return f"the example scene {md_code(self.scene_file)}" if self.scene_file else DEFAULT_SCENE
 
     @property
     def scene_text(self) -> str:
         """The scene as plain text (an image's alt text)."""
+        if self.own_scene:
+            return OWN_SCENE
         return f"the example scene {self.scene_file}" if self.scene_file else DEFAULT_SCENE
 
 
@@ -106,7 +112,7 @@ def picture_composition(slot: str, variant: str) -> tuple[glint.Shader, str | No
     snippet_id = f"{slot}.{variant}"
     spec = SLOTS.get(slot)
     if spec is None or spec.many:
-        return Picture(note="A library snippet: no scene slot takes it, so it has no picture.")
+        return _own_scene_composition(snippet_id)
     scene = scene_using(slot)
     if scene is None:
         return Picture(note="No example scene uses this slot, so it has no picture.")
@@ -122,6 +128,27 @@ def picture_composition(slot: str, variant: str) -> tuple[glint.Shader, str | No
     return shader, scene_file
 
 
+def _own_scene_composition(snippet_id: str) -> tuple[glint.Shader, str | None] | Picture:
+    """A library snippet's picture: the small scene of card_scenes.py that uses it (a shape, an
+    intersection, a light), where it has one and the composition takes the snippet."""
+    from .card_scenes import card_scene
+
+    scene = card_scene(snippet_id)
+    if scene is None:
+        return Picture(note="A library snippet: no scene slot takes it, so it has no picture.")
+    try:
+        shader = glint.compose(scene)
+    except glint.InputError as error:
+        log.warning("site: no picture for %s: %s", snippet_id, error)
+        return Picture(note="No picture: its scene fails to compose.", own_scene=True)
+    if snippet_id not in {unit.id for unit in shader.units}:
+        return Picture(note="No picture: its scene does not take it.", own_scene=True)
+    return shader, OWN
+
+
+OWN = "\0own"  # picture_composition's scene name for a snippet's own scene
+
+
 def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Picture:
     """One variant's picture; its PNG goes into `result.files`."""
     snippet_id = f"{slot}.{variant}"
@@ -129,6 +156,8 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
     if isinstance(composed, Picture):
         return composed
     shader, scene_file = composed
+    own = scene_file == OWN
+    scene_file = None if own else scene_file
     try:
         png, rendered = render_cached(shader, cache_dir)
     except glint.InputError as error:
@@ -138,7 +167,11 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
     result.rendered += rendered
     live = shader.retarget("webgl2", params_as_uniforms=True).text  # emitted again, not composed
     picture = Picture(
-        path=picture_path(snippet_id), scene_file=scene_file, shader=shader.text, live=live
+        path=picture_path(snippet_id),
+        scene_file=scene_file,
+        shader=shader.text,
+        live=live,
+        own_scene=own,
     )
     result.files[picture_path(snippet_id)] = png
     return picture
