@@ -410,3 +410,19 @@ def test_a_slots_compared_variants_come_under_their_own_heading() -> None:
     assert "## Side by side" in page
     assert _headings_glued_to_the_line_above(page) == []
     assert all(_headings_glued_to_the_line_above(text) == [] for text in pages.values())
+
+
+def test_float16_is_said_to_hold_only_within_its_accuracy() -> None:
+    """'Survives float16' was said of variants whose relative error in half reached 6e4: a
+    finite but inaccurate result is now called what it is, with its number."""
+    from glint.compiler.site.measured import HALF_ACCURATE, _precision_text
+
+    def said(finite: bool, error: float | None) -> str:
+        half = {"finite": finite, "max_rel_err_vs_f64": error, "nonfinite_lanes": 3}
+        return _precision_text({"float16": half, "float32": {"max_rel_err_vs_f64": 1e-7}})
+
+    assert "holds in float16" in said(True, HALF_ACCURATE / 2)
+    inaccurate = said(True, 6.2e4)
+    assert "holds" not in inaccurate and "survive" not in inaccurate
+    assert "is not accurate: its largest relative error is 6.2e+04" in inaccurate
+    assert "does **not** survive float16" in said(False, None)

@@ -39,10 +39,24 @@ _LIGHTS: dict[str, list[dict[str, Any]]] = {
     "response": [_SUN],  # the BRDF response every directional light goes through
     "point": [{"type": "point", "position": [1.2, 0.6, 1.2], "intensity": 6.0, "range": 8.0}],
     "sky": [{**_SKY, "intensity": 1.5}],
-    "back": [{"type": "back", "direction": [-0.6, 0.2, -0.7], "color": [1.0, 0.8, 0.5],
-              "intensity": 2.0}, {**_SKY, "intensity": 0.15}],  # fmt: skip
-    "bounce": [{"type": "bounce", "direction": [0.0, -1.0, 0.3], "color": [1.0, 0.6, 0.3],
-                "intensity": 2.0}, {**_SKY, "intensity": 0.15}],  # fmt: skip
+    "back": [
+        {
+            "type": "back",
+            "direction": [-0.6, 0.2, -0.7],
+            "color": [1.0, 0.8, 0.5],
+            "intensity": 2.0,
+        },
+        {**_SKY, "intensity": 0.15},
+    ],  # fmt: skip
+    "bounce": [
+        {
+            "type": "bounce",
+            "direction": [0.0, -1.0, 0.3],
+            "color": [1.0, 0.6, 0.3],
+            "intensity": 2.0,
+        },
+        {**_SKY, "intensity": 0.15},
+    ],  # fmt: skip
     "irradiance": [{"type": "environment", "intensity": 1.0}],
 }
 
@@ -65,13 +79,21 @@ def card_scene(snippet_id: str) -> dict[str, Any] | None:
     floor = {"shape": "plane", "normal": [0.0, 1.0, 0.0], "offset": 1.0, "material": "floor"}
     return {
         "name": f"card_{family}_{name}",
-        "camera": {"type": "lookat", "position": [1.7, 1.0, 2.1], "target": [0.0, -0.35, 0.0],
-                   "focal": 1.6},  # fmt: skip
+        "camera": {
+            "type": "lookat",
+            "position": [1.7, 1.0, 2.1],
+            "target": [0.0, -0.35, 0.0],
+            "focal": 1.6,
+        },  # fmt: skip
         "objects": [{**o, "material": "clay"} for o in objects] + [floor],
         "materials": {
             "clay": {"albedo": [0.75, 0.55, 0.4], "roughness": 0.45},
-            "floor": {"albedo": [0.35, 0.35, 0.35], "pattern": "checker",
-                      "pattern_albedo": [0.6, 0.6, 0.6], "roughness": 0.8},  # fmt: skip
+            "floor": {
+                "albedo": [0.35, 0.35, 0.35],
+                "pattern": "checker",
+                "pattern_albedo": [0.6, 0.6, 0.6],
+                "roughness": 0.8,
+            },  # fmt: skip
         },
         "lights": lights,
         "environment": {"top": [0.3, 0.45, 0.7], "bottom": [0.6, 0.62, 0.65]},
