@@ -9,7 +9,8 @@ same check.
 A package may import its own modules and packages of lower layers, never one of its own layer
 or above. The order is the pipeline's: the GLSL front end knows nothing of targets, the target
 nothing of the catalog, the catalog nothing of composing, and so on up to the commands. The
-linter stands beside the compiler and uses only the front end, the target, the errors and files.
+linter stands beside the compiler and uses only the front end, the target, the errors, files and
+the collector pause.
 Imports inside functions count: they hide a dependency, they do not remove it.
 """
 
@@ -28,7 +29,9 @@ _ROOT = Path(__file__).resolve().parents[1]
 # is its own package).
 LAYERS: list[tuple[str, ...]] = [
     ("errors",),
-    ("files", "markdown"),  # reading input files, writing output files whole; page text escaped
+    # reading input files, writing output files whole; page text escaped; Python's cycle
+    # collector paused around big builds (a parse, one file's lint)
+    ("files", "markdown", "collector"),
     ("glsl",),
     ("target", "evaluator"),  # the evaluator runs GLSL on the CPU: it needs the front end only
     ("catalog",),
@@ -41,7 +44,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("site",),  # the docs site's generated pages: documents everything below it
 ]
 # The linter sits beside the compiler's stages: what it may use of them.
-LINT_USES = {"errors", "files", "glsl", "target"}
+LINT_USES = {"errors", "collector", "files", "glsl", "target"}
 
 _SOURCES = {"compiler": "glint.compiler", "lint": "glint.lint"}
 
