@@ -8,8 +8,8 @@ An entry's key is a hash of everything its findings depend on:
   content) or whether it is a Common tab itself, and the channels' types;
 - glint's version and a hash of the linter's own source (every file of the `glint.lint`
   package, precision.json included, and of the compiler's GLSL front end `compiler/glsl/`, its
-  targets, glslang runner and ShaderToy prelude `compiler/target/`, and `compiler/errors.py`),
-  so that any change to the code invalidates every entry;
+  targets, glslang runner and ShaderToy prelude `compiler/target/`, `compiler/errors.py` and
+  `compiler/collector.py`), so that any change to the code invalidates every entry;
 - the effective options: select, ignore, per-file ignores, target, channels, glslang on or
   off, and,
   with glslang on, which glslangValidator (its path, size, modification time and the version
@@ -63,7 +63,7 @@ _COMPILER_DIR = _LINT_DIR.parent / "compiler"
 # The parts of the compiler whose behaviour is part of the findings: the GLSL front end, the
 # targets (the ShaderToy prelude that glslang compiles the file in, the glslang runner, source
 # markers) and the errors. Lint imports nothing else of the compiler (a test checks).
-_COMPILER_SOURCES = ("glsl", "target", "errors.py")
+_COMPILER_SOURCES = ("glsl", "target", "errors.py", "collector.py")
 _SOURCE_SUFFIXES = (".py", ".lark", ".json", ".toml")
 _VERSION_FOLDER = re.compile(r"^v\d+-[0-9a-f]{16}$")
 _SEVERITIES = frozenset({"error", "warning", "info"})

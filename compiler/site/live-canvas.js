@@ -117,8 +117,8 @@
   // A slider with the value typed in beside it and a reset to its first value. Over a range that
   // spans two decades or more (0.01 to 1000), the slider moves on a log scale, so that every
   // decade gets the same travel and the default can be found again.
-  function slider(label, min, max, step, value, onInput) {
-    var initial = value;
+  function slider(label, min, max, step, value, onInput, first) {
+    var initial = first === undefined ? value : first; // what the reset returns to
     var log = min > 0 && max / min >= 100;
     var row = element("span", "glint-live-slider");
     var name = element("span", "glint-live-name", label);
@@ -362,10 +362,11 @@
       var isInt = param.type === "int";
       var step = isInt ? 1 : (param.max - param.min) / 200;
       var value = self.values[param.name];
+      var first = param.default; // a context given back keeps the value, the reset its default
       var control = slider(param.name, param.min, param.max, step, value, function (v) {
         self.values[param.name] = v;
         if (!self.playing) self.draw();
-      });
+      }, first);
       control.input.dataset.param = param.name;
       self.controls.appendChild(control.row);
     });
