@@ -426,3 +426,23 @@ def test_float16_is_said_to_hold_only_within_its_accuracy() -> None:
     assert "holds" not in inaccurate and "survive" not in inaccurate
     assert "is not accurate: its largest relative error is 6.2e+04" in inaccurate
     assert "does **not** survive float16" in said(False, None)
+
+
+def test_a_variants_sources_link_to_the_papers() -> None:
+    from glint.compiler.site.catalog_pages import variant_docs
+
+    docs = {doc.id: doc for doc in variant_docs()}
+    page = variant_page(docs["D.ggx"])
+    sources = page[page.index("## Sources") :]
+    assert "[Walter et al. 2007, eq. 33](https://doi.org/10.2312/EGWR/EGSR07/195-206)" in sources
+    schlick = variant_page(docs["F.schlick"])
+    assert "(https://doi.org/10.1111/1467-8659.1330233)" in schlick
+    # a source without a known address stays text
+    from glint.compiler.site.source_links import source_link
+
+    doc = next(d for d in docs.values() if any(not source_link(s) for s in d.sources))
+    listed = [x for x in variant_page(doc).split("## Sources", 1)[1].splitlines()
+              if x.startswith("- ")]  # fmt: skip
+    linked = [x for x in listed if "](" in x]
+    assert len(listed) == len(doc.sources) > len(linked)
+    assert len(linked) == sum(1 for s in doc.sources if source_link(s))

@@ -31,6 +31,7 @@ from glint.compiler.markdown import (
 from .live_canvas import live_section
 from .measured import Accuracy, accuracy_section
 from .pictures import SIZE, TIME, Picture
+from .source_links import source_link
 
 CATALOG_DIR = PurePosixPath("catalog")
 
@@ -287,8 +288,14 @@ def variant_page(
         parts.append(f"- parameters (`#define`, defaults): {params}\n")
     parts += ["\n## Tiers\n\n", _tiers(doc), "\n"]
     if doc.sources:
-        parts += ["## Sources\n\n", *(f"- {md_prose(source)}\n" for source in doc.sources)]
+        parts += ["## Sources\n\n", *(f"- {_source(source)}\n" for source in doc.sources)]
     return "".join(parts)
+
+
+def _source(source: str) -> str:
+    """A source as the page lists it: linked to the paper or page where one is known."""
+    url = source_link(source)
+    return safe_link(md_prose(source), url) if url else md_prose(source)
 
 
 def _scene_tab(picture: Picture) -> str:
