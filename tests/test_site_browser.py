@@ -327,3 +327,25 @@ def test_dark_mode_follows_the_system_and_the_toggle(site_url: str, browser: Any
         assert page.evaluate(background) != dark
     finally:
         context.close()
+
+
+def test_pages_fit_a_phone_screen(built_site: BuiltSite, site_url: str, browser: Any) -> None:
+    """At 390 px wide no page scrolls sideways, once its live canvases have drawn and built
+    their controls (a slider row with its typed value and reset was wider than a phone)."""
+    context = browser.new_context(viewport={"width": 390, "height": 844})
+    try:
+        page = context.new_page()
+        for path in ("", "gallery/", "catalog/D.ggx/", "catalog/slots/D/"):
+            page.goto(site_url + path)
+            canvas = page.locator("canvas.glint-live-canvas").first
+            if canvas.count():
+                canvas.scroll_into_view_if_needed()
+                page.wait_for_function(
+                    "() => ['drawn', 'error'].includes("
+                    "document.querySelector('canvas.glint-live-canvas').dataset.state)",
+                    timeout=60_000,
+                )
+            width = page.evaluate("document.documentElement.scrollWidth")
+            assert width <= 391, f"/{path} is {width} px wide on a 390 px screen"
+    finally:
+        context.close()

@@ -69,8 +69,11 @@
     "touch-action:none}" + // a drag sets iMouse rather than scrolling the page
     ".glint-live-controls{display:flex;flex-wrap:wrap;gap:.25em 1em;align-items:center;" +
     "max-width:640px;font-size:.7rem}" +
-    ".glint-live-slider{display:flex;align-items:center;gap:.5em}" +
-    ".glint-live-name{font-family:var(--md-code-font-family,monospace)}" +
+    // a row wraps on a narrow screen: the name above, the slider taking what is left
+    ".glint-live-slider{display:flex;flex-wrap:wrap;align-items:center;gap:.25em .5em;" +
+    "max-width:100%}" +
+    ".glint-live-slider input[type=range]{flex:1 1 8em;min-width:6em}" +
+    ".glint-live-name{font-family:var(--md-code-font-family,monospace);overflow-wrap:anywhere}" +
     ".glint-live-value{width:5.5em;font:inherit}" +
     ".glint-live-reset{border:0;background:none;cursor:pointer;font:inherit;padding:0 .2em}" +
     ".glint-live-errors{white-space:pre-wrap;color:#c62828}" +
