@@ -37,28 +37,35 @@ def canvas_html(
     size: tuple[int, int],
     label: str,
     choices: Sequence[tuple[str, PurePosixPath]] = (),
+    extra_class: str = "",
 ) -> str:
     """The raw HTML of one canvas: its drawing size, its shader (root-relative) and its time.
-    With `choices` (a name and a shader each), a selector above it swaps the shader."""
+    With `choices` (a name and a shader each), a selector above it swaps the shader;
+    `extra_class` is added to its box's classes."""
     width, height = size
     chooser = ""
     if choices:
-        options = "".join(
-            f'<option value="{html_attr(path.as_posix())}"'
-            f"{' selected' if path == shader else ''}>{html_text(name)}</option>"
-            for name, path in choices
-        )
         chooser = (
             f'<select class="glint-live-choice" aria-label="{html_attr(label)}: shader">'
-            f"{options}</select>\n"
+            f"{_options(choices, shader)}</select>\n"
         )
+    classes = f"glint-live {extra_class}".strip()
     return (
-        '<div class="glint-live">\n'
+        f'<div class="{classes}">\n'
         + chooser
         + f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
         f'data-shader="{html_attr(shader.as_posix())}" data-time="{TIME:g}" '
         f'aria-label="{html_attr(label)}"></canvas>\n'
         "</div>\n"
+    )
+
+
+def _options(choices: Sequence[tuple[str, PurePosixPath]], selected: PurePosixPath) -> str:
+    """A selector's options: a name and a shader each, `selected` chosen."""
+    return "".join(
+        f'<option value="{html_attr(path.as_posix())}"'
+        f"{' selected' if path == selected else ''}>{html_text(name)}</option>"
+        for name, path in choices
     )
 
 
@@ -111,21 +118,15 @@ def slot_compare_section(
     width, height = VARIANT_SIZE
 
     def chooser(which: str, selected: PurePosixPath) -> str:
-        options = "".join(
-            f'<option value="{html_attr(path.as_posix())}"'
-            f"{' selected' if path == selected else ''}>{html_text(name)}</option>"
-            for name, path in choices
-        )
         label = html_attr(f"slot {slot}: variant {which.upper()}")
-        return f'<select class="glint-compare-{which}" aria-label="{label}">{options}</select>'
+        return (
+            f'<select class="glint-compare-{which}" aria-label="{label}">'
+            f"{_options(choices, selected)}</select>"
+        )
 
     def canvas(which: str, shader: PurePosixPath) -> str:
-        return (
-            f'<div class="glint-live glint-compare-{which}-view">'
-            f'<canvas class="glint-live-canvas" width="{width}" height="{height}" '
-            f'data-shader="{html_attr(shader.as_posix())}" data-time="{TIME:g}" '
-            f'aria-label="{html_attr(f"slot {slot}, variant {which.upper()}")}"></canvas></div>'
-        )
+        label = f"slot {slot}, variant {which.upper()}"
+        return canvas_html(shader, VARIANT_SIZE, label, extra_class=f"glint-compare-{which}-view")
 
     return (
         "## Compare two variants\n\n"

@@ -110,8 +110,7 @@ def picture_composition(slot: str, variant: str) -> tuple[glint.Shader, str | No
     and that scene's file as the page names it; where there is none, the Picture that says
     why."""
     snippet_id = f"{slot}.{variant}"
-    spec = SLOTS.get(slot)
-    if spec is None or spec.many:
+    if _library(slot):
         return _own_scene_composition(snippet_id)
     scene = scene_using(slot)
     if scene is None:
@@ -143,10 +142,13 @@ def _own_scene_composition(snippet_id: str) -> tuple[glint.Shader, str | None] |
         return Picture(note="No picture: its scene fails to compose.", own_scene=True)
     if snippet_id not in {unit.id for unit in shader.units}:
         return Picture(note="No picture: its scene does not take it.", own_scene=True)
-    return shader, OWN
+    return shader, None
 
 
-OWN = "\0own"  # picture_composition's scene name for a snippet's own scene
+def _library(slot: str) -> bool:
+    """A snippet no scene slot takes (a shape, a light's term, a helper)."""
+    spec = SLOTS.get(slot)
+    return spec is None or spec.many
 
 
 def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Picture:
@@ -156,8 +158,6 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
     if isinstance(composed, Picture):
         return composed
     shader, scene_file = composed
-    own = scene_file == OWN
-    scene_file = None if own else scene_file
     try:
         png, rendered = render_cached(shader, cache_dir)
     except glint.InputError as error:
@@ -171,7 +171,7 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         scene_file=scene_file,
         shader=shader.text,
         live=live,
-        own_scene=own,
+        own_scene=_library(slot),
     )
     result.files[picture_path(snippet_id)] = png
     return picture
@@ -226,24 +226,31 @@ def scene_using(slot: str) -> tuple[str | None, str | None] | None:
     """The scene to show a variant of `slot` in, as (path for glint.compose, file as the page
     names it): the slot's preview scene, else the default scene (None, None) if its plan uses
     the slot, else the first example scene that does."""
-    for path, name, slots in _scene_slots(PREVIEWS.get(slot)):
+    preview = _preview_slots(PREVIEWS[slot]) if slot in PREVIEWS else None
+    for path, name, slots in (*([preview] if preview else []), *_scene_slots()):
         if slot in slots:
             return path, name
     return None
 
 
 @cache
-def _scene_slots(
-    preview: str | None = None,
-) -> tuple[tuple[str | None, str | None, frozenset[str]], ...]:
+def _preview_slots(preview: str) -> tuple[str, str, frozenset[str]] | None:
+    """A preview scene (path, name) and the slots its plan fills (composed once per build),
+    or None, with a warning, where it does not compose."""
+    file = snippets_root() / "previews" / f"{preview}.toml"
+    name = f"snippets/previews/{file.name}"
+    try:
+        return os.fspath(file), name, _slots_of(os.fspath(file))
+    except glint.InputError as error:
+        log.warning("site: scene %s does not compose: %s", name, error)
+        return None
+
+
+@cache
+def _scene_slots() -> tuple[tuple[str | None, str | None, frozenset[str]], ...]:
     """Each candidate scene (path, name) and the slots its plan fills (composed once per build
-    process): the preview scene named, then the default scene, then the example scenes by
-    name."""
-    scenes: list[tuple[str | None, str | None]] = []
-    if preview is not None:
-        file = snippets_root() / "previews" / f"{preview}.toml"
-        scenes.append((os.fspath(file), f"snippets/previews/{file.name}"))
-    scenes.append((None, None))
+    process): the default scene first, then the example scenes by name."""
+    scenes: list[tuple[str | None, str | None]] = [(None, None)]
     for file in sorted((snippets_root() / "scenes").glob("*.toml")):
         # A variant's picture is a ShaderToy shader composed with the variant: mesh scenes
         # (rasterized, each material with its own models) are not candidates.
@@ -252,9 +259,13 @@ def _scene_slots(
     result = []
     for path, name in scenes:
         try:
-            slots = frozenset(glint.compose(path).plan.choices)
+            slots = _slots_of(path)
         except glint.InputError as error:
             log.warning("site: scene %s does not compose: %s", name, error)
             continue
         result.append((path, name, slots))
     return tuple(result)
+
+
+def _slots_of(path: str | None) -> frozenset[str]:
+    return frozenset(glint.compose(path).plan.choices)

@@ -11,7 +11,6 @@ by a hash of the data it shows, like the pictures.
 from __future__ import annotations
 
 import hashlib
-import itertools
 import json
 import logging
 import statistics
@@ -133,28 +132,25 @@ def _how_much_they_differ(pngs: Mapping[str, bytes]) -> str:
     """What the pictures show of the choice, in numbers: the median share of pixels two
     variants' pictures differ in (variant_contrast.py), and the variants whose pictures are the
     same here, so that a reader does not look for a difference that is not there."""
-    from .variant_contrast import differing_share  # also a script: not imported with the package
+    from .variant_contrast import pairwise_shares  # also a script: not imported with the package
 
-    ids = list(pngs)
-    same: dict[str, str] = {i: i for i in ids}  # each variant's group: the first one like it
+    same: dict[str, str] = {i: i for i in pngs}  # each variant's group: the first one like it
 
     def group(i: str) -> str:
         while same[i] != i:
             i = same[i]
         return i
 
-    shares = []
-    for a, b in itertools.combinations(ids, 2):
-        share = differing_share(pngs[a], pngs[b])
-        shares.append(share)
+    shares = pairwise_shares(pngs)
+    for (a, b), share in shares.items():
         if share == 0.0:
             same[group(b)] = group(a)
     text = (
-        f"Between two variants' pictures, a median {statistics.median(shares):.1%} of the "
+        f"Between two variants' pictures, a median {statistics.median(shares.values()):.1%} of the "
         f"pixels differ by more than 3/255."
     )
     groups: dict[str, list[str]] = {}
-    for i in ids:
+    for i in pngs:
         groups.setdefault(group(i), []).append(i)
     for members in groups.values():
         if len(members) > 1:

@@ -32,17 +32,27 @@ MEASURED_SLOTS = ("D", "F", "V", "specular", "diffuse", "shadow", "ao")
 def differing_share(a: bytes, b: bytes) -> float:
     """The share of pixels of two PNGs of one size where a colour channel differs by more than
     THRESHOLD."""
-    pa, pb = png_pixels(a)[..., :3], png_pixels(b)[..., :3]
+    return _share(png_pixels(a), png_pixels(b))
+
+
+def _share(pa: np.ndarray, pb: np.ndarray) -> float:
+    pa, pb = pa[..., :3], pb[..., :3]
     if pa.shape != pb.shape:
         raise ValueError(f"pictures of different sizes: {pa.shape} and {pb.shape}")
     return float(np.mean(np.any(np.abs(pa - pb) > THRESHOLD, axis=-1)))
 
 
+def pairwise_shares(pictures: Mapping[str, bytes]) -> dict[tuple[str, str], float]:
+    """`differing_share` of every pair of the named PNGs (each decoded once)."""
+    pixels = {name: png_pixels(png) for name, png in pictures.items()}
+    return {(a, b): _share(pixels[a], pixels[b]) for a, b in itertools.combinations(pixels, 2)}
+
+
 def slot_contrast(pictures: Iterable[bytes]) -> float | None:
     """The median share of differing pixels over every pair of the pictures (None for fewer
     than two)."""
-    shares = [differing_share(a, b) for a, b in itertools.combinations(list(pictures), 2)]
-    return statistics.median(shares) if shares else None
+    shares = pairwise_shares({str(i): png for i, png in enumerate(pictures)})
+    return statistics.median(shares.values()) if shares else None
 
 
 def contrasts(by_slot: Mapping[str, list[bytes]]) -> dict[str, float | None]:
