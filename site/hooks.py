@@ -7,6 +7,8 @@ the package is not installed, as in CI, which installs only what `make test` nee
 Only changed files are rewritten, so `mkdocs serve` does not rebuild in a loop.
 Variant pictures are cached in build/site-cache, or $GLINT_SITE_CACHE; $GLINT_SITE_PICTURES
 limits them ("none", or comma-separated snippet ids; the tests render only a few).
+The variant pages' code editor is build/editor/glint-editor.js (`make editor`), or
+$GLINT_EDITOR_BUNDLE; without it the code is shown read-only.
 """
 
 from __future__ import annotations
@@ -29,6 +31,8 @@ def on_config(config: Any) -> Any:
     katex = Path(os.environ.get("GLINT_KATEX_DIR") or KATEX_DIR)
     cache = Path(os.environ.get("GLINT_SITE_CACHE") or root / "build" / "site-cache")
     pictures = selection_from_env(os.environ.get("GLINT_SITE_PICTURES"))
+    bundle = root / "build" / "editor" / "glint-editor.js"
+    editor = Path(os.environ.get("GLINT_EDITOR_BUNDLE") or bundle)
     build_docs(
         source,
         target,
@@ -36,6 +40,7 @@ def on_config(config: Any) -> Any:
         katex_dir=katex,
         picture_cache=cache,
         pictures=pictures,
+        editor_bundle=editor,
     )
     config.docs_dir = str(target)
     return config

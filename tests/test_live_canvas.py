@@ -8,14 +8,16 @@ from pathlib import PurePosixPath
 from glint.compiler.compose.uniform_params import read_manifest
 from glint.compiler.site.live_canvas import (
     DEFAULT_SHADER,
+    EDITOR_SCRIPT,
     SCRIPT,
     canvas_html,
     live_files,
     live_path,
     live_section,
+    shadertoy_path,
     slot_live_section,
 )
-from glint.compiler.site.pictures import Picture
+from glint.compiler.site.pictures import Picture, editable_code, picture_composition
 
 
 def test_a_canvas_names_its_shader_and_holds_no_shader_text() -> None:
@@ -41,6 +43,32 @@ def test_files_hold_the_script_and_each_live_shader() -> None:
     assert b"WEBGL_lose_context" in files[SCRIPT]
     default = files[DEFAULT_SHADER].decode()
     assert default.startswith("#version 300 es") and read_manifest(default)
+
+
+def test_a_variant_page_edits_its_code_in_one_html_block() -> None:
+    code = "// a < b\n\nfloat f() { return 1.0; }\n"
+    section = live_section("D.ggx", Picture(live="// live", code=code))
+    block = section[section.index('<div class="glint-edit"') :]
+    assert "\n\n" not in block.rstrip("\n")  # a blank line would end Markdown's HTML block
+    assert "// a &lt; b&#10;&#10;float f()" in block
+    assert 'data-shader="img/live/D.ggx.glsl"' in block
+    assert 'data-shadertoy="img/live/D.ggx.shadertoy.glsl"' in block
+    assert "data-search-exclude" in block  # the code is on the page once more, for search
+    assert "glint-edit" not in live_section("D.ggx", Picture(live="// live"))
+
+
+def test_the_edited_code_stands_once_in_both_shaders_and_ships_with_them() -> None:
+    shader, _ = picture_composition("D", "ggx")
+    live = shader.retarget("webgl2", params_as_uniforms=True).text
+    code = editable_code(shader, "D.ggx", live)
+    assert "float distribution(" in code and "#version" not in code
+    assert shader.text.count(code) == 1 and live.count(code) == 1
+    assert editable_code(shader, "D.beckmann", live) == ""  # not in this composition
+    picture = Picture(live=live, shader=shader.text, code=code)
+    files = live_files({"D.ggx": picture}, editor=b"/* editor */")
+    assert files[shadertoy_path("D.ggx")] == shader.text.encode()
+    assert files[EDITOR_SCRIPT] == b"/* editor */"
+    assert EDITOR_SCRIPT not in live_files({})
 
 
 def test_a_slot_page_has_one_canvas_with_a_selector_of_its_live_variants() -> None:

@@ -23,14 +23,15 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pytest
 from PIL import Image
-from site_browser import KATEX_DIR, MAKE_TEST, ROOT, PageLog, serve
+from site_browser import KATEX_DIR, MAKE_TEST, ROOT, PageLog, serve, watch
 
 import glint
 from glint.compiler.compose.uniform_params import read_manifest
 from glint.compiler.render.images import flip_error
+from glint.compiler.target.glslang import validate
 
 if TYPE_CHECKING:
-    from playwright.sync_api import Page
+    from playwright.sync_api import Browser, Page
 
 pytestmark = pytest.mark.browser
 
@@ -529,3 +530,86 @@ def test_every_variants_live_canvas_compiles_and_draws(
     # Console messages are not checked here: Material's script of the page this harness
     # replaces complains about the page it finds; the real pages are checked above.
     assert not bad, bad
+
+
+EDITOR_BUNDLE = ROOT / "build" / "editor" / "glint-editor.js"
+
+
+def _edit_line(page: Page, has_text: str, replacement: str) -> None:
+    """Put the cursor on the editor's line that holds `has_text` and type `replacement` over
+    the whole line, as a reader would."""
+    line = page.locator(".glint-edit .cm-line", has_text=has_text).first
+    line.click()
+    page.keyboard.press("End")
+    page.keyboard.press("Shift+Home")
+    page.keyboard.press("Shift+Home")  # the first Home stops at the indentation
+    page.keyboard.type(replacement)
+
+
+def _edit_state(page: Page, state: str) -> str:
+    """Wait until the editor's last compile ended in `state`; its status line."""
+    page.wait_for_function(
+        "(s) => document.querySelector('.glint-edit').dataset.state === s",
+        arg=state,
+        timeout=60_000,
+    )
+    return page.text_content(".glint-edit-status") or ""
+
+
+def test_an_edit_recompiles_the_canvas_and_an_error_shows_at_its_line(
+    live_site: LiveSite, browser: Browser
+) -> None:
+    """A variant page's code in CodeMirror: an edit of D.ggx that makes D zero takes the
+    highlights out of the canvas; an undeclared name shows at the edited line of the editor;
+    Reset brings the picture back; "Copy as ShaderToy" copies a shader that glslang accepts
+    and that holds the edit."""
+    if not EDITOR_BUNDLE.is_file():
+        pytest.fail(f"the editor's bundle {EDITOR_BUNDLE} is missing: run `make editor`")
+    context = browser.new_context(viewport={"width": 1200, "height": 800})
+    context.grant_permissions(["clipboard-read", "clipboard-write"])
+    page = context.new_page()
+    log = watch(page)
+    try:
+        page.goto(live_site.url + "catalog/D.ggx/")
+        _drawn(page)
+        page.wait_for_function(
+            "document.querySelector('.glint-edit').dataset.state === 'ready'", timeout=60_000
+        )
+        before = _pixels(page)
+
+        _edit_line(page, "return a2 / (PI * d * d);", "return 0.0;")
+        assert _edit_state(page, "compiled") == "compiled"
+        _drawn(page)
+        flat = _pixels(page)
+        # no specular lobe left: the spheres' highlights go, the picture darkens
+        assert flat.mean() < before.mean() - 0.01, (flat.mean(), before.mean())
+
+        _edit_line(page, "return 0.0;", "return nowhere;")
+        status = _edit_state(page, "error")
+        code = (ROOT / "snippets" / "D" / "ggx.glsl").read_text().split("--- */\n", 1)[1]
+        expected = next(
+            number for number, text in enumerate(code.splitlines(), start=1) if "return a2" in text
+        )
+        assert status.startswith(f"error at line {expected}:") and "nowhere" in status, status
+        assert page.locator(".glint-edit .cm-lint-marker-error").count() == 1
+
+        page.click(".glint-edit-reset")
+        assert _edit_state(page, "compiled") == "compiled"
+        _drawn(page)
+        assert np.abs(_pixels(page) - before).max() <= 1 / 255
+
+        _edit_line(page, "return a2 / (PI * d * d);", "return 0.5 * a2 / (PI * d * d);")
+        _edit_state(page, "compiled")
+        page.click(".glint-edit-copy")
+        page.wait_for_function(
+            "document.querySelector('.glint-edit-status').textContent.startsWith('copied')",
+            timeout=10_000,
+        )
+        copied: str = page.evaluate("navigator.clipboard.readText()")
+        assert "return 0.5 * a2 / (PI * d * d);" in copied
+        assert "return a2 / (PI * d * d);" not in copied
+        assert "void mainImage" in copied and "#version" not in copied  # ShaderToy's Image tab
+        assert validate(copied, "copied.glsl", "shadertoy") == []  # glslangValidator
+        _no_problems(log)
+    finally:
+        context.close()

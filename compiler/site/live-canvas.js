@@ -20,6 +20,12 @@
 // A <div class="glint-compare"> holds two such canvases, A and B, stacked: B shows right of a
 // divider the reader drags, and a checkbox shows |A - B| times a gain instead. A's controls
 // drive both (time, mouse, the parameters both shaders have); B's are hidden.
+//
+// A <div class="glint-edit" data-shader="..." data-shadertoy="..."> holds a variant's code in a
+// <pre>: the script loads the editor (assets/glint-editor.js, CodeMirror) in its place; an edit
+// puts the new code where the old stood in the canvas's shader (the canvas whose data-shader is
+// the same) and recompiles it, keeping its time, sliders and play; a compile error shows at its
+// line in the editor. "Copy as ShaderToy" copies the data-shadertoy shader with the edit.
 (function () {
   "use strict";
 
@@ -84,7 +90,19 @@
     "{display:none}" +
     ".glint-compare-difference{position:absolute;left:0;top:0;width:100%;height:auto;" +
     "image-rendering:pixelated}" +
-    ".glint-compare-tools,.glint-compare-choices{font-size:.75rem;margin:.3em 0}";
+    ".glint-compare-tools,.glint-compare-choices{font-size:.75rem;margin:.3em 0}" +
+    ".glint-edit{max-width:640px;margin:.5em 0 1em}" +
+    ".glint-edit-editor{border:1px solid var(--md-default-fg-color--lightest,#ccc);" +
+    "font-size:.7rem;max-height:24em;overflow:auto}" +
+    ".glint-edit-tools{display:flex;flex-wrap:wrap;gap:.5em;align-items:center;margin-top:.4em}" +
+    ".glint-edit-tools .md-button{font-size:.7rem;padding:.2em .8em}" +
+    ".glint-edit-status{font-size:.7rem}" +
+    // CodeMirror's own theme is light: its gutter and active line, dark under Material's slate
+    "[data-md-color-scheme=slate] .glint-edit .cm-gutters{background:#2b2d3a;color:#9a9cae;" +
+    "border-color:#3c3f52}" +
+    "[data-md-color-scheme=slate] .glint-edit .cm-activeLine{background:#ffffff0d}" +
+    "[data-md-color-scheme=slate] .glint-edit .cm-activeLineGutter{background:#ffffff1a}" +
+    "[data-md-color-scheme=slate] .glint-edit .cm-cursor{border-left-color:#e0e0e0}";
 
   var MAX_CONTEXTS = 8; // well under Chrome's ~16, which other pages' canvases share
   var instances = [];
@@ -205,7 +223,9 @@
     this.contextLost = false; // parked by the budget, or taken by the browser: comes back
     this.visible = false;
     this.seen = 0; // when it last scrolled into view (clock)
-    this.text = null; // the shader, kept to compile again when a lost context comes back
+    this.source = null; // the shader as fetched
+    this.patch = null; // an edit: { original, replacement } (setupEdit)
+    this.text = null; // the shader that runs (the source, edited), kept for a lost context
     this.compiled = null; // the text of the program that runs
     this.lose = null; // the WEBGL_lose_context extension: park and restore
   }
@@ -261,12 +281,32 @@
       .then(function (text) {
         // a later choice may have been made while this one loaded: only the last one counts
         if (self.released || self.canvas.dataset.shader !== path) return;
-        self.text = text;
-        if (!self.contextLost) self.compile(text);
+        self.source = text;
+        self.text = self.patched(text);
+        if (!self.contextLost) self.compile(self.text);
       })
       .catch(function (error) {
         self.fail(String(error.message || error));
       });
+  };
+
+  // The source with the edit in place of the code it replaces (unchanged without one).
+  Live.prototype.patched = function (text) {
+    var at = this.patch ? text.indexOf(this.patch.original) : -1;
+    if (at < 0) return text;
+    var end = at + this.patch.original.length;
+    return text.slice(0, at) + this.patch.replacement + text.slice(end);
+  };
+
+  // An edit of the code `original` in the shader: compile it, keeping time, sliders and play.
+  Live.prototype.edit = function (original, replacement) {
+    this.patch = { original: original, replacement: replacement };
+    if (this.source === null) return; // not loaded yet: load() applies it
+    this.text = this.patched(this.source);
+    if (this.contextLost || !this.started) return;
+    var playing = this.playing;
+    this.compile(this.text, true);
+    if (playing && this.program) this.setPlaying(true);
   };
 
   // A selector's choice: another shader on the same canvas, at the same time and mouse.
@@ -281,7 +321,9 @@
     this.canvas.dataset.state = "error";
   };
 
-  Live.prototype.compile = function (text) {
+  // Compile `text` in place of the program before it; `keep` (an edit) keeps the sliders'
+  // values, as does compiling the same text again (a context given back).
+  Live.prototype.compile = function (text, keep) {
     var gl = this.canvas.getContext("webgl2", {
       alpha: false, // ShaderToy ignores alpha; a page must not blend the picture with its own
       antialias: false,
@@ -291,7 +333,7 @@
     this.gl = gl;
     this.lose = this.lose || gl.getExtension("WEBGL_lose_context");
     // the same shader again (a context given back): its sliders keep where the reader left them
-    var kept = text === this.compiled ? this.values : {};
+    var kept = keep || text === this.compiled ? this.values : {};
     this.reset();
     var complete = /^\s*#version/.test(text);
     var source = complete ? text : PRELUDE + text + EPILOGUE;
@@ -306,7 +348,10 @@
     gl.deleteShader(vertex); // the program keeps what it needs
     gl.deleteShader(fragment);
     if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
-      return this.fail("link failed:\n" + gl.getProgramInfoLog(program));
+      var linkLog = "link failed:\n" + gl.getProgramInfoLog(program);
+      this.compiled = null;
+      if (this.onCompile) this.onCompile([{ line: 0, message: linkLog }]);
+      return this.fail(linkLog);
     }
     this.program = program;
     this.params = manifest(text);
@@ -315,6 +360,7 @@
       this.values[name] = name in kept ? kept[name] : this.params[i].default;
     }
     this.compiled = text;
+    if (this.onCompile) this.onCompile([]);
     this.buildControls();
     this.canvas.dataset.state = "ready";
     if (this.leader && this.leader.program) this.follow(this.leader);
@@ -340,12 +386,28 @@
     gl.compileShader(shader);
     if (gl.getShaderParameter(shader, gl.COMPILE_STATUS)) return shader;
     var log = String(gl.getShaderInfoLog(shader) || "compile failed");
+    if (this.onCompile) this.onCompile(compileErrors(log));
+    this.compiled = null;
     log = log.replace(/(ERROR: \d+:)(\d+)/g, function (all, head, line) {
       return head + Math.max(Number(line) - offset, 1);
     });
     this.fail(log);
     return null;
   };
+
+  // A compiler's log as [{ line, message }], at the lines of the source it compiled (0: none).
+  function compileErrors(log) {
+    var errors = [];
+    log.split("\n").forEach(function (entry) {
+      var found = /^(?:ERROR|WARNING): \d+:(\d+): (.*)$/.exec(entry.trim());
+      if (found && /^ERROR/.test(entry.trim())) {
+        errors.push({ line: Number(found[1]), message: found[2] });
+      } else if (!found && entry.trim() && !errors.length) {
+        errors.push({ line: 0, message: entry.trim() });
+      }
+    });
+    return errors.length ? errors : [{ line: 0, message: log }];
+  }
 
   Live.prototype.buildControls = function () {
     var self = this;
@@ -547,6 +609,106 @@
       else live.start();
     });
     Array.prototype.forEach.call(document.querySelectorAll(".glint-compare"), setupCompare);
+    Array.prototype.forEach.call(document.querySelectorAll(".glint-edit"), setupEdit);
+  }
+
+  // The editor's script, loaded once and only for a page with an editor.
+  var editorLoading = null;
+  function loadEditor() {
+    if (window.glintEditor) return Promise.resolve(window.glintEditor);
+    if (!editorLoading) {
+      editorLoading = new Promise(function (resolve, reject) {
+        var script = element("script");
+        script.src = new URL("assets/glint-editor.js", ROOT).href;
+        script.onload = function () {
+          if (window.glintEditor) resolve(window.glintEditor);
+          else reject(new Error("the editor's script defines no editor"));
+        };
+        script.onerror = function () {
+          editorLoading = null; // another page may try again
+          reject(new Error("the editor's script did not load"));
+        };
+        document.head.appendChild(script);
+      });
+    }
+    return editorLoading;
+  }
+
+  // A variant's code, editable (see the top of this file).
+  function setupEdit(box) {
+    if (box.glintEdit) return;
+    var canvases = document.querySelectorAll("canvas.glint-live-canvas[data-shader]");
+    var canvas = Array.prototype.find.call(canvases, function (c) {
+      return c.dataset.shader === box.dataset.shader;
+    });
+    if (!canvas || !canvas.glintLive) return;
+    box.glintEdit = true;
+    var live = canvas.glintLive;
+    var pre = box.querySelector(".glint-edit-code");
+    var original = pre.textContent;
+    var status = box.querySelector(".glint-edit-status");
+    var editor = null;
+
+    // Where the code starts in the shader (1-based line), to put an error at the editor's line.
+    function firstLine() {
+      var at = live.source === null ? -1 : live.source.indexOf(original);
+      return at < 0 ? 1 : live.source.slice(0, at).split("\n").length;
+    }
+    live.onCompile = function (errors) {
+      if (!editor || !live.patch) return;
+      var first = firstLine();
+      var lines = editor.text().split("\n").length;
+      var mine = [];
+      var elsewhere = [];
+      errors.forEach(function (error) {
+        var line = error.line - first + 1;
+        if (error.line > 0 && line >= 1 && line <= lines) {
+          mine.push({ line: line, message: error.message });
+        } else {
+          elsewhere.push(error.message + (error.line > 0 ? " (shader line " + error.line + ")" : ""));
+        }
+      });
+      editor.showErrors(mine);
+      box.dataset.state = errors.length ? "error" : "compiled";
+      if (!errors.length) status.textContent = "compiled";
+      else if (mine.length) status.textContent = "error at line " + mine[0].line + ": " + mine[0].message;
+      else status.textContent = "error: " + elsewhere[0];
+    };
+
+    loadEditor()
+      .then(function (api) {
+        var host = element("div", "glint-edit-editor");
+        editor = api.create(host, original, function (text) {
+          live.edit(original, text);
+        });
+        pre.replaceWith(host);
+        box.dataset.state = "ready";
+      })
+      .catch(function (error) {
+        status.textContent = String(error.message || error) + ": the code is read-only";
+      });
+
+    box.querySelector(".glint-edit-reset").addEventListener("click", function () {
+      if (editor) editor.setText(original);
+    });
+    box.querySelector(".glint-edit-copy").addEventListener("click", function () {
+      fetch(new URL(box.dataset.shadertoy, ROOT))
+        .then(function (response) {
+          if (!response.ok) throw new Error("cannot load the shader: HTTP " + response.status);
+          return response.text();
+        })
+        .then(function (text) {
+          var at = text.indexOf(original);
+          var code = editor ? editor.text() : original;
+          if (at >= 0) text = text.slice(0, at) + code + text.slice(at + original.length);
+          return navigator.clipboard.writeText(text).then(function () {
+            status.textContent = "copied: the ShaderToy shader with your edit";
+          });
+        })
+        .catch(function (error) {
+          status.textContent = "copy failed: " + String(error.message || error);
+        });
+    });
   }
 
   // The A/B comparison (see the top of this file).

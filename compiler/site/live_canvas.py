@@ -23,6 +23,9 @@ from .pictures import TIME, Picture
 
 LIVE_DIR = PurePosixPath("img") / "live"
 SCRIPT = PurePosixPath("assets") / "live-canvas.js"  # mkdocs.yml lists it in extra_javascript
+# CodeMirror, bundled from npm by `make editor` (site/editor); live-canvas.js loads it only on a
+# page with an editor.
+EDITOR_SCRIPT = PurePosixPath("assets") / "glint-editor.js"
 DEFAULT_SHADER = LIVE_DIR / "default.glsl"
 VARIANT_SIZE = (384, 216)  # twice the picture's: small enough for a software rasteriser
 HOME_SIZE = (640, 360)
@@ -30,6 +33,11 @@ HOME_SIZE = (640, 360)
 
 def live_path(snippet_id: str) -> PurePosixPath:
     return LIVE_DIR / f"{snippet_id}.glsl"
+
+
+def shadertoy_path(snippet_id: str) -> PurePosixPath:
+    """The picture's ShaderToy shader, which "Copy as ShaderToy" fetches and edits."""
+    return LIVE_DIR / f"{snippet_id}.shadertoy.glsl"
 
 
 def canvas_html(
@@ -81,6 +89,32 @@ def live_section(snippet_id: str, picture: Picture | None) -> str:
         "`iMouse`, or move a parameter's slider.\n\n"
         + canvas_html(live_path(snippet_id), VARIANT_SIZE, f"{snippet_id}, live")
         + "\n"
+        + edit_html(snippet_id, picture.code)
+    )
+
+
+def edit_html(snippet_id: str, code: str) -> str:
+    """The variant's code in an editor under its canvas (CodeMirror, loaded by live-canvas.js
+    only on a page that has one): an edit recompiles the canvas's shader with the code in the
+    variant's place, a compile error shows at its line in the editor, and "Copy as ShaderToy"
+    copies the picture's ShaderToy shader with the edit. Without the editor's script the code
+    stays a read-only block. "" where the variant's code has no single place in its shaders."""
+    if not code:
+        return ""
+    # line breaks as character references: a <pre> shows them, and no blank line ends the block
+    lines = html_text(code)
+    shader = html_attr(live_path(snippet_id).as_posix())
+    return (
+        "Edit the code and the canvas recompiles with it (a compile error shows at its line); "
+        "**Copy as ShaderToy** copies the whole shader with your edit, ready for ShaderToy's "
+        "Image tab.\n\n"
+        f'<div class="glint-edit" data-search-exclude data-shader="{shader}" '
+        f'data-shadertoy="{html_attr(shadertoy_path(snippet_id).as_posix())}">'
+        f'<pre class="glint-edit-code"><code>{lines}</code></pre>'
+        '<div class="glint-edit-tools">'
+        '<button type="button" class="md-button glint-edit-copy">Copy as ShaderToy</button> '
+        '<button type="button" class="md-button glint-edit-reset">Reset</button> '
+        '<span class="glint-edit-status" role="status"></span></div></div>\n\n'
     )
 
 
@@ -151,8 +185,11 @@ def home_canvas() -> str:
     return canvas_html(DEFAULT_SHADER, HOME_SIZE, "the default scene, live")
 
 
-def live_files(pictures: Mapping[str, Picture] | None = None) -> dict[PurePosixPath, bytes]:
-    """The script, the default scene's live shader and each picture's, by path in the docs
+def live_files(
+    pictures: Mapping[str, Picture] | None = None, editor: bytes | None = None
+) -> dict[PurePosixPath, bytes]:
+    """The script, the default scene's live shader and each picture's (with its ShaderToy
+    shader where the page edits it), and the editor's bundle when given, by path in the docs
     folder."""
     package = resources.files("glint.compiler.site")
     default = glint.compose(target="webgl2", params_as_uniforms=True).text
@@ -160,7 +197,11 @@ def live_files(pictures: Mapping[str, Picture] | None = None) -> dict[PurePosixP
         SCRIPT: (package / "live-canvas.js").read_bytes(),
         DEFAULT_SHADER: default.encode("utf-8"),
     }
+    if editor is not None:
+        files[EDITOR_SCRIPT] = editor
     for snippet_id, picture in (pictures or {}).items():
         if picture.live:
             files[live_path(snippet_id)] = picture.live.encode("utf-8")
+        if picture.code:
+            files[shadertoy_path(snippet_id)] = picture.shader.encode("utf-8")
     return files

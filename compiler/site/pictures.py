@@ -50,6 +50,7 @@ class Picture:
     shader: str = ""  # the composed shader the picture shows (ShaderToy Image-tab code)
     live: str = ""  # the same composition for the live canvas (webgl2, parameters as uniforms)
     own_scene: bool = False  # a small scene made for a library snippet (card_scenes.py)
+    code: str = ""  # the variant's own code as both shaders hold it once: what a reader edits
 
     @property
     def scene(self) -> str:
@@ -172,9 +173,20 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         shader=shader.text,
         live=live,
         own_scene=_library(slot),
+        code=editable_code(shader, snippet_id, live),
     )
     result.files[picture_path(snippet_id)] = png
     return picture
+
+
+def editable_code(shader: glint.Shader, snippet_id: str, live: str) -> str:
+    """The variant's code as the picture's shader and its live shader each hold it exactly once,
+    so that the page's editor can put an edit in its place in both; "" where it cannot (the
+    code absent, or found twice)."""
+    body = next((unit.body for unit in shader.units if unit.id == snippet_id), "")
+    if body.strip() and shader.text.count(body) == 1 and live.count(body) == 1:
+        return body
+    return ""
 
 
 def render_cached(
