@@ -23,7 +23,7 @@ needs_glslang = pytest.mark.skipif(
 
 
 def _uniform_names(text: str) -> list[str]:
-    return re.findall(r"^uniform (?:float|int) ([A-Z_][A-Z0-9_]*);$", text, re.M)
+    return re.findall(r"^uniform (?:float|int|vec3) ([A-Z_][A-Z0-9_]*);$", text, re.M)
 
 
 def test_ranged_parameters_become_uniforms_listed_in_the_manifest() -> None:
@@ -40,7 +40,8 @@ def test_ranged_parameters_become_uniforms_listed_in_the_manifest() -> None:
     assert isinstance(by_name["MARCH_STEPS"].default, int)
     for param in manifest:
         assert f"#define {param.name} " not in shader.text
-        assert param.min <= param.default <= param.max
+        values = param.default if isinstance(param.default, list) else [param.default]
+        assert all(param.min <= value <= param.max for value in values)
     # parameters with no range stay #defines (a slider needs bounds)
     assert "#define CAMERA_HEIGHT 1.5" in shader.text
 
@@ -140,8 +141,9 @@ def test_cli_writes_a_shader_that_validates(tmp_path: Path) -> None:
 
 
 def test_the_scenes_lights_materials_and_exposure_are_knobs_too() -> None:
-    """Issue 27: a page sets a light's intensity, a material's roughness and metallic and the
-    exposure live; ShaderToy code names the same values as #defines a reader can change."""
+    """Issue 27: a page sets a light's intensity and direction, a material's albedo, roughness
+    and metallic, the dielectric F0 and the exposure live; ShaderToy code names the same values
+    as #defines a reader can change."""
     scene = Path(__file__).parents[1] / "snippets" / "scenes" / "metal_spheres.toml"
     shader = compose(scene, target="webgl2", params_as_uniforms=True)
     by_name = {p.name: p for p in read_manifest(shader.text)}
@@ -152,9 +154,18 @@ def test_the_scenes_lights_materials_and_exposure_are_knobs_too() -> None:
     sun = by_name["SUN_INTENSITY"]
     assert sun.default == 3.0 and sun.min > 0 and sun.max / sun.min >= 100  # a log slider
     assert by_name["EXPOSURE"].default == 1.0
+    albedo = by_name["MAT_COPPER_ALBEDO"]
+    assert (albedo.type, albedo.control, albedo.default) == ("vec3", "color", [0.95, 0.64, 0.54])
+    direction = by_name["SUN_DIR"]
+    assert (direction.type, direction.control) == ("vec3", "direction")
+    assert abs(sum(c * c for c in direction.default) - 1.0) < 1e-5  # a unit vector
+    f0 = by_name["DIELECTRIC_F0"]
+    assert (f0.default, f0.min) == (0.04, 0.0) and f0.max >= 0.17  # up to diamond's
     toy = compose(scene).text
     assert "#define SUN_INTENSITY 3.0" in toy and "#define EXPOSURE 1.0" in toy
-    assert "makeSurface(P, N, V, vec3(0.95, 0.64, 0.54), MAT_COPPER_ROUGHNESS)" in toy
+    assert "#define MAT_COPPER_ALBEDO vec3(0.95, 0.64, 0.54)" in toy
+    assert "makeSurface(P, N, V, MAT_COPPER_ALBEDO, MAT_COPPER_ROUGHNESS)" in toy
+    assert "#define SUN_DIR normalize(vec3(" in toy and "#define DIELECTRIC_F0 0.04" in toy
 
 
 @pytest.mark.render

@@ -16,7 +16,7 @@ import io
 import os
 import subprocess
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -103,7 +103,9 @@ def _with_defaults(text: str) -> str:
     what the canvas computes before a slider moves."""
     for param in read_manifest(text):
         declaration = f"uniform {param.type} {param.name};"
-        text = text.replace(declaration, f"#define {param.name} {param.default!r}")
+        value = param.default
+        literal = f"vec3({', '.join(map(repr, value))})" if isinstance(value, list) else repr(value)
+        text = text.replace(declaration, f"#define {param.name} {literal}")
     return text
 
 
@@ -184,8 +186,9 @@ def test_a_parameter_slider_changes_the_picture(
 def test_material_and_light_controls_change_the_picture_as_they_should(
     live_site: LiveSite, browser_page: tuple[Page, PageLog]
 ) -> None:
-    """Exposure brightens; a light's intensity brightens where it lights; a material's
-    roughness changes its spheres' highlights (the D slot's roughness-sweep preview)."""
+    """Exposure brightens; a material's roughness changes its sphere's highlights, its albedo
+    its colour; a higher dielectric F0 brightens the dielectrics' reflections; the key light
+    turned below the horizon darkens the picture (the D slot's roughness-sweep preview)."""
     page, log = browser_page
     page.goto(live_site.url + "catalog/D.ggx/")
     _drawn(page)
@@ -212,6 +215,50 @@ def test_material_and_light_controls_change_the_picture_as_they_should(
     rough = typed("MAT_DIELECTRIC0_ROUGHNESS", 0.9)  # the near-mirror sphere turned rough
     changed = np.abs(rough - before).max(axis=-1) > 3 / 255
     assert 0.002 < changed.mean() < 0.2  # that one sphere, not the whole picture
+    typed("MAT_DIELECTRIC0_ROUGHNESS", 0.05)
+
+    def redrawn(action: Callable[[], None]) -> np.ndarray:
+        frames = int(page.get_attribute("canvas.glint-live-canvas", "data-frames") or "0")
+        action()
+        page.wait_for_function(
+            "n => Number(document.querySelector('canvas.glint-live-canvas').dataset.frames) > n",
+            arg=frames,
+        )
+        return _pixels(page)
+
+    # the albedo by its colour picker (sRGB): the sphere it colours turns blue, nothing else
+    before = _pixels(page)
+    blue = redrawn(
+        lambda: page.locator("input[data-param='MAT_DIELECTRIC2_ALBEDO']").fill("#0000ff")
+    )
+    changed = np.abs(blue - before).max(axis=-1) > 3 / 255
+    assert 0.002 < changed.mean() < 0.2
+    bluer = (blue[..., 2] - blue[..., 0]) - (before[..., 2] - before[..., 0])
+    assert bluer[changed].mean() > 0.1
+    # F0 from 0.04 to 0.17 (diamond): the dielectrics (the upper row) reflect more, the metals
+    # (their F0 is their albedo) do not change
+    shiny = typed("DIELECTRIC_F0", 0.17)
+    changed = np.abs(shiny - blue).max(axis=-1) > 3 / 255
+    half = changed.shape[0] // 2
+    assert changed[:half].mean() > 0.02 and changed[half:].mean() < changed[:half].mean() / 5
+    assert (shiny - blue)[changed].mean() > 0.02
+    typed("DIELECTRIC_F0", 0.04)
+    # the key light's elevation: lit from above, the spheres are brighter at their tops; lit
+    # from below, at their bottoms (rows count down the picture)
+    elevation = "input[data-param='SUN_DIR'][data-component='elevation']"
+    assert page.locator(elevation).count() == 1
+
+    def lit_at(degrees: int) -> np.ndarray:
+        script = f"el => {{ el.value = '{degrees}'; el.dispatchEvent(new Event('input')); }}"
+        return redrawn(lambda: page.eval_on_selector(elevation, script)).mean(axis=-1)
+
+    difference = lit_at(85) - lit_at(-85)
+    rows = np.arange(difference.shape[0])[:, None]
+    above, below = np.clip(difference, 0, None), np.clip(-difference, 0, None)
+    assert above.sum() > 1 and below.sum() > 1
+    centre_above = (above * rows).sum() / above.sum()
+    centre_below = (below * rows).sum() / below.sum()
+    assert centre_above < centre_below - 5, (centre_above, centre_below)
     _no_problems(log)
 
 

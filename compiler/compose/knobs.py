@@ -9,13 +9,17 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class UniformParam:
-    """One manifest entry: a parameter the page sets through a uniform."""
+    """One manifest entry: a parameter the page sets through a uniform. A vec3 (the scene's
+    colours and light directions) has three defaults, bounds that hold for each component, and
+    the control that sets it: "color" (a colour picker, linear RGB) or "direction" (azimuth and
+    elevation, a unit vector)."""
 
     name: str
-    type: str  # "float" or "int"
-    default: float | int
+    type: str  # "float", "int" or "vec3"
+    default: float | int | list[float]
     min: float | int
     max: float | int
+    control: str = ""  # for a vec3: "color" or "direction"
 
     def declaration(self) -> str:
         return f"uniform {self.type} {self.name};"

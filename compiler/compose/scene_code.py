@@ -5,6 +5,7 @@ scene-specific glue, and it calls slots only through their entry functions.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -98,7 +99,7 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     knobs[EXPOSURE] = exposure_knob(scene)
     defines = dict(lights.defines)  # the lights' knobs are there already, within expressions
     for knob in knobs.values():
-        defines.setdefault(knob.name, glsl_float(knob.default))
+        defines.setdefault(knob.name, glsl_value(knob.default, knob.type))
     return SceneCode(defines=defines, units=units, knobs=knobs)
 
 
@@ -151,6 +152,7 @@ def light_code(scene: Scene) -> LightCode:
             ident = name("SUN") if "SUN" not in counts else name("LIGHT")
             directional.append(ident)
             defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
+            knobs[f"{ident}_DIR"] = _direction_knob(f"{ident}_DIR", light.direction)
             colour(ident, light.color, light.intensity)
             visibility = "vec3(1.0)"
             if light.shadow:
@@ -209,6 +211,14 @@ def _intensity_knob(name: str, value: float) -> UniformParam:
     return UniformParam(name, "float", value, low, max(100.0, value))
 
 
+def _direction_knob(name: str, direction: list[float]) -> UniformParam:
+    """A directional light's direction (toward the light) as a knob: a unit vector the page
+    sets by azimuth and elevation."""
+    length = math.sqrt(sum(c * c for c in direction))
+    unit = [round(c / length, 6) for c in direction]
+    return UniformParam(name, "vec3", unit, -1.0, 1.0, control="direction")
+
+
 EXPOSURE = "EXPOSURE"
 
 
@@ -221,8 +231,9 @@ def exposure_knob(scene: Scene) -> UniformParam:
 
 
 def material_values(scene: Scene, materials: list[str]) -> dict[str, list[UniformParam]]:
-    """Per material, its roughness and (for a metal) metallic as named constants
-    (MAT_<NAME>_ROUGHNESS, MAT_<NAME>_METALLIC) in [0, 1]: knobs a page can turn."""
+    """Per material, its albedo, roughness and (for a metal) metallic as named constants
+    (MAT_<NAME>_ALBEDO, a linear RGB colour; MAT_<NAME>_ROUGHNESS, MAT_<NAME>_METALLIC in
+    [0, 1]): knobs a page can turn."""
 
     out: dict[str, list[UniformParam]] = {}
     taken: set[str] = set()
@@ -232,7 +243,11 @@ def material_values(scene: Scene, materials: list[str]) -> dict[str, list[Unifor
         if ident in taken:  # two names that read the same in capitals
             ident += f"_{len(taken)}"
         taken.add(ident)
-        knobs = [UniformParam(f"{ident}_ROUGHNESS", "float", material.roughness, 0.0, 1.0)]
+        albedo = [float(c) for c in material.albedo]
+        knobs = [
+            UniformParam(f"{ident}_ALBEDO", "vec3", albedo, 0.0, 1.0, control="color"),
+            UniformParam(f"{ident}_ROUGHNESS", "float", material.roughness, 0.0, 1.0),
+        ]
         if material.metallic > 0.0:
             knobs.append(UniformParam(f"{ident}_METALLIC", "float", material.metallic, 0.0, 1.0))
         out[name] = knobs
@@ -330,12 +345,14 @@ def _geometry_material_function(scene: Scene, materials: list[str]) -> list[str]
     return [*lines, f"    return {pairs[0][1]};", "}", ""]
 
 
-def _albedo(material: Material) -> tuple[str, list[str]]:
+def _albedo(material: Material, named: str | None = None) -> tuple[str, list[str]]:
+    """The material's albedo as an expression (`named`: the constant that holds its colour)
+    and what it requires."""
+    base = named or _vec3(material.albedo)
     if material.pattern == "checker":
         assert material.pattern_albedo is not None  # the scene model checks this
-        mixed = f"mix({_vec3(material.albedo)}, {_vec3(material.pattern_albedo)}, checker(P))"
-        return mixed, ["checker"]
-    return _vec3(material.albedo), []
+        return f"mix({base}, {_vec3(material.pattern_albedo)}, checker(P))", ["checker"]
+    return base, []
 
 
 def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
@@ -363,12 +380,12 @@ def surface_unit(
     procedural = _procedural_albedo_ids(scene) if albedo_by_user else {}
     for name in materials:
         material = scene.materials[name]
-        albedo, needs = _albedo(material)
+        named = {k.name.rsplit("_", 1)[1]: k.name for k in (values or {}).get(name, [])}
+        albedo, needs = _albedo(material, named.get("ALBEDO"))
         requires += needs
         if name in procedural:  # the user's sceneAlbedo makes it from the material's own
             albedo = f"{ALBEDO}(P, {procedural[name]}, {albedo})"
             requires.append(ALBEDO)
-        named = {k.name.rsplit("_", 1)[1]: k.name for k in (values or {}).get(name, [])}
         body, extra = _material_body(material, albedo, named)
         requires += extra
         bodies.append(body)

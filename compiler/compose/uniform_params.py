@@ -14,6 +14,10 @@ the parameter block:
     /* glint-params
     [{"name": "AO_STRENGTH", "type": "float", "default": 3.0, "min": 0.0, "max": 10.0}]
     */
+
+The scene's own values join them (scene_code.py): light intensities and directions, material
+albedos, roughness and metallic, exposure; a vec3 entry names its control ("color" or
+"direction").
 """
 
 from __future__ import annotations
@@ -80,7 +84,8 @@ def as_uniforms(block: str, params: Collection[UniformParam]) -> str:
 def manifest_comment(params: Collection[UniformParam]) -> str:
     """The JSON block the page reads its sliders from (ASCII, one line, so that glslang and
     every browser take it as an ordinary comment)."""
-    data = json.dumps([asdict(p) for p in params], ensure_ascii=True)
+    entries = [{k: v for k, v in asdict(p).items() if k != "control" or v} for p in params]
+    data = json.dumps(entries, ensure_ascii=True)
     return f"{MANIFEST_OPEN}\n{data}\n{MANIFEST_CLOSE}\n"
 
 

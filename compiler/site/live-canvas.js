@@ -6,9 +6,11 @@
 // shader as `glint compose --target webgl2` writes it, or ShaderToy Image-tab code, which it
 // wraps in ShaderToy's uniforms and a main), and draws one frame at data-time. Play runs the
 // clock; the time slider scrubs it; a mouse drag sets iMouse as ShaderToy does; each parameter
-// of the shader's /* glint-params */ manifest gets a slider that sets its uniform. A
-// <select class="glint-live-choice"> beside the canvas swaps its shader for the chosen one
-// (a slot's variants). Compile errors appear in a <pre> under the canvas.
+// of the shader's /* glint-params */ manifest gets a slider that sets its uniform; a vec3 gets
+// a colour picker ("color": linear RGB, shown as sRGB) or azimuth and elevation sliders
+// ("direction": a unit vector). A <select class="glint-live-choice"> beside the canvas swaps
+// its shader for the chosen one (a slot's variants). Compile errors appear in a <pre> under
+// the canvas.
 //
 // Chrome keeps only about 16 WebGL contexts alive at once and drops the oldest beyond that, so
 // a page of many canvases manages its own: a canvas starts when scrolled into view; when more
@@ -73,8 +75,10 @@
   var STYLE =
     ".glint-live canvas{display:block;width:100%;max-width:640px;height:auto;cursor:grab;" +
     "touch-action:none}" + // a drag sets iMouse rather than scrolling the page
-    ".glint-live-controls{display:flex;flex-wrap:wrap;gap:.25em 1em;align-items:center;" +
-    "max-width:640px;font-size:.7rem}" +
+    // the controls in columns as wide as a slider row needs: two on a wide page, one on a phone
+    ".glint-live-controls{display:grid;grid-template-columns:repeat(auto-fill,minmax(22em,1fr));" +
+    "gap:.25em 1.5em;align-items:center;max-width:920px;font-size:.7rem}" +
+    ".glint-live-play{justify-self:start}" +
     // a row wraps on a narrow screen: the name above, the slider taking what is left
     ".glint-live-slider{display:flex;flex-wrap:wrap;align-items:center;gap:.25em .5em;" +
     "max-width:100%}" +
@@ -424,6 +428,12 @@
     });
     this.controls.appendChild(this.timeSlider.row);
     this.params.forEach(function (param) {
+      if (param.control === "color") return self.controls.appendChild(self.colorControl(param));
+      if (param.control === "direction") {
+        return self.directionControls(param).forEach(function (row) {
+          self.controls.appendChild(row);
+        });
+      }
       var isInt = param.type === "int";
       var step = isInt ? 1 : (param.max - param.min) / 200;
       var value = self.values[param.name];
@@ -436,6 +446,98 @@
       self.controls.appendChild(control.row);
     });
   };
+
+  // A linear RGB colour (a material's albedo) by a colour picker, which shows sRGB: the swatch
+  // is the colour the reader sees, the uniform its linear value.
+  Live.prototype.colorControl = function (param) {
+    var self = this;
+    var row = element("span", "glint-live-slider");
+    var picker = element("input");
+    picker.type = "color";
+    picker.value = hexOfLinear(this.values[param.name]);
+    picker.dataset.param = param.name;
+    picker.setAttribute("aria-label", param.name);
+    var reset = element("button", "glint-live-reset", "\u21ba");
+    reset.type = "button";
+    reset.title = "reset " + param.name;
+    reset.setAttribute("aria-label", "reset " + param.name);
+    function set(linear) {
+      self.values[param.name] = linear;
+      if (!self.playing) self.draw();
+    }
+    picker.addEventListener("input", function () {
+      set(linearOfHex(picker.value));
+    });
+    reset.addEventListener("click", function () {
+      picker.value = hexOfLinear(param.default);
+      set(param.default.slice());
+    });
+    row.appendChild(element("span", "glint-live-name", param.name));
+    row.appendChild(picker);
+    row.appendChild(reset);
+    return row;
+  };
+
+  // A unit vector toward a light by two sliders, azimuth around y and elevation above the
+  // horizontal plane, in degrees (y is up in glint's scenes).
+  Live.prototype.directionControls = function (param) {
+    var self = this;
+    var angles = anglesOf(this.values[param.name]);
+    var first = anglesOf(param.default);
+    function set() {
+      self.values[param.name] = directionOf(angles[0], angles[1]);
+      if (!self.playing) self.draw();
+    }
+    var azimuth = slider(param.name + " azimuth", -180, 180, 1, angles[0], function (v) {
+      angles[0] = v;
+      set();
+    }, first[0]);
+    var elevation = slider(param.name + " elevation", -90, 90, 1, angles[1], function (v) {
+      angles[1] = v;
+      set();
+    }, first[1]);
+    azimuth.input.dataset.param = param.name;
+    azimuth.input.dataset.component = "azimuth";
+    elevation.input.dataset.param = param.name;
+    elevation.input.dataset.component = "elevation";
+    return [azimuth.row, elevation.row];
+  };
+
+  function srgbOfLinear(c) {
+    c = Math.min(1, Math.max(0, c));
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
+  }
+
+  function linearOfSrgb(c) {
+    return c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4);
+  }
+
+  function hexOfLinear(rgb) {
+    return "#" + rgb.map(function (c) {
+      return ("0" + Math.round(255 * srgbOfLinear(c)).toString(16)).slice(-2);
+    }).join("");
+  }
+
+  function linearOfHex(hex) {
+    return [1, 3, 5].map(function (i) {
+      return linearOfSrgb(parseInt(hex.slice(i, i + 2), 16) / 255);
+    });
+  }
+
+  var DEGREE = Math.PI / 180;
+
+  function anglesOf(v) {
+    var length = Math.hypot(v[0], v[1], v[2]) || 1;
+    var elevation = Math.asin(Math.max(-1, Math.min(1, v[1] / length))) / DEGREE;
+    var azimuth = Math.atan2(v[2], v[0]) / DEGREE;
+    return [Math.round(azimuth * 10) / 10, Math.round(elevation * 10) / 10];
+  }
+
+  function directionOf(azimuth, elevation) {
+    var a = azimuth * DEGREE;
+    var e = elevation * DEGREE;
+    return [Math.cos(e) * Math.cos(a), Math.sin(e), Math.cos(e) * Math.sin(a)];
+  }
 
   // ShaderToy's iMouse: xy the position while a button is down, zw where it went down; z and w
   // turn negative once it is released (pixels, origin at the bottom left).
@@ -523,6 +625,7 @@
       var param = this.params[i];
       var value = this.values[param.name];
       if (param.type === "int") gl.uniform1i(this.uniform(param.name), Math.round(value));
+      else if (param.type === "vec3") gl.uniform3fv(this.uniform(param.name), value);
       else gl.uniform1f(this.uniform(param.name), value);
     }
     gl.drawArrays(gl.TRIANGLES, 0, 3);

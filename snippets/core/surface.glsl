@@ -2,10 +2,13 @@
 id = "core.surface"
 slot = "core"
 summary = "Shading point and the dot products a BRDF term needs, computed once"
-provides = ["Surface", "Dots", "makeSurface", "lightDots", "MIN_NOV", "DIELECTRIC_F0"]
+provides = ["Surface", "Dots", "makeSurface", "lightDots", "MIN_NOV"]
 requires = []
+# Dielectric reflectance at normal incidence: 0.04 is IOR 1.5 (glass, most plastics); water
+# 0.02, gemstones up to about 0.17 (diamond).
+params = { DIELECTRIC_F0 = { type = "float", default = 0.04, range = [0.0, 0.17] } }
 sources = ["lighting-model skill, steps 1 and 8", "Filament PBR notes, 4.4 (parameterization)"]
-formula = '\mathbf{h} = \frac{\mathbf{v} + \mathbf{l}}{\|\mathbf{v} + \mathbf{l}\|}, \quad \alpha = \text{roughness}^2, \quad \mathbf{n} \cdot \mathbf{v} \to \max(\mathbf{n} \cdot \mathbf{v}, 10^{-4}), \quad \mathbf{n} \cdot \mathbf{l},\ \mathbf{n} \cdot \mathbf{h},\ \mathbf{v} \cdot \mathbf{h} \to \max(\cdot, 0), \quad F_0 = 0.04'
+formula = '\mathbf{h} = \frac{\mathbf{v} + \mathbf{l}}{\|\mathbf{v} + \mathbf{l}\|}, \quad \alpha = \text{roughness}^2, \quad \mathbf{n} \cdot \mathbf{v} \to \max(\mathbf{n} \cdot \mathbf{v}, 10^{-4}), \quad \mathbf{n} \cdot \mathbf{l},\ \mathbf{n} \cdot \mathbf{h},\ \mathbf{v} \cdot \mathbf{h} \to \max(\cdot, 0), \quad F_0 = \text{DIELECTRIC\_F0} = 0.04'
 --- */
 // Everything about the point being shaded. Vectors point away from the surface.
 struct Surface {
@@ -33,8 +36,6 @@ struct Dots {
 
 // Smallest NoV: at exactly 0 the Smith visibility divides 0 by 0 on silhouettes.
 #define MIN_NOV 1e-4
-// Dielectric reflectance at normal incidence (IOR 1.5).
-#define DIELECTRIC_F0 0.04
 
 // A dielectric; the core.metallic snippet turns it toward a metal where a material is one.
 Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness) {

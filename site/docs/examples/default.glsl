@@ -39,10 +39,13 @@
 #define BACK_DIR normalize(vec3(-SUN_DIR.x, 0.0, -SUN_DIR.z))
 #define BACK_INTENSITY 1.0
 #define BACK_COLOR (vec3(0.15, 0.1, 0.08) * BACK_INTENSITY)
+#define MAT_RED_ALBEDO vec3(0.8, 0.2, 0.2)
 #define MAT_RED_ROUGHNESS 0.35
+#define MAT_GROUND_ALBEDO vec3(0.3, 0.3, 0.3)
 #define MAT_GROUND_ROUGHNESS 0.8
 #define EXPOSURE 1.0
 // Parameters of the snippets below.
+#define DIELECTRIC_F0 0.04
 #define ENV_TOP vec3(0.5, 0.7, 1.0)
 #define ENV_BOTTOM vec3(0.8, 0.85, 0.9)
 #define CAMERA_RADIUS 3.0
@@ -57,7 +60,7 @@
 // source: snippets/core/constants.glsl:10
 #define PI 3.14159265359
 
-// source: snippets/core/surface.glsl:10
+// source: snippets/core/surface.glsl:13
 // Everything about the point being shaded. Vectors point away from the surface.
 struct Surface {
     vec3 P;             // position
@@ -84,8 +87,6 @@ struct Dots {
 
 // Smallest NoV: at exactly 0 the Smith visibility divides 0 by 0 on silhouettes.
 #define MIN_NOV 1e-4
-// Dielectric reflectance at normal incidence (IOR 1.5).
-#define DIELECTRIC_F0 0.04
 
 // A dielectric; the core.metallic snippet turns it toward a metal where a material is one.
 Surface makeSurface(vec3 P, vec3 N, vec3 V, vec3 albedo, float roughness) {
@@ -381,9 +382,9 @@ int materialAt(vec3 p) {
 Surface surfaceAt(vec3 P, vec3 N, vec3 V) {
     int id = materialAt(P);
     if (id == 1) {
-        return makeSurface(P, N, V, mix(vec3(0.3, 0.3, 0.3), vec3(0.6, 0.6, 0.6), checker(P)), MAT_GROUND_ROUGHNESS);
+        return makeSurface(P, N, V, mix(MAT_GROUND_ALBEDO, vec3(0.6, 0.6, 0.6), checker(P)), MAT_GROUND_ROUGHNESS);
     }
-    return makeSurface(P, N, V, vec3(0.8, 0.2, 0.2), MAT_RED_ROUGHNESS);
+    return makeSurface(P, N, V, MAT_RED_ALBEDO, MAT_RED_ROUGHNESS);
 }
 
 // source: <generated>:1
