@@ -157,9 +157,7 @@ def test_metallic_path_only_with_a_metallic_material() -> None:
     assert "applyMetallic(" not in plain.text and "s.f0, albedo" not in plain.text
     assert "core.metallic" in {u.id for u in metal.units}
     # the metallic is a named constant (a knob a page can turn), 0.7 here
-    metallic = re.search(
-        r"applyMetallic\(s, (MAT_\w+)_ALBEDO, (MAT_\w+_METALLIC)\);", metal.text
-    )
+    metallic = re.search(r"applyMetallic\(s, (MAT_\w+)_ALBEDO, (MAT_\w+_METALLIC)\);", metal.text)
     assert metallic is not None and f"#define {metallic.group(2)} 0.7\n" in metal.text
     assert f"#define {metallic.group(1)}_ALBEDO vec3(0.8, 0.2, 0.2)\n" in metal.text
 
