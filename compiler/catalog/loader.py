@@ -39,11 +39,15 @@ REQUIRED_KEYS = {"id", "slot", "summary", "provides", "requires", "sources"}
 # `distance`: for a signed-distance snippet, "exact" (the Euclidean distance) or "bound" (a lower
 # bound of it, zero on the surface: safe to march; an over-relaxing marcher must keep its
 # overlap test, as raymarch.relaxed does, and fails more steps on it).
-OPTIONAL_KEYS = {"params", "domain", "reference", "error_budget", "cost", "formula", "distance"}
+# `budget_why`: why `error_budget` is what it is (the error the model makes by design, what was
+# measured and on what), shown beside the budget on the variant's page.
+OPTIONAL_KEYS = {
+    "params", "domain", "reference", "error_budget", "budget_why", "cost", "formula", "distance"
+}  # fmt: skip
 DISTANCE_KINDS = ("exact", "bound")
 # A preset takes its code and its contract from its base; it may add sources of its own.
 PRESET_REQUIRED_KEYS = {"id", "slot", "summary", "preset_of", "params"}
-PRESET_OPTIONAL_KEYS = {"sources", "domain", "reference", "error_budget", "cost"}
+PRESET_OPTIONAL_KEYS = {"sources", "domain", "reference", "error_budget", "budget_why", "cost"}
 PARAM_TYPES = {"float", "int", "bool", "vec3"}
 
 
@@ -69,6 +73,7 @@ class Snippet:
     domain: dict[str, Any]
     reference: str
     error_budget: dict[str, float]  # bounds of the error against `reference`, e.g. max_abs
+    budget_why: str  # why the budget is what it is ("" where none is given)
     cost: str
     relpath: str  # e.g. "snippets/D/ggx.glsl": the file of the body, how errors name it
     body: str  # the GLSL after the front matter
@@ -158,6 +163,7 @@ def parse_snippet(text: str, relpath: str, bases: Mapping[str, Snippet] | None =
         domain=dict(meta.get("domain", {})),
         reference=meta.get("reference", ""),
         error_budget=dict(meta.get("error_budget", {})),
+        budget_why=str(meta.get("budget_why", "")),
         cost=meta.get("cost", ""),
         relpath=relpath,
         body=body,
@@ -216,6 +222,8 @@ def _preset(meta: dict[str, Any], body: str, relpath: str, bases: Mapping[str, S
         domain=dict(meta.get("domain", base.domain)),
         reference=meta.get("reference", base.reference),
         error_budget=dict(meta.get("error_budget", base.error_budget)),
+        # the base's reason goes with the base's budget, not with one the preset sets
+        budget_why=str(meta.get("budget_why", "" if "error_budget" in meta else base.budget_why)),
         cost=meta.get("cost", ""),
         preset_of=base.id,
         file=relpath,

@@ -21,7 +21,7 @@ import json
 import logging
 import math
 from collections.abc import Collection, Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path, PurePosixPath
 from typing import Any
 
@@ -35,7 +35,7 @@ from glint.compiler.catalog.loader import Snippet, load_catalog
 from glint.compiler.compose.snippet_evaluation import snippet_source
 from glint.compiler.evaluator.errors import UnsupportedError
 from glint.compiler.files import write_atomic
-from glint.compiler.markdown import md_code, md_text, path_url, safe_image, table
+from glint.compiler.markdown import md_code, md_prose, md_text, path_url, safe_image, table
 from glint.compiler.verify.precision import SIMPLE_TYPES, entry_params, precision_report
 from glint.compiler.verify.probes import run_probe
 
@@ -66,6 +66,7 @@ class Accuracy:
     precision: dict[str, dict[str, Any]] | None = None  # precision_report, where it runs
     plot: PurePosixPath | None = None  # under the docs folder
     plot_kind: str = ""  # "domain" (over a grid of its inputs) or "samples" (rays and points)
+    budget_why: str = ""  # the front matter's reason for the budget
 
 
 @dataclass
@@ -102,7 +103,11 @@ def variant_accuracy(
     build = AccuracyBuild()
     for snippet_id in ids:
         snippet = catalog.get(snippet_id)
-        accuracy = Accuracy(bench.variants.get(snippet_id), dict(snippet.error_budget))
+        accuracy = Accuracy(
+            bench.variants.get(snippet_id),
+            dict(snippet.error_budget),
+            budget_why=snippet.budget_why,
+        )
         if cache_dir is not None and (plots is None or snippet_id in plots):
             accuracy = _computed(snippet, accuracy, cache_dir, build)
         build.by_id[snippet_id] = accuracy
@@ -129,7 +134,7 @@ def _computed(
     if data["plot"] and picture.is_file():
         plot = PLOT_DIR / f"{snippet.id}.png"
         build.files[plot] = picture.read_bytes()
-    return Accuracy(accuracy.measured, accuracy.budget, data["precision"], plot, data["plot"])
+    return replace(accuracy, precision=data["precision"], plot=plot, plot_kind=data["plot"])
 
 
 def _cache_key(snippet: Snippet) -> str:
@@ -402,6 +407,8 @@ def accuracy_section(snippet_id: str, accuracy: Accuracy | None, machine: str) -
     row = accuracy.measured
     if row is not None:
         parts.append(_measured_table(row, accuracy.budget, machine))
+        if accuracy.budget and accuracy.budget_why:
+            parts.append(f"\nWhy the budget is what it is: {md_prose(accuracy.budget_why)}\n")
     if accuracy.plot is not None and accuracy.plot_kind == "samples":
         alt = f"{snippet_id}: its GLSL against the float64 reference, sample by sample, and "
         alt += "the spread of its errors"
