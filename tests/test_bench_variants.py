@@ -186,6 +186,14 @@ def test_summary_pools_passes_and_finds_the_worst_sample() -> None:
     # 0 and 1e-9 are not significant values to divide by: 0.3 / 0.5 is the largest left.
     assert summary.max_rel == pytest.approx(0.6)
     assert summarize([first], where[:1]).max_rel is None
+    # the RMS error over the reference's own RMS, the scalar reference counted per channel
+    reference_squares = [1.0, 0.0, 0.25, 0.25, 0.25, 1e-18, 1e-18, 1e-18]
+    expected = math.sqrt(np.mean(squares)) / math.sqrt(np.mean(reference_squares))
+    assert summary.rel_rms == pytest.approx(expected)
+    assert summarize([first], where[:1]).rel_rms is None
+    # the same error on values ten times larger is ten times smaller relatively
+    scaled = summarize([first], where[:1], [np.array([10.0, 10.0])])
+    assert scaled.rel_rms == pytest.approx(summarize([first], where[:1], [np.ones(2)]).rel_rms / 10)
 
 
 @pytest.mark.render
@@ -193,9 +201,14 @@ def test_timed_probe_gives_run_probe_values_over_the_full_grid() -> None:
     inputs = {"NoH": np.linspace(0.0, 1.0, 1000), "a": np.full(1000, 0.3)}
     timed = run_probe_timed("D.ggx", inputs, CATALOG, repeats=3)
     np.testing.assert_array_equal(timed.values, run_probe("D.ggx", inputs, CATALOG))
-    assert timed.pixels == 256 * 256 and len(timed.draw_times) == 3
+    assert timed.evaluations == 256 * 256 and len(timed.draw_times) == 3
     empty = run_empty_probe(1, repeats=2)
-    assert empty.pixels == timed.pixels and empty.median_draw() > 0.0
+    assert empty.evaluations == timed.evaluations and empty.median_draw() > 0.0
+    # many calls per pixel: the values are still one call's, the evaluations count every call
+    looped = run_probe_timed("D.ggx", inputs, CATALOG, repeats=3, calls=8)
+    np.testing.assert_array_equal(looped.values, timed.values)
+    assert looped.evaluations == 8 * 256 * 256
+    assert run_empty_probe(1, repeats=2, calls=8).evaluations == looped.evaluations
 
 
 @pytest.mark.render

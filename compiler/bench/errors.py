@@ -17,6 +17,9 @@ class ErrorSummary:
     max_rel: float | None  # None where not asked for, or where no reference value is significant
     worst_at: dict[str, float]  # coordinates of the sample with the largest error
     samples: int
+    # RMS error over the reference's own RMS: comparable between variants whose values differ in
+    # scale (a D of 1e4 at its peak beside a V under 1); None where `max_rel` is
+    rel_rms: float | None = None
 
 
 def abs_errors(gpu: np.ndarray, exact: np.ndarray) -> np.ndarray:
@@ -66,16 +69,32 @@ def summarize(
             break
         worst -= len(error)
     squares = np.concatenate([np.ravel(e) ** 2 for e in errors])
-    max_rel = None
+    max_rel = rel_rms = None
+    rms = float(np.sqrt(squares.mean()))
     if exact is not None:
         relative = np.concatenate(
             [relative_errors(e, x) for e, x in zip(errors, exact, strict=True)]
         )
         max_rel = float(relative.max()) if relative.size else None
+        scale = np.concatenate(
+            [np.ravel(_broadcast(x, e)) ** 2 for e, x in zip(errors, exact, strict=True)]
+        )
+        reference_rms = float(np.sqrt(scale.mean()))
+        rel_rms = rms / reference_rms if reference_rms > SIGNIFICANT else None
     return ErrorSummary(
         max_abs=float(pooled.max()),
-        rms=float(np.sqrt(squares.mean())),
+        rms=rms,
         max_rel=max_rel,
         worst_at=worst_at,
         samples=len(pooled),
+        rel_rms=rel_rms,
     )
+
+
+def _broadcast(exact: np.ndarray, error: np.ndarray) -> np.ndarray:
+    """The reference values in the shape of the errors (a scalar reference of an RGB result
+    holds for each channel)."""
+    exact = np.asarray(exact, np.float64)
+    if error.ndim == 2 and exact.ndim == 1:
+        exact = exact[:, None]
+    return np.broadcast_to(exact, error.shape)

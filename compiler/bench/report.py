@@ -40,7 +40,9 @@ def static_part(result: BenchResult) -> dict[str, Any]:
     """What does not depend on timing: errors and SPIR-V counts of the variants, FLIP and
     SPIR-V counts of the tiers. Two runs on one machine give the same."""
     variants = {
-        v.id: {k: getattr(v, k) for k in ("reference", "max_abs", "rms", "max_rel", "spirv")}
+        v.id: {
+            k: getattr(v, k) for k in ("reference", "max_abs", "rms", "rel_rms", "max_rel", "spirv")
+        }
         for v in result.variants
     }
     tiers = {
@@ -61,6 +63,7 @@ def measurements_json(result: BenchResult) -> str:
                 "slot": v.slot,
                 "reference": v.reference,
                 "rms": v.rms,
+                "rel_rms": v.rel_rms,
                 "max_abs": v.max_abs,
                 "spirv": v.spirv,
                 "gpu_ns": round(v.gpu_ns, 3),
@@ -144,13 +147,13 @@ def to_markdown(result: BenchResult) -> str:
                     "",
                     f"### {md_text(slot)}",
                     "",
-                    "| variant | reference | max abs | rms | max rel | worst at | SPIR-V | ns "
-                    "| front |",
-                    "|---|---|---|---|---|---|---|---|---|",
+                    "| variant | reference | max abs | rms | rms / reference's | max rel "
+                    "| worst at | SPIR-V | ns | front |",
+                    "|---|---|---|---|---|---|---|---|---|---|",
                 ]
             lines.append(
                 f"| {md_text(v.id)} | {md_text(v.reference or '–')} "
-                f"| {_num(v.max_abs)} | {_num(v.rms)} "
+                f"| {_num(v.max_abs)} | {_num(v.rms)} | {_num(v.rel_rms)} "
                 f"| {_num(v.max_rel)} | {_where(v.worst_at)} | {v.spirv} | {_num(v.gpu_ns)} "
                 f"| {'★' if v.pareto else ''} |"
             )

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
+from typing import Any
 
 import glint
 from glint.compiler.catalog.slots import SLOTS
@@ -175,14 +176,13 @@ def index_page(
     for doc in variants:
         measured = accuracy[doc.id].measured if doc.id in accuracy else None
         measured = measured or {}
-        rms = measured.get("rms")
         rows.append(
             [
                 _variant_link(doc.id, ""),
                 _slot_link(doc.slot, ""),
                 md_prose(doc.summary),
                 "★" if measured.get("pareto") else "",
-                "" if rms is None else f"{rms:.3g}",
+                _error(measured),
                 f"{measured['gpu_ns']:.2f}" if "gpu_ns" in measured else "",
                 _thumbnail(doc.id, pictures.get(doc.id)),
             ]
@@ -195,7 +195,9 @@ def index_page(
         "(`glint catalog` lists the same). Every variant of a slot defines the slot's entry "
         "function with the same prototype, so any one replaces any other. ★ marks a variant "
         "on its slot's cost/error front; the RMS error is against the variant's float64 "
-        "reference and the time is per call, both from `glint bench` "
+        "reference, as a share of the reference's own RMS where values differ in scale "
+        "between variants, else in its unit (degrees, visibility); the time is per call, "
+        "both from `glint bench` "
         "([Benchmark](../bench/bench.md)).\n\n"
         f"Slots: {slot_links}.\n\n"
         '<div id="glint-catalog-filter" hidden></div>\n\n' + table(header, rows)
@@ -310,6 +312,17 @@ def _scene_tab(picture: Picture) -> str:
 def _variant_link(snippet_id: str, up: str) -> str:
     """A link to a variant's page from a page `up` ("", "../") below the catalog folder."""
     return safe_link(md_code(snippet_id), f"{up}{url_part(snippet_id)}.md")
+
+
+def _error(measured: Mapping[str, Any]) -> str:
+    """A variant's RMS error as the index compares it across slots: relative to its reference's
+    RMS where it has one (values of any scale), else with its unit (degrees, visibility)."""
+    if measured.get("rel_rms") is not None:
+        return f"{measured['rel_rms']:.2%}"
+    if measured.get("rms") is None:
+        return ""
+    unit = measured.get("error_unit") or ""
+    return f"{measured['rms']:.3g}" + ("°" if unit == "degrees" else f" {md_text(unit)}")
 
 
 def _slot_link(slot: str, up: str) -> str:

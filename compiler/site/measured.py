@@ -446,6 +446,9 @@ def _measured_table(row: dict[str, Any], budget: Mapping[str, float], machine: s
                 continue
             shown = f"{value:.3g}" + (f" ({md_text(unit)})" if unit and key != "max_rel" else "")
             rows.append([label, shown, _budget(budget.get(key))])
+            if key == "rms" and row.get("rel_rms") is not None:
+                shown = f"{row['rel_rms']:.3g}"
+                rows.append(["RMS error / the reference's RMS", shown, ""])
         if row.get("worst_at"):
             where = ", ".join(f"{k} = {v:.4g}" for k, v in row["worst_at"].items())
             rows.append(["worst at", md_text(where), ""])

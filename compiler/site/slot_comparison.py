@@ -201,15 +201,23 @@ def _bench_section(
     parts = ["## Cost and error\n\n"]
     measured = [r for r in rows if r.get("rms") is not None]
     if len(measured) >= 2:
-        chart = _chart(slot, measured, cache_dir)
+        # Relative where every variant has it: references of one slot differ in scale (D_ggx
+        # peaks near 1e5 where D_gaussian does not), and an absolute RMS compares their units.
+        relative = all(r.get("rel_rms") is not None for r in measured)
+        chart = _chart(slot, measured, cache_dir, "rel_rms" if relative else "rms")
         path = CHART_DIR / f"{slot}.png"
         result.files[path] = chart
         alt = md_text(f"cost and error of the {slot} variants")
+        error = (
+            "RMS error relative to its float64 reference's RMS"
+            if relative
+            else "RMS error against its float64 reference (one unit for the slot)"
+        )
         parts.append(
             f"{safe_image(alt, path_url(path, '../../'))}\n\n"
-            "Each variant's RMS error against its float64 reference over its time per call; "
-            "the variants on the front (filled, joined) are those no other variant measured "
-            "against the same reference beats on both.\n\n"
+            f"Each variant's {error} over its time per call; the variants on the front "
+            "(filled, joined) are those no other variant measured against the same reference "
+            "beats on both.\n\n"
         )
     parts.append(_table(rows))
     if machine:
@@ -227,6 +235,7 @@ def _table(rows: list[dict[str, Any]]) -> str:
             md_code(str(r["reference"])) if r.get("reference") else "–",
             num(r.get("max_abs")),
             num(r.get("rms")),
+            num(r.get("rel_rms")),
             num(r.get("max_rel")),
             md_text(str(r["spirv"])),
             f"{r['gpu_ns']:.2f}",
@@ -234,26 +243,30 @@ def _table(rows: list[dict[str, Any]]) -> str:
         ]
         for r in rows
     ]
-    header = ["variant", "reference", "max abs", "RMS", "max rel", "SPIR-V", "ns", "front"]
+    header = ["variant", "reference", "max abs", "RMS", "RMS / ref.", "max rel", "SPIR-V", "ns"]
+    header.append("front")
     return table(header, body)
 
 
-def _chart(slot: str, rows: list[dict[str, Any]], cache_dir: Path | None) -> bytes:
-    data = [[r["id"], r["reference"], r["gpu_ns"], r["rms"], bool(r.get("pareto"))] for r in rows]
+def _chart(slot: str, rows: list[dict[str, Any]], cache_dir: Path | None, error: str) -> bytes:
+    """The cost/error chart of a slot's measured variants, `error` ("rms" or "rel_rms") up."""
+    data = [[r["id"], r["reference"], r["gpu_ns"], r[error], bool(r.get("pareto"))] for r in rows]
     key = hashlib.sha256(
-        json.dumps([glint.__version__, CHART_VERSION, slot, data]).encode("utf-8")
+        json.dumps([glint.__version__, CHART_VERSION, slot, error, data]).encode("utf-8")
     ).hexdigest()[:32]
     cached = cache_dir / f"chart-{key}.png" if cache_dir is not None else None
     if cached is not None and cached.is_file():
         return cached.read_bytes()
-    png = _draw_chart(slot, data)
+    png = _draw_chart(
+        slot, data, "RMS error / reference's RMS" if error == "rel_rms" else "RMS error"
+    )
     if cached is not None:
         cache_dir.mkdir(parents=True, exist_ok=True)  # type: ignore[union-attr]
         write_atomic(cached, png)
     return png
 
 
-def _draw_chart(slot: str, data: list[list[Any]]) -> bytes:
+def _draw_chart(slot: str, data: list[list[Any]], ylabel: str) -> bytes:
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.0, 3.6), dpi=100, layout="constrained")
     references = sorted({row[1] for row in data})
@@ -272,7 +285,7 @@ def _draw_chart(slot: str, data: list[list[Any]]) -> bytes:
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("ns per call")
-    ax.set_ylabel("RMS error")
+    ax.set_ylabel(ylabel)
     ax.set_title(f"slot {slot}: cost against error", fontsize=9)
     ax.legend(fontsize=7)
     return figure_png(fig)

@@ -58,6 +58,12 @@ _ROW = 256  # texels per row of the input textures and the framebuffer
 # Evaluations per timed pass: every variant is timed over the same 256 x 256 grid, its samples
 # repeated to fill it, so that passes of different variants do the same amount of work.
 TIMED_PIXELS = _ROW * _ROW
+# Calls per pixel in a timed pass: with one, fetching the inputs and writing the result cost more
+# than a short function, and the timing noise hides it; a loop of calls resolves it.
+TIMED_CALLS = 32
+# Each call of the loop sees its inputs scaled by 1 - k·JITTER (call k): a different value, so the
+# compiler cannot hoist the call out of the loop, yet inside any domain that contains 0.
+JITTER = "1e-6"
 
 
 @dataclass(frozen=True)
@@ -135,6 +141,26 @@ def _fetches(channels: int = _CHANNELS) -> str:
     )
 
 
+def _main(statements: str, result: str, calls: int, channels: int = _CHANNELS) -> str:
+    """mainImage of a probe: the inputs fetched, then one call written out, or (`calls` > 1,
+    for timing) the sum of `calls` calls, each on inputs a little apart (JITTER)."""
+    if calls == 1:
+        body = f"{_fetches(channels)}{statements}    fragColor = {result};\n"
+    else:
+        fetched = _fetches(channels).replace("vec4 in", "vec4 base")
+        jittered = "".join(f"        vec4 in{c} = base{c} * scale;\n" for c in range(channels))
+        inner = "".join(f"    {line}\n" for line in statements.splitlines())
+        body = (
+            f"{fetched}    vec4 total = vec4(0.0);\n"
+            f"    for (int k = 0; k < {calls}; k++) {{\n"
+            f"        float scale = 1.0 - float(k) * {JITTER};\n"
+            f"{jittered}{inner}        total += {result};\n"
+            "    }\n"
+            "    fragColor = total;\n"
+        )
+    return f"void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{body}}}\n"
+
+
 def _outputs(function: FunctionDef, call: str) -> tuple[str, str, str]:
     """For a void function with out parameters (cameraRay): the statements that declare them
     and make the call, the result and its type. The result is their sum, so that no output is
@@ -152,11 +178,13 @@ def probe_shader(
     scene_stub: str = SCENE_STUB,
     function: str | None = None,
     out_params: bool = False,
+    calls: int = 1,
 ) -> tuple[str, list[str], int]:
     """The probe's source, its scalar input names and the width of its result (1 to 4).
     `scene_stub` defines `map` (and `materialAt`) for snippets that query the scene; `function`
     names a function of the snippet to probe instead of its slot's entry; `out_params` allows a
-    void function with out parameters (see `_outputs`)."""
+    void function with out parameters (see `_outputs`); `calls` > 1 makes a timing probe whose
+    result is a sum of that many calls (see `_main`)."""
     probed = entry_function(snippet) if function is None else snippet_function(snippet, function)
     names, call = probe_inputs(probed, out_params)
     statements, value, result_type = "", call, probed.return_type
@@ -165,12 +193,7 @@ def probe_shader(
     if result_type not in _RESULTS:
         raise InputError(f"{probed.name}: cannot probe a {result_type} result")
     result, width = _RESULTS[result_type].format(value), _SIZES[result_type]
-    main = (
-        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-        f"{_fetches()}{statements}"
-        f"    fragColor = {result};\n"
-        "}\n"
-    )
+    main = _main(statements, result, calls)
     # A complete shader with its own prelude: ShaderToy's declares iChannel0..3 without a
     # precision, so they default to lowp, and Mesa then returns texel values at half precision.
     code = standalone_source(snippet, catalog, main, scene_stub)
@@ -203,7 +226,7 @@ class TimedProbe:
 
     values: np.ndarray  # as `run_probe` returns them, one per sample given
     draw_times: list[float]  # seconds per draw, the first (lazy compilation on Mesa) included
-    pixels: int  # evaluations per draw
+    evaluations: int  # calls of the function per draw (pixels times calls per pixel)
     renderer: str  # GL_RENDERER and version of the driver that drew it
 
     def median_draw(self) -> float:
@@ -221,18 +244,25 @@ def run_probe_timed(
     repeats: int = 7,
     pixels: int = TIMED_PIXELS,
     out_params: bool = False,
+    calls: int = 1,
 ) -> TimedProbe:
     """`run_probe` drawn `repeats` times in one context over a grid of at least `pixels`
-    evaluations: the samples are repeated, in order, to fill it. `out_params` lets a void entry
-    with out parameters (cameraRay) be timed; its values are then the sum of its outputs."""
+    pixels: the samples are repeated, in order, to fill it. `out_params` lets a void entry
+    with out parameters (cameraRay) be timed; its values are then the sum of its outputs.
+    With `calls` > 1 each pixel calls the function that many times (see `_main`), and the
+    values come from a pass of one call each."""
     catalog = catalog or load_catalog()
     snippet = catalog.get(snippet_id)
-    source, names, width = probe_shader(snippet, catalog, scene_stub, function, out_params)
+    source, names, width = probe_shader(snippet, catalog, scene_stub, function, out_params, calls)
     count = _sample_count(snippet_id, names, inputs)
     channels, rows, cols = _pack(names, inputs, max(count, pixels), _ROW)
     frame = render_full(source, cols, rows, channels=channels, repeats=repeats)
-    values = _unpack(frame.image, count, width)
-    return TimedProbe(values, frame.draw_times, rows * cols, frame.renderer)
+    image = frame.image
+    if calls > 1:
+        single = probe_shader(snippet, catalog, scene_stub, function, out_params)[0]
+        image = render_full(single, cols, rows, channels=channels, repeats=1).image
+    values = _unpack(image, count, width)
+    return TimedProbe(values, frame.draw_times, rows * cols * calls, frame.renderer)
 
 
 def probe_channels(names: list[str]) -> int:
@@ -240,28 +270,26 @@ def probe_channels(names: list[str]) -> int:
     return max(1, math.ceil(len(names) / 4))
 
 
-def empty_probe_shader(channels: int) -> str:
+def empty_probe_shader(channels: int, calls: int = 1) -> str:
     """A probe that evaluates nothing: it fetches the first `channels` input texels, as a probe
-    with that many inputs does, and writes their sum, so that no fetch is optimised away."""
+    with that many inputs does, and writes their sum, so that no fetch is optimised away; with
+    `calls` > 1, the same loop as a timing probe's, summing the jittered inputs instead."""
     fetched = " + ".join(f"in{c}" for c in range(channels)) or "vec4(0.0)"
-    main = (
-        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-        f"{_fetches(channels)}"
-        f"    fragColor = {fetched};\n"
-        "}\n"
-    )
-    return PROBE_PRELUDE + main + shadertoy.EPILOGUE
+    return PROBE_PRELUDE + _main("", fetched, calls, channels) + shadertoy.EPILOGUE
 
 
-def run_empty_probe(channels: int, repeats: int = 7, pixels: int = TIMED_PIXELS) -> TimedProbe:
+def run_empty_probe(
+    channels: int, repeats: int = 7, pixels: int = TIMED_PIXELS, calls: int = 1
+) -> TimedProbe:
     """The timed pass of `empty_probe_shader` over the same grid as `run_probe_timed`: what a
     probe costs before its function does anything."""
     names = [f"x{i}" for i in range(4 * channels)]
     inputs = {name: np.linspace(0.0, 1.0, pixels) for name in names}
     data, rows, cols = _pack(names, inputs, pixels, _ROW)
-    frame = render_full(empty_probe_shader(channels), cols, rows, channels=data, repeats=repeats)
+    shader = empty_probe_shader(channels, calls)
+    frame = render_full(shader, cols, rows, channels=data, repeats=repeats)
     values = _unpack(frame.image, pixels, 4)
-    return TimedProbe(values, frame.draw_times, rows * cols, frame.renderer)
+    return TimedProbe(values, frame.draw_times, rows * cols * calls, frame.renderer)
 
 
 def _sample_count(snippet_id: str, names: list[str], inputs: dict[str, np.ndarray]) -> int:
