@@ -32,6 +32,17 @@ def test_every_slot_with_an_entry_has_a_variant() -> None:
         assert CATALOG.in_slot(slot.name), f"slot {slot.name} has no snippet"
 
 
+def test_every_error_budget_says_why() -> None:
+    # The docs site shows budget_why under the measured table: a reader must see why the budget
+    # is what it is (design error of the model, or what was measured and the headroom left).
+    budgeted = [s for s in CATALOG.snippets.values() if s.error_budget]
+    assert budgeted
+    for snippet in budgeted:
+        assert snippet.budget_why.strip(), f"{snippet.id}: error_budget without budget_why"
+    for snippet in CATALOG.snippets.values():
+        assert len(snippet.budget_why) <= 300, f"{snippet.id}: budget_why is too long"
+
+
 def with_snippet(text: str, relpath: str = "snippets/D/test.glsl") -> tuple[Catalog, object]:
     snippet = parse_snippet(text, relpath)
     catalog = Catalog(dict(CATALOG.snippets) | {snippet.id: snippet})

@@ -7,6 +7,7 @@ requires = []
 domain = { f0 = [0, 0.99], cosTheta = [0, 1] }
 reference = "F_dielectric"
 error_budget = { max_abs = 1e-5, max_rel = 1e-4 }
+budget_why = "The exact formula, written without the textbook cancellations: float32 rounding only, measured 5.1e-7 absolute and 6.3e-7 relative (worst at f0 = 0.99, grazing) on llvmpipe; the budget leaves about 20x and 150x."
 sources = ["Walter et al. 2007, eq. 22", "Born & Wolf, Principles of Optics, 1.5.2"]
 formula = 'F = \frac{1}{2} \left( \frac{g - c}{g + c} \right)^2 \left( 1 + \left( \frac{c (g + c) - 1}{c (g - c) + 1} \right)^2 \right), \quad g = \sqrt{\eta^2 - 1 + c^2}, \quad \eta = \frac{1 + \sqrt{F_0}}{1 - \sqrt{F_0}}, \quad c = \cos\theta'
 --- */

@@ -7,6 +7,7 @@ requires = []
 domain = { f0 = [0.02, 0.2], cosTheta = [0, 1] }
 reference = "F_dielectric"
 error_budget = { max_abs = 0.1, max_rel = 0.25 }
+budget_why = "For f0 ≥ 0.02 f90 is 1 and this is Schlick's curve, which departs from the exact dielectric Fresnel by up to 0.092 (23.5 % relative) at f0 = 0.2, cosθ ≈ 0.11 (measured); the budget is that design error."
 sources = ["Filament PBR notes 4.4.3 and 4.8.3.3 (pre-baked occlusion)", "Schlick 1994"]
 formula = 'F(\theta) = F_0 + (F_{90} - F_0)\,(1 - \cos\theta)^5, \quad F_{90} = \min\left( 1,\ 16.5\,(F_{0,r} + F_{0,g} + F_{0,b}) \right)'
 --- */

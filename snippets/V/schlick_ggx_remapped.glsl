@@ -7,6 +7,7 @@ requires = ["Dots"]
 domain = { NoV = [0.01, 1], NoL = [0.01, 1], a = [0.002, 1] }
 reference = "V_smith_ggx_separable_remapped"
 error_budget = { max_abs = 2.0, max_rel = 0.26 }
+budget_why = "Schlick's G1 against separable Smith GGX at the remapped roughness is a fit: measured off by up to 1.66 (at NoL = NoV ≈ 0.06, a = 0.002) and 25.8 % relative; the budget is that design error."
 sources = ["Karis 2013, Real Shading in Unreal Engine 4, p. 3", "lighting-model skill, step 6 method 1"]
 formula = 'V = \frac{G_1(\mathbf{n} \cdot \mathbf{l})\, G_1(\mathbf{n} \cdot \mathbf{v})}{4 (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v})}, \quad G_1(x) = \frac{x}{x (1 - k) + k}, \quad k = \frac{(\sqrt{\alpha} + 1)^2}{8} = \frac{(\text{roughness} + 1)^2}{8}'
 --- */

@@ -7,6 +7,7 @@ requires = ["Surface", "Dots"]
 domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_lambert_unnormalized"
 error_budget = { max_abs = 1e-6 }
+budget_why = "A loose round bound: albedo·N·L matched its reference exactly on llvmpipe (measured 0); 1e-6 is the common bound of the Lambert family, left for drivers that round differently."
 sources = ["lighting-model skill, step 2", "kchapelier, lighting technique notes (Lambert)"]
 formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \rho \max(\mathbf{n} \cdot \mathbf{l}, 0)'
 --- */

@@ -9,6 +9,7 @@ reference = "diffuse_oren_nayar"
 # Against the full model, a different fit read with the same σ (measured on llvmpipe: max abs
 # 0.12, at roughness 1 and grazing N·V, where it is about half the full model).
 error_budget = { max_abs = 0.13 }
+budget_why = "Fujii's fit is a different model read with the same σ: against the full Oren-Nayar it is off by up to 0.12 (measured, roughness 1 and grazing N·V, where it is about half the full model); the budget is that design error."
 sources = ["Fujii 2012, A tiny improvement of Oren-Nayar reflectance model", "kchapelier, lighting technique notes (Oren Nayar)"]
 formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \rho\, (\mathbf{n} \cdot \mathbf{l}) \left( A + B \frac{s}{t} \right), \quad s = \mathbf{l} \cdot \mathbf{v} - (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v}), \quad t = \begin{cases} \max(\mathbf{n} \cdot \mathbf{l}, \mathbf{n} \cdot \mathbf{v}) & s > 0 \\ 1 & s \le 0 \end{cases}, \quad A = \frac{1}{\pi + \left( \frac{\pi}{2} - \frac{2}{3} \right) \sigma}, \quad B = \sigma A, \quad \sigma = \text{roughness}'
 --- */

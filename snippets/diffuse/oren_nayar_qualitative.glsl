@@ -9,6 +9,7 @@ reference = "diffuse_oren_nayar"
 # Against the full model: it drops the C3 and interreflection terms, so the error grows with
 # roughness (measured on llvmpipe: max abs 0.056, at roughness 1 and grazing N·V).
 error_budget = { max_abs = 0.06 }
+budget_why = "It drops the full model's C3 and interreflection terms, so its error grows with roughness: measured 0.056 at roughness 1 and grazing N·V; the budget is that design error, not rounding."
 sources = ["Oren and Nayar 1994, eq. 30 (qualitative model)", "Lighting models (Unity HLSL), 7. Oren-Nayar"]
 formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{\rho}{\pi} (\mathbf{n} \cdot \mathbf{l}) \left( A + B \frac{\max\left( 0,\ \mathbf{l} \cdot \mathbf{v} - (\mathbf{n} \cdot \mathbf{l})(\mathbf{n} \cdot \mathbf{v}) \right)}{\max(\mathbf{n} \cdot \mathbf{l}, \mathbf{n} \cdot \mathbf{v})} \right), \quad A = 1 - \frac{0.5\sigma^2}{\sigma^2 + 0.33}, \quad B = \frac{0.45\sigma^2}{\sigma^2 + 0.09}, \quad \sigma = \text{roughness}'
 --- */

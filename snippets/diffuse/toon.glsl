@@ -8,6 +8,7 @@ params = { TOON_BANDS = { type = "float", default = 3.0, range = [1.0, 16.0] }, 
 domain = { NoL = [-1, 1], NoV = [0.0001, 1], phi = [0, 3.1415927] }
 reference = "diffuse_toon"
 error_budget = { max_abs = 1e-5 }
+budget_why = "Float32 rounding, amplified where the rim's narrow smoothstep (0.02 wide around TOON_RIM_EDGE) turns on: measured 4.1e-7 absolute there on llvmpipe at the defaults; the budget leaves about 25x."
 sources = ["Lighting models (Unity HLSL), 6. Toon shading and rim lighting (Fresnel)"]
 formula = 'f_d\,(\mathbf{n} \cdot \mathbf{l}) = \frac{1}{\pi} \left( \rho\, \frac{\lfloor N x \rfloor + \operatorname{smoothstep}(1 - s, 1, \operatorname{fract}(N x))}{N} + R\, \operatorname{smoothstep}\left( e - 0.01, e + 0.01, (1 - \mathbf{n} \cdot \mathbf{v})(\mathbf{n} \cdot \mathbf{l})^p \right) \right), \quad x = \operatorname{clamp}(\mathbf{n} \cdot \mathbf{l}, 0, 1), \quad N, s, R, e, p = \text{bands, softness, rim, rim edge, rim power}'
 --- */

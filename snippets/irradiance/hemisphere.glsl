@@ -7,6 +7,7 @@ requires = ["env"]
 domain = { n0 = [-1, 1], n1 = [-1, 1], n2 = [-1, 1] }
 reference = "irradiance_gradient"
 error_budget = { max_abs = 0.051 }
+budget_why = "Blending up and down by 0.5 + 0.5·n.y is exact only for a two-colour world: under env.gradient it is off by |top − bottom|·|n.y|/6, measured 0.0499 facing straight down; the budget is that design error."
 sources = [
     "lighting-model skill, performance notes (simplified IBL: mix(ground, sky, y*0.5+0.5))",
     "Ramamoorthi and Hanrahan 2001 (irradiance of a linear gradient)",

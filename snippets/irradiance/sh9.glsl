@@ -7,6 +7,7 @@ requires = []
 domain = { n0 = [-1, 1], n1 = [-1, 1], n2 = [-1, 1] }
 reference = "irradiance_gradient"
 error_budget = { max_abs = 2e-7 }
+budget_why = "Bands 3 and up carry nothing for the smooth gradient sky, so only float32 rounding is left: measured 6.8e-8 on llvmpipe; the budget is about 3x that."
 sources = [
     "lighting-model skill, common variants (IBL: SH irradiance)",
     "Ramamoorthi and Hanrahan 2001, An Efficient Representation for Irradiance Environment Maps",

@@ -7,6 +7,7 @@ requires = []
 domain = { color0 = [0, 1], color1 = [0, 1], color2 = [0, 1], dist = [0, 20] }
 reference = "medium_beer"
 error_budget = { max_abs = 3e-7, max_rel = 5e-7 }
+budget_why = "Float32 rounding of exp2(−σd·log2 e) and the blend: measured 1.1e-7 absolute and 1.6e-7 relative on llvmpipe; the budget leaves about 3x."
 sources = [
     "lighting-model skill, common variants (Beer's law water lighting)",
     "Pharr, Jakob and Humphreys, PBRT 3rd ed., 11.1 (Beer's law)",

@@ -11,6 +11,7 @@ reference = "shadow_disc_light"
 # Against a disc light of angular radius atan(1/k): max 0.91 (a low sun's far occluder is out
 # of reach of 24 steps), mean 0.018 over 10460 points, 0.24 in the penumbrae.
 error_budget = { max_abs = 1.0, mean_abs = 0.023 }
+budget_why = "k·h/t against a disc light of angular radius atan(1/k): mean 0.018 over 10460 points, 0.24 in penumbrae, max 0.91 where a low sun's far occluder is beyond 24 steps; the budget is about 1.3x the mean, max 1."
 --- */
 // A miss by h at distance t along the ray leaves a gap of about h/t radians between the ray
 // and the occluder; the light counts as fully visible once every gap is at least 1/SHADOW_K,

@@ -13,6 +13,7 @@ reference = "shadow_disc_light"
 # left is the estimator's own (h/t for an angle, the cubic for the disc). A minimum step of 0.02
 # needs 48 steps to reach as far (32: mean 0.0048, max 0.44); 0.1 steps over thin parts (max 0.8).
 error_budget = { max_abs = 0.35, mean_abs = 0.0055 }
+budget_why = "What is left is the estimator's own error (h/t for an angle, the cubic for the disc): against a disc light, mean 0.0044 and max 0.27 over 10460 points; the budget is about 1.25x and 1.3x that."
 --- */
 // shadow.soft draws the whole penumbra outside the hard shadow: a ray that grazes an occluder
 // gives 0 where a disc light is half hidden. Here the gap h/t is signed. The march goes on into

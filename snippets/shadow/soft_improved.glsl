@@ -9,6 +9,7 @@ sources = ["Inigo Quilez, soft shadows in raymarched SDFs, improved technique (2
 formula = 'S = \operatorname{clamp}\left( \min_i \frac{k \sqrt{h_i^2 - y_i^2}}{t_i - y_i},\ 0,\ 1 \right), \quad y_i = \frac{h_i^2 - h_{i-1}^2 + s_i^2}{2 s_i} \text{ if } s_i \le h_{i-1} \text{ and } 0 < y_i < h_i, \text{ else } 0, \quad s_i = t_i - t_{i-1}, \quad t_{i+1} = t_i + \operatorname{clamp}(h_i, 0.02, 0.2), \quad S = 0 \text{ if some } h_i < 10^{-4}'
 reference = "shadow_disc_light"
 error_budget = { max_abs = 0.75, mean_abs = 0.027 }
+budget_why = "The improved k·h/t against a disc light of angular radius atan(1/k): mean 0.022 and max 0.68 over 10460 points on llvmpipe; the budget is about 1.25x the mean and 1.1x the max."
 --- */
 // The classic k·h/t only sees the gaps at the points it samples, and the closest approach to
 // an occluder usually falls between two of them, which shows as banding in the penumbra. The
