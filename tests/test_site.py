@@ -428,6 +428,24 @@ def test_float16_is_said_to_hold_only_within_its_accuracy() -> None:
     assert "does **not** survive float16" in said(False, None)
 
 
+def test_a_page_says_where_and_why_float16_fails() -> None:
+    """D.ggx fails float16 only where its true value (1/(pi a^2) = 8e4 at NoH = 1, a = 0.002)
+    is beyond float16's range, so only a clamp survives there; D.beckmann fails across the
+    domain in an intermediate step while most of its values fit."""
+    from glint.compiler.site.measured import _precision_text
+    from glint.compiler.verify.precision import precision_report
+
+    ggx = _precision_text(precision_report("D.ggx"))
+    assert "does **not** survive float16" in ggx
+    assert "at NoH = 1, a = 0.002" in ggx and "beyond float16's largest finite number" in ggx
+    assert "no float16 code can hold it" in ggx and "intermediate" not in ggx
+    beckmann = precision_report("D.beckmann")["float16"]
+    said = _precision_text({"float16": beckmann})
+    others = beckmann["nonfinite_lanes"] - beckmann["nonfinite_beyond_range"]
+    assert others > 0 and f"in the other {others} an intermediate step" in said
+    assert "holds" not in _precision_text(precision_report("V.cook_torrance"))
+
+
 def test_a_variants_sources_link_to_the_papers() -> None:
     from glint.compiler.site.catalog_pages import variant_docs
 

@@ -43,7 +43,7 @@ log = logging.getLogger(__name__)
 
 BENCH_JSON = PurePosixPath("bench") / "bench.json"  # under the docs source folder
 PLOT_DIR = PurePosixPath("img") / "accuracy"
-PLOT_VERSION = "2"  # bump when the plot's look changes, so cached plots are redrawn
+PLOT_VERSION = "3"  # bump when the plot or the precision report changes, to recompute them
 SLICES = 3  # curves per plot: the second axis at its ends and middle
 
 
@@ -470,6 +470,34 @@ def _budget(value: float | None) -> str:
 HALF_ACCURATE = 0.01
 
 
+def _where_half_fails(half: Mapping[str, Any]) -> str:
+    """Where and why float16 fails, from the precision report: the inputs' spans over the
+    failing samples, and how many of those hold a value float16 cannot (|x| > 65504)."""
+    where = half.get("nonfinite_where")
+    if where is None:
+        return ""  # a report from before glint said where
+    spans = ", ".join(
+        f"{name} = {low:.3g}" if low == high else f"{name} {low:.3g} to {high:.3g}"
+        for name, (low, high) in where.items()
+    )
+    text = f", at {md_text(spans)}" if spans else ""
+    failing = int(half.get("nonfinite_lanes", 0))
+    beyond = int(half.get("nonfinite_beyond_range", 0))
+    if beyond == failing:
+        return (
+            f"{text}. There the true value itself is beyond float16's largest finite number "
+            "(65504): no float16 code can hold it, only clamp it (as Filament's "
+            "`saturateMediump` clamps to 65504)"
+        )
+    if beyond:
+        return (
+            f"{text}. In {beyond} of them the true value is beyond float16's largest finite "
+            f"number (65504), which only a clamp can survive; in the other {failing - beyond} "
+            "an intermediate step overflows or underflows float16"
+        )
+    return f"{text}. The true values fit float16: an intermediate step overflows or underflows"
+
+
 def _precision_text(report: Mapping[str, Mapping[str, Any]]) -> str:
     half, single = report.get("float16", {}), report.get("float32", {})
     error = half.get("max_rel_err_vs_f64")
@@ -489,7 +517,7 @@ def _precision_text(report: Mapping[str, Mapping[str, Any]]) -> str:
         survives = (
             f"Half precision: it does **not** survive float16 (mediump): "
             f"{md_text(str(half.get('nonfinite_lanes', 0)))} sample(s) turn infinite or NaN "
-            "where float64 is finite"
+            f"where float64 is finite{_where_half_fails(half)}"
         )
     single_err = single.get("max_rel_err_vs_f64")
     tail = f"; float32 is within {single_err:.3g} of float64" if single_err is not None else ""

@@ -1,7 +1,10 @@
 """Which snippets survive float16 (mediump): the same code at half, single and double precision.
 
 A snippet's entry is evaluated on a grid over its front-matter domain; float16 and float32 are
-compared with float64. "finite" means finite wherever the float64 result is.
+compared with float64. "finite" means finite wherever the float64 result is. Where a precision
+is not, the report says where (the range of each input over the failing samples) and how many of
+them have a true value beyond float16's largest finite number, which no float16 code can hold:
+the others fail in an intermediate step.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from glint.compiler.evaluator.interpreter import Interpreter
 DTYPES: dict[str, Any] = {"float16": np.float16, "float32": np.float32, "float64": np.float64}
 _DIRECTIONS = {"dir", "rd", "n", "N", "L", "V"}
 _REL_FLOOR = 1e-6  # relative error is measured against max(|f64|, this)
+HALF_MAX = 65504.0  # float16's largest finite number
 SIMPLE_TYPES = {"float", "vec3", "Dots", "Surface"}
 
 
@@ -115,7 +119,10 @@ def precision_report(
     externals: dict[str, Any] | None = None,
 ) -> dict[str, dict[str, Any]]:
     """{dtype name: {"finite", "max_rel_err_vs_f64", "nonfinite_lanes"}} for the snippet's
-    entry (or `function`) over `grid` (default: `default_grid`)."""
+    entry (or `function`) over `grid` (default: `default_grid`); where a precision is not
+    finite, also "nonfinite_where" ({input: [min, max]} over the failing samples, for the
+    inputs that vary) and "nonfinite_beyond_range" (how many of those samples have a float64
+    value beyond float16's largest finite number)."""
     args = grid if grid is not None else default_grid(snippet_id)
     ext = {**DEFAULT_EXTERNALS, **(externals or {})}
     results = {
@@ -135,7 +142,35 @@ def precision_report(
             "max_rel_err_vs_f64": float(np.max(rel)) if rel.size else 0.0,
             "nonfinite_lanes": int(bad.sum()),
         }
+        if bad.any():
+            report[name] |= _where_not_finite(args, bad, ref)
     return report
+
+
+def _where_not_finite(args: Any, bad: np.ndarray, ref: np.ndarray) -> dict[str, Any]:
+    """Where a precision fails: the span of each varying input over the failing samples, and
+    how many of them hold a true value that float16 cannot (|f64| > HALF_MAX)."""
+    lanes = bad.reshape(len(bad), -1).any(axis=1)
+    huge = np.abs(ref.reshape(len(ref), -1)).max(axis=1) > HALF_MAX
+    where = {
+        name: [float(values[lanes].min()), float(values[lanes].max())]
+        for name, values in _scalar_inputs(args, len(lanes)).items()
+        if values.min() != values.max()
+    }
+    return {"nonfinite_where": where, "nonfinite_beyond_range": int((lanes & huge).sum())}
+
+
+def _scalar_inputs(args: Any, lanes: int, prefix: str = "") -> dict[str, np.ndarray]:
+    """The arguments that hold one scalar per sample, by name (a struct's fields as
+    `name.field`); vectors and constants are left out."""
+    found: dict[str, np.ndarray] = {}
+    items = args.items() if isinstance(args, dict) else ()
+    for name, value in items:
+        if isinstance(value, dict):
+            found |= _scalar_inputs(value, lanes, f"{prefix}{name}.")
+        elif isinstance(value, np.ndarray) and value.shape == (lanes,):
+            found[f"{prefix}{name}"] = value
+    return found
 
 
 def survey(points: int = 4096) -> dict[str, dict[str, dict[str, Any]]]:
