@@ -1,12 +1,15 @@
 """Environment light: the float64 references (split-sum DFG, irradiance by quadrature, SH9
-projection) against closed forms, and the snippets (Karis's EnvBRDFApprox fit, SH9 irradiance)
-against them; the measured errors are the ones stated in the snippets' front matter."""
+projection, the lobe reflected from a sky, the lobe's share seen through an AO cone) against
+closed forms and limits, and the snippets (Karis's EnvBRDFApprox fit, SH9 irradiance, the
+approximations the bench measures) against them; the measured errors are the ones stated in
+the snippets' front matter."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from glint.compiler.bench.plans import APPROXIMATIONS
 from glint.compiler.catalog.loader import glsl_value, load_catalog
 from glint.compiler.compose.snippet_evaluation import evaluate_snippet
 from glint.compiler.compose.spherical_harmonics import (
@@ -22,6 +25,8 @@ from glint.compiler.verify.references.environment import (
     dfg_split_sum,
     gradient_environment,
     irradiance_over_pi,
+    specular_environment,
+    specular_visible_fraction,
 )
 
 CATALOG = load_catalog()
@@ -271,3 +276,46 @@ def test_sh9_rings_around_a_sun(capsys: pytest.CaptureFixture[str]) -> None:
     # Band 3+ of a cosine lobe is small but not 0: a sharp sun leaks ~0.1 of its peak.
     assert error.max() < 0.15 * peak
     assert error.max() > 0.01 * peak  # it does ring: this is not an exact method
+
+
+# --- the truths of the approximations (glint bench measures against them) ----------------------
+
+
+def test_reflected_environment_reduces_to_the_split_sum_and_to_a_mirror() -> None:
+    # a white sky reflects the lobe's directional albedo f0·A + B; a mirror reflects F(N·V)
+    # times the sky along R
+    n = np.tile([0.0, 1.0, 0.0], (4, 1))
+    nov = np.array([1.0, 0.7, 0.3, 0.05])
+    v = np.stack([np.sqrt(1 - nov**2), nov, 0 * nov], -1)
+    rough = np.array([0.1, 0.4, 0.8, 1.0])
+    white = specular_environment(n, v, rough, environment=lambda d: np.ones(d.shape[:-1] + (3,)))
+    ab = dfg_split_sum(rough, nov)
+    np.testing.assert_allclose(white[:, 0], 0.04 * ab[:, 0] + ab[:, 1], rtol=1e-4)
+    sky = gradient_environment()
+    mirror = specular_environment(n, v, np.zeros(4), environment=sky)
+    fresnel = 0.04 + 0.96 * (1 - nov) ** 5
+    np.testing.assert_allclose(mirror, fresnel[:, None] * sky(2 * nov[:, None] * n - v), rtol=1e-9)
+
+
+def test_visible_fraction_of_the_lobe_at_its_limits() -> None:
+    nov = np.array([0.2, 0.9, 0.5, 0.5])
+    assert specular_visible_fraction(NoV=nov, ao=1.0, a=0.3) == pytest.approx(1.0)
+    assert specular_visible_fraction(NoV=nov, ao=0.0, a=0.3) == pytest.approx(0.0)
+    # a mirror sees along R, at θ = acos(N·V) from n: inside the cone iff N·V > cos θv = √(1 − ao)
+    seen = specular_visible_fraction(NoV=nov, ao=0.5, a=0.0)
+    np.testing.assert_array_equal(seen, (nov > np.sqrt(0.5)).astype(float))
+    # more ao, more of the lobe seen
+    ao = np.linspace(0.0, 1.0, 11)
+    assert np.all(np.diff(specular_visible_fraction(NoV=0.6, ao=ao, a=0.2)) >= 0.0)
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("snippet_id", sorted(APPROXIMATIONS))
+def test_an_approximation_stays_within_its_budget_against_its_truth(snippet_id: str) -> None:
+    errors, where = APPROXIMATIONS[snippet_id][2](CATALOG)
+    budget = CATALOG.get(snippet_id).error_budget
+    assert np.isfinite(errors).all() and errors.max() <= budget["max_abs"]
+    if "rms" in budget:
+        assert np.sqrt(np.mean(errors**2)) <= budget["rms"]
+    # and it is an approximation: measurably off somewhere, not compared with itself
+    assert errors.max() > 0.01

@@ -55,6 +55,8 @@ def test_variant_within_its_error_budget(snippet_id: str) -> None:
         assert error.max_rel is not None and error.max_rel <= budget["max_rel"], (
             f"max rel {error.max_rel:.3g}"
         )
+    if "rms" in budget:  # an approximation by design: its typical error, not only its worst
+        assert error.rms <= budget["rms"], f"RMS {error.rms:.3g}"
 
 
 def extreme_axes(name: str) -> list[float]:

@@ -4,12 +4,16 @@
   a grid over its domain against its own float64 reference.
 - Shadows: every variant against one disc light on the reference scenes, the hard shadow too,
   so that the cost/error front compares what a viewer sees, not each variant to its own model.
-- AO: cosine-weighted visibility; subsurface: transmittance through reference spheres.
+- AO: cosine-weighted visibility; subsurface: transmittance through reference spheres;
+  specular occlusion: the share of the GGX lobe seen through the AO's visibility cone.
 - Normals: angle to the exact normal on the reference scenes. The derivative-based flat normal
   cannot be probed point by point: its error is measured on a rendered box (flat faces only, so
   it is a reference group of its own); its cost on the same passes as the others.
-- No reference (camera, background, tonemap, output, env, specocc, raymarch, ibl): cost only,
-  on inputs from the domain where there is one, else plausible ones (samples.free_inputs).
+- An approximation a variant makes that its entry's probe cannot show alone
+  (`ibl.env_brdf_approx`'s split-sum fit, `ibl.simple_reflection`'s reflection of the sky):
+  its error against its own float64 truth (approximations.py), its cost as the whole entry's.
+- No reference (camera, background, tonemap, output, env, raymarch): cost only, on inputs from
+  the domain where there is one, else plausible ones (samples.free_inputs).
 """
 
 from __future__ import annotations
@@ -19,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from glint.compiler.bench.approximations import env_brdf_errors, reflection_errors
 from glint.compiler.bench.flat_normal import flat_normal_errors, render_flat
 from glint.compiler.bench.normals import normal_set
 from glint.compiler.bench.occlusion import ao_sets, shadow_sets
@@ -34,6 +39,9 @@ from glint.compiler.verify.references.normals import SCENES as NORMAL_SCENES
 SHADOW_LIGHT = "shadow_disc_light"
 SHADOW_LIGHT_K = 8.0
 FLAT_FACES = "sdf_normal (flat faces)"
+# Slots whose values are a visible fraction that reaches 0 by design: no relative error.
+FRACTIONS = {"specocc"}
+# Variants whose error is that of an approximation they contain: its truth, unit and errors.
 
 RenderedErrors = Callable[[Catalog], tuple[np.ndarray, dict[str, np.ndarray]]]
 
@@ -46,8 +54,18 @@ class Plan:
     unit: str  # what the error is in ("" without a reference)
     sets: list[ProbeSet]
     relative: bool = False  # whether a relative error means something (values away from 0)
-    rendered: RenderedErrors | None = None  # errors from a render rather than the probes
+    # errors measured apart from the timed passes: a render, or a probe of the approximation
+    rendered: RenderedErrors | None = None
     out_params: bool = False  # the entry returns through out parameters (cameraRay)
+
+
+# Slots whose values are a visible fraction that reaches 0 by design: no relative error.
+FRACTIONS = {"specocc"}
+# Variants whose error is that of an approximation they contain: its truth, unit and errors.
+APPROXIMATIONS: dict[str, tuple[str, str, RenderedErrors]] = {
+    "ibl.env_brdf_approx": ("dfg_split_sum", "albedo", env_brdf_errors),
+    "ibl.simple_reflection": ("specular_environment", "radiance", reflection_errors),
+}
 
 
 def _flat_errors(catalog: Catalog) -> tuple[np.ndarray, dict[str, np.ndarray]]:
@@ -83,9 +101,15 @@ def plan_for(snippet: Snippet) -> Plan:
         case = domain_set(snippet)
         if case.exact is None:
             return Plan(None, "", [case])
+        if slot in FRACTIONS:
+            return Plan(snippet.reference, "visibility", [case])
         return Plan(snippet.reference, "value", [case], relative=True)
     if slot == "raymarch":
         return Plan(None, "", [ProbeSet(camera_rays())])
     out_params = any("out" in p.qualifier.split() for p in entry_function(snippet).params)
     names = probe_inputs(entry_function(snippet), out_params)[0]
-    return Plan(None, "", [ProbeSet(free_inputs(names))], out_params=out_params)
+    timed = [ProbeSet(free_inputs(names))]
+    if snippet.id in APPROXIMATIONS:
+        truth, unit, errors = APPROXIMATIONS[snippet.id]
+        return Plan(truth, unit, timed, rendered=errors, out_params=out_params)
+    return Plan(None, "", timed, out_params=out_params)

@@ -220,6 +220,27 @@ def run_probe(
     return _unpack(render(source, cols, rows, channels=channels), count, width)
 
 
+def run_statements(
+    snippet_id: str,
+    statements: str,
+    names: list[str],
+    inputs: dict[str, np.ndarray],
+    width: int,
+    catalog: Catalog | None = None,
+) -> np.ndarray:
+    """The snippet, with everything it needs, under GLSL `statements` of the caller's that set
+    fragColor from the scalar inputs `names`, read in order as in0.x, in0.y, ... in3.w (a case
+    the entry's own probe cannot build, such as a Surface from its own N and V). Returns the
+    first `width` channels per sample, as run_probe does."""
+    catalog = catalog or load_catalog()
+    main = f"void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{_fetches()}{statements}}}\n"
+    code = standalone_source(catalog.get(snippet_id), catalog, main, SCENE_STUB)
+    source = PROBE_PRELUDE + code + shadertoy.EPILOGUE
+    count = _sample_count(snippet_id, names, inputs)
+    channels, rows, cols = _pack(names, inputs, count, min(count, _ROW))
+    return _unpack(render(source, cols, rows, channels=channels), count, width)
+
+
 @dataclass(frozen=True)
 class TimedProbe:
     """A probe pass drawn several times: its values and how long each draw took."""

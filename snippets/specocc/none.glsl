@@ -4,7 +4,10 @@ slot = "specocc"
 summary = "No specular occlusion: the environment reflection is seen unoccluded"
 provides = ["specularOcclusion"]
 requires = []
-domain = { NoV = [0, 1], ao = [0, 1], a = [0, 1] }
+domain = { NoV = [0.0001, 1], ao = [0, 1], a = [0, 1] }
+reference = "specular_visible_fraction"
+error_budget = { max_abs = 1.0, rms = 0.7 }
+budget_why = "It sees every reflection unoccluded, so its error is the occluded share of the lobe itself: all of it where ao = 0 (max 1), RMS 0.66 over the domain, measured against the lobe seen through the AO's cone; the budget is that design error."
 sources = ["Lagarde and de Rousiers 2014 (what specular occlusion corrects)"]
 formula = '\text{SO} = 1'
 --- */

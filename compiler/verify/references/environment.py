@@ -8,6 +8,11 @@
   ∫ f(l, v) (n·l) dl = f0·A + B when F is Schlick's, A = ∫ (1 − Fc) f/F (n·l), B = ∫ Fc f/F (n·l),
   Fc = (1 − v·h)⁵, with GGX D and the height-correlated Smith visibility.
 
+- `specular_visible_fraction`: the share of the GGX specular lobe's reflected light (F = 1)
+  that arrives from inside a visibility cone around n whose cosine-weighted visibility is the
+  ambient occlusion, ao = sin²θv (Jimenez et al. 2016, "Practical Real-Time Strategies for
+  Accurate Indirect Occlusion"): what specular occlusion from AO approximates.
+
 The registry entry `irradiance_gradient` is the irradiance of `env.gradient` (the vertical
 gradient from ENV_BOTTOM to ENV_TOP), taking the normal as `n0, n1, n2` like the probes do and
 the environment's colours by their parameter names.
@@ -134,8 +139,20 @@ def dfg_split_sum(
     by Gauss-Legendre on exactly that arc (the integrand is smooth there) and doubled.
     """
     r, nv = np.broadcast_arrays(np.asarray(roughness, np.float64), np.asarray(NoV, np.float64))
-    a = (r * r)[..., None, None]
-    nv = np.clip(nv, 0.0, 1.0)[..., None, None]
+    weight, body, nol, voh, *_ = _lobe(r * r, nv, n_xi, n_phi)
+    fc = (1.0 - voh) ** 5
+    scale = np.sum(weight * body * (1.0 - fc), axis=(-2, -1))
+    bias = np.sum(weight * body * fc, axis=(-2, -1))
+    return np.stack([scale, bias], -1)
+
+
+def _lobe(a: np.ndarray, nv: np.ndarray, n_xi: int, n_phi: int) -> tuple[np.ndarray, ...]:
+    """The quadrature of dfg_split_sum over the GGX lobe of roughness² `a` seen at N·V `nv`:
+    each point's weight, the integrand without F (V · 4 (n·l)(v·h) / (n·h)), its n·l, its v·h,
+    and the half vector's cos θh, sin θh and φ (from v's azimuth; the point stands for ±φ);
+    shape (..., n_xi, n_phi)."""
+    a = np.asarray(a, np.float64)[..., None, None]
+    nv = np.clip(np.asarray(nv, np.float64), 0.0, 1.0)[..., None, None]
     sv = np.sqrt(1.0 - nv * nv)
     xi, w_xi, u, w_u = _dfg_rule(n_xi, n_phi)
     # No half vector beyond θh = (θv + π/2)/2 reflects v above the horizon: ξ stops at the
@@ -158,12 +175,87 @@ def dfg_split_sum(
     vis = V_smith_ggx_correlated(NoL=nol, NoV=nv, a=a)
     with np.errstate(invalid="ignore"):
         body = np.where(nol > 0.0, vis * 4.0 * nol * voh / ch, 0.0)
-    fc = (1.0 - voh) ** 5
     # ∫ dφ/2π over (−φmax, φmax) = (φmax/π) Σ w_u (…); then Σ over ξ.
     weight = (phi_max / np.pi) * w_u[None, :] * w_xi
-    scale = np.sum(weight * body * (1.0 - fc), axis=(-2, -1))
-    bias = np.sum(weight * body * fc, axis=(-2, -1))
-    return np.stack([scale, bias], -1)
+    return weight, body, nol, voh, ch, sh, phi
 
 
-REFERENCES = {"irradiance_gradient": irradiance_gradient}
+def specular_visible_fraction(
+    *, NoV: ArrayLike, ao: ArrayLike, a: ArrayLike, n_xi: int = 128, n_phi: int = 64
+) -> np.ndarray:
+    """The share of the GGX lobe (roughness² `a`, F = 1, height-correlated Smith) seen at N·V
+    that comes from within the visibility cone about n of half-angle θv, cos θv = √(1 − ao);
+    1 where the lobe reflects nothing. In chunks: each sample integrates n_xi × n_phi points."""
+    nv, occlusion, alpha = np.broadcast_arrays(*(np.asarray(x, np.float64) for x in (NoV, ao, a)))
+    flat = [x.ravel() for x in (nv, occlusion, alpha)]
+    out = np.empty(flat[0].shape)
+    for start in range(0, len(out), 256):
+        part = slice(start, start + 256)
+        weight, body, nol, *_ = _lobe(flat[2][part], flat[0][part], n_xi, n_phi)
+        cos_v = np.sqrt(np.clip(1.0 - flat[1][part], 0.0, 1.0))[:, None, None]
+        total = np.sum(weight * body, axis=(-2, -1))
+        seen = np.sum(weight * body * (nol > cos_v), axis=(-2, -1))  # ao = 0: none seen
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[part] = np.where(total > 0.0, seen / total, 1.0)
+    return out.reshape(nv.shape)
+
+
+def specular_environment(
+    n: np.ndarray,
+    v: np.ndarray,
+    roughness: ArrayLike,
+    f0: float = 0.04,
+    environment: Environment | None = None,
+    n_xi: int = 64,
+    n_phi: int = 32,
+) -> np.ndarray:
+    """The light the GGX specular lobe (height-correlated Smith, Schlick's F of v·h with `f0`)
+    reflects toward v from an environment (env.gradient's by default): ∫ f(l, v) L(l) (n·l) dl,
+    by dfg_split_sum's quadrature with each half vector placed in the frame of n and v, both
+    signs of φ. `n` and `v` are unit vectors (..., 3) with n·v > 0; returns RGB (..., 3)."""
+    env = environment or gradient_environment()
+    n, v = np.broadcast_arrays(np.asarray(n, np.float64), np.asarray(v, np.float64))
+    r = np.broadcast_to(np.asarray(roughness, np.float64), n.shape[:-1])
+    flat_n, flat_v, flat_r = n.reshape(-1, 3), v.reshape(-1, 3), r.ravel()
+    out = np.empty(flat_n.shape)
+    for start in range(0, len(out), 128):
+        part = slice(start, start + 128)
+        out[part] = _reflected(flat_n[part], flat_v[part], flat_r[part], f0, env, n_xi, n_phi)
+    return out.reshape(n.shape)
+
+
+def _reflected(
+    n: np.ndarray,
+    v: np.ndarray,
+    r: np.ndarray,
+    f0: float,
+    env: Environment,
+    n_xi: int,
+    n_phi: int,
+) -> np.ndarray:
+    nv = np.clip(np.sum(n * v, axis=-1), 0.0, 1.0)
+    # t: v's direction in the tangent plane (any tangent where v is along n), b completes it
+    t = v - nv[:, None] * n
+    length = np.linalg.norm(t, axis=-1, keepdims=True)
+    t = np.where(length > 1e-12, t / np.maximum(length, 1e-300), tangent_frame(n)[0])
+    b = np.cross(n, t)
+    weight, body, _, voh, ch, sh, phi = _lobe(r * r, nv, n_xi, n_phi)
+    fresnel = f0 + (1.0 - f0) * (1.0 - voh) ** 5
+    total = np.zeros(n.shape)
+    for sign in (1.0, -1.0):
+        h = (
+            (sh * np.cos(phi))[..., None] * t[:, None, None, :]
+            + (sign * sh * np.sin(phi))[..., None] * b[:, None, None, :]
+            + ch[..., None] * n[:, None, None, :]
+        )
+        light = 2.0 * voh[..., None] * h - v[:, None, None, :]
+        light /= np.linalg.norm(light, axis=-1, keepdims=True)
+        radiance = env(light)
+        total += 0.5 * np.sum((weight * body * fresnel)[..., None] * radiance, axis=(1, 2))
+    return total
+
+
+REFERENCES = {
+    "irradiance_gradient": irradiance_gradient,
+    "specular_visible_fraction": specular_visible_fraction,
+}
