@@ -197,7 +197,7 @@ vec3 skyLight(Surface s, vec3 color, float occlusion) {
     return s.diffuseColor * color * hemisphere * occlusion;
 }
 
-// source: snippets/D/ggx.glsl:13
+// source: snippets/D/ggx.glsl:14
 // Floor of (NoH² (a² − 1) + 1): it is 0 at a = 0, NoH = 1, where D is a Dirac spike (0/0).
 #define MIN_GGX_DENOM 1e-15
 
@@ -211,7 +211,7 @@ float distribution(float NoH, float a) {
     return a2 / (PI * d * d);
 }
 
-// source: snippets/F/schlick.glsl:13
+// source: snippets/F/schlick.glsl:14
 // F = f0 + (1 − f0)(1 − cosθ)⁵ (Schlick 1994), an approximation of the exact dielectric
 // Fresnel: within 0.036 of it at f0 = 0.04, 0.10 at f0 = 0.2 (the budget's domain is
 // dielectrics, water to diamond; towards f0 = 1 the exact dielectric has a Brewster dip that
@@ -221,7 +221,7 @@ vec3 fresnel(vec3 f0, float cosTheta) {
     return f0 + (1.0 - f0) * pow(clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
 }
 
-// source: snippets/V/smith_ggx_correlated.glsl:13
+// source: snippets/V/smith_ggx_correlated.glsl:14
 // Smallest denominator: both terms vanish when NoL = NoV = 0.
 #define MIN_VIS_DENOM 1e-5
 
@@ -236,12 +236,12 @@ float visibility(Dots d, float a) {
     return 0.5 / max(gv + gl, MIN_VIS_DENOM);
 }
 
-// source: snippets/diffuse/lambert.glsl:13
+// source: snippets/diffuse/lambert.glsl:14
 vec3 diffuse(Surface s, Dots d) {
     return s.diffuseColor * (d.NoL / PI);
 }
 
-// source: snippets/specular/cook_torrance.glsl:10
+// source: snippets/specular/cook_torrance.glsl:16
 // V already holds G / (4 NoL NoV), so the lobe is a plain product, times its cosine N·L.
 vec3 specular(Surface s, Dots d, vec3 F) {
     return distribution(d.NoH, s.a) * visibility(d, s.a) * F * d.NoL;
@@ -262,7 +262,7 @@ vec3 directionalLight(Surface s, vec3 L, vec3 radiance, vec3 visibility) {
     return lightResponse(s, L) * radiance * visibility;
 }
 
-// source: snippets/specocc/power.glsl:11
+// source: snippets/specocc/power.glsl:14
 float specularOcclusion(float NoV, float ao, float a) {
     return clamp(pow(NoV + ao, a) - 1.0 + ao, 0.0, 1.0);
 }
@@ -272,7 +272,7 @@ vec3 environment(vec3 dir) {
     return mix(ENV_BOTTOM, ENV_TOP, clamp(dir.y * 0.5 + 0.5, 0.0, 1.0));
 }
 
-// source: snippets/ibl/env_brdf_approx.glsl:15
+// source: snippets/ibl/env_brdf_approx.glsl:16
 // The split sum (Karis 2013) factors specular environment light into the environment seen
 // around the mirror direction times the BRDF's directional albedo, f0·A + B. Here A and B
 // come from Karis's analytic fit instead of a lookup table, and the environment is sampled
@@ -353,7 +353,7 @@ float map(vec3 p) {
     return d;
 }
 
-// source: snippets/ao/sdf5.glsl:15
+// source: snippets/ao/sdf5.glsl:16
 // Compares the distance field at growing heights h along n with h itself: the shortfall is
 // how much nearby geometry closes in. Nearer taps weigh more.
 float ambientOcclusion(vec3 p, vec3 n) {
@@ -418,7 +418,7 @@ vec3 sceneNormal(vec3 p) {
     return n;
 }
 
-// source: snippets/shadow/analytic.glsl:16
+// source: snippets/shadow/analytic.glsl:17
 // shadow.soft_centered estimates x, the ray's signed angular distance to an occluder's edge in
 // units of the light's radius atan(1/k), from samples k·h/t of a march. For a sphere, a box or
 // a plane that angle has a closed form (snippets/trace/: the outline of a sphere is a circle, a
