@@ -294,6 +294,15 @@ def test_accuracy_section_from_plain_data() -> None:
     assert "| on its slot's cost/error front | no |" in text
     assert "3 sample(s) turn infinite or NaN" in text and "a test GPU" in text
     assert accuracy_section("X.y", None, "") == ""
+    assert "| time per call | 1.50 ns |" in text
+    # a relative RMS beside the absolute one; a budget's reason under the table; a time the
+    # bench clamped to 0 is below what the probe resolves, not free
+    row |= {"rel_rms": 0.0123, "gpu_ns": 0.0}
+    why = "the model's design error"
+    text = accuracy_section("X.y", Accuracy(row, {"max_abs": 1.0}, budget_why=why), "")
+    assert "| RMS error / the reference's RMS | 0.0123 |" in text
+    assert "Why the budget is what it is: the model's design error" in text
+    assert "| time per call | ≈ 0, within the timing noise |" in text and "0.00 ns" not in text
 
 
 def test_scene_reference_has_every_key_and_the_gallery_every_example_scene() -> None:

@@ -30,7 +30,7 @@ from glint.compiler.markdown import (
 )
 
 from .live_canvas import live_section
-from .measured import Accuracy, accuracy_section
+from .measured import Accuracy, accuracy_section, time_per_call
 from .pictures import SIZE, TIME, Picture
 from .source_links import source_link
 
@@ -183,7 +183,7 @@ def index_page(
                 md_prose(doc.summary),
                 "★" if measured.get("pareto") else "",
                 _error(measured),
-                f"{measured['gpu_ns']:.2f}" if "gpu_ns" in measured else "",
+                time_per_call(measured["gpu_ns"], unit=False) if "gpu_ns" in measured else "",
                 _thumbnail(doc.id, pictures.get(doc.id)),
             ]
         )

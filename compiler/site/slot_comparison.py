@@ -36,7 +36,7 @@ from glint.compiler.markdown import (
 from glint.compiler.render.images import flip_image, png_bytes, png_pixels
 
 from .live_canvas import slot_compare_section, slot_live_section
-from .measured import Bench, figure_png, pyplot
+from .measured import Bench, figure_png, pyplot, time_per_call
 from .pictures import Picture
 
 FLIP_DIR = PurePosixPath("img") / "flip"
@@ -238,7 +238,7 @@ def _table(rows: list[dict[str, Any]]) -> str:
             num(r.get("rel_rms")),
             num(r.get("max_rel")),
             md_text(str(r["spirv"])),
-            f"{r['gpu_ns']:.2f}",
+            time_per_call(r["gpu_ns"], unit=False),
             "★" if r.get("pareto") else "",
         ]
         for r in rows

@@ -154,6 +154,8 @@ def test_snippet_reference_exists_and_takes_its_domain(snippet_id: str) -> None:
     budget = snippet.error_budget
     # max_deg / mean_deg: angular error of a normal against the exact normal, in degrees.
     # mean_abs: AO and shadows are also held on average over the points of reference scenes.
-    allowed = {"max_abs", "max_rel", "max_deg", "mean_deg", "mean_abs"}
+    # rms: an approximation by design (specular occlusion, a reflection) is held on its
+    # typical error too, not only its worst.
+    allowed = {"max_abs", "max_rel", "max_deg", "mean_deg", "mean_abs", "rms"}
     assert set(budget) <= allowed and budget, f"{snippet.relpath}: {budget}"
     assert all(value >= 0 for value in budget.values())
