@@ -20,7 +20,7 @@ pytestmark = pytest.mark.render
 # F is not held to the goal: three of its four variants are one function wherever f0 >= 0.02
 # (every material; F.schlick_f90 departs only below), so their pictures are the same by
 # design and the page says so (test below).
-HELD = ("D", "V", "specular", "diffuse", "shadow", "ao")
+HELD = ("D", "V", "specular", "diffuse", "shadow", "ao", "specocc")
 
 
 def _pictures(slot: str, cache: Path) -> dict[str, bytes]:

@@ -2,7 +2,8 @@
 so a reader sees what choosing it does rather than reading about it.
 
 A slot with a preview scene made to show it (`snippets/previews/*.toml`, PREVIEWS: a roughness
-sweep for the surface slots, long penumbrae for shadows, a small corner for AO) is shown there;
+sweep for the surface slots, long penumbrae for shadows, a small corner for AO, the same
+corner in polished metal for specular occlusion) is shown there;
 any other in the default scene where that uses the slot, else in the first example scene
 (`snippets/scenes/*.toml`) whose plan uses it, named on the page. Library snippets (sdf
 primitives, core helpers) fill no slot a scene can override, so they get no picture. A variant
@@ -231,6 +232,7 @@ PREVIEWS = {
     "diffuse": "surface",
     "shadow": "penumbra",
     "ao": "corner",
+    "specocc": "occluded_reflection",
 }
 
 
