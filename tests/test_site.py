@@ -473,3 +473,13 @@ def test_a_variants_sources_link_to_the_papers() -> None:
     linked = [x for x in listed if "](" in x]
     assert len(listed) == len(doc.sources) > len(linked)
     assert len(linked) == sum(1 for s in doc.sources if source_link(s))
+
+
+def test_the_catalog_compares_errors_on_one_scale_or_names_the_unit() -> None:
+    from glint.compiler.site.catalog_pages import _error
+
+    assert _error({"rms": 11.8, "rel_rms": 0.0062}) == "0.62 %"  # D's 1e4 peaks, relatively
+    assert _error({"rms": 1e-4, "rel_rms": 7.8e-8}) == "7.8e-08 (relative)"  # never "0.00 %"
+    assert _error({"rms": 0.31, "error_unit": "degrees"}) == "0.31°"
+    assert _error({"rms": 0.21, "error_unit": "visibility"}) == "0.21 visibility"
+    assert _error({}) == ""

@@ -317,8 +317,10 @@ def _variant_link(snippet_id: str, up: str) -> str:
 def _error(measured: Mapping[str, Any]) -> str:
     """A variant's RMS error as the index compares it across slots: relative to its reference's
     RMS where it has one (values of any scale), else with its unit (degrees, visibility)."""
-    if measured.get("rel_rms") is not None:
-        return f"{measured['rel_rms']:.2%}"
+    relative = measured.get("rel_rms")
+    if relative is not None:
+        # two significant digits either way: 0.55 %, or 7.8e-08 where a percentage reads 0.00 %
+        return f"{100 * relative:.2g} %" if relative >= 1e-3 else f"{relative:.1e} (relative)"
     if measured.get("rms") is None:
         return ""
     unit = measured.get("error_unit") or ""

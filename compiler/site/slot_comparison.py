@@ -208,11 +208,14 @@ def _bench_section(
         path = CHART_DIR / f"{slot}.png"
         result.files[path] = chart
         alt = md_text(f"cost and error of the {slot} variants")
-        error = (
-            "RMS error relative to its float64 reference's RMS"
-            if relative
-            else "RMS error against its float64 reference (one unit for the slot)"
-        )
+        units = sorted({(str(r["reference"]), str(r.get("error_unit") or "")) for r in measured})
+        if relative:
+            error = "RMS error relative to its float64 reference's RMS"
+        elif len({unit for _, unit in units}) == 1:
+            error = f"RMS error against its float64 reference, in {md_text(units[0][1])}"
+        else:  # not one scale: each reference's own unit, and the chart's colours keep them apart
+            each = "; ".join(f"{md_code(ref)}: {md_text(unit)}" for ref, unit in units)
+            error = f"RMS error against its float64 reference in that reference's unit ({each})"
         parts.append(
             f"{safe_image(alt, path_url(path, '../../'))}\n\n"
             f"Each variant's {error} over its time per call; the variants on the front "
