@@ -17,10 +17,10 @@ from contextlib import contextmanager
 from importlib.metadata import entry_points
 from importlib.metadata import version as package_version
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from glint.compiler.catalog.tiers import TIERS
-from glint.compiler.errors import GlintError, UsageError, printable
+from glint.compiler.errors import EnvironmentProblem, GlintError, InputError, UsageError, printable
 from glint.compiler.files import read_text_file
 from glint.compiler.render import limits
 from glint.compiler.target import shadertoy
@@ -91,6 +91,13 @@ def build_parser() -> argparse.ArgumentParser:
         choices=["common"],
         help="common: write the lighting library for ShaderToy's Common tab to "
         "OUTPUT.common.glsl and a short Image tab that uses it to OUTPUT (needs -o)",
+    )
+    compose.add_argument(
+        "--no-validate",
+        action="store_true",
+        help="write the shader without compiling it with glslangValidator first (by default a "
+        "shader that does not compile is an error, at the scene's file and line, and nothing "
+        "is written)",
     )
     _add_quality(compose)
     compose.set_defaults(handler=cmd_compose)
@@ -339,6 +346,8 @@ def cmd_compose(args: argparse.Namespace) -> int:
         budget=args.budget,
         params_as_uniforms=args.params_as_uniforms,
     )
+    if not args.no_validate and args.target not in LANGS:
+        _refuse_invalid(shader.validate)
     to_stdout = args.output == "-"
     if args.explain:  # beside a shader on standard output, on stderr
         (sys.stderr if to_stdout else sys.stdout).write(shader.explain())
@@ -379,6 +388,8 @@ def _compose_mesh(args: argparse.Namespace) -> int:
         sys.stdout.write(shader.explain())
     if args.output == "-":
         raise UsageError(f"--target {args.target} writes several files: give -o BASE, not -")
+    if not args.no_validate:
+        _refuse_invalid(shader.validate)
     if not args.output:
         if args.explain:
             return 0
@@ -390,6 +401,28 @@ def _compose_mesh(args: argparse.Namespace) -> int:
     written = shader.save(args.output)
     print(f"wrote {', '.join(str(p) for p in written)}: {args.target}", file=sys.stderr)
     return 0
+
+
+def _refuse_invalid(validate: Callable[[], list[Any]]) -> None:
+    """Compile what compose is about to write: a shader that does not compile is never written
+    (a GLSL error in the scene's own file would otherwise show only when pasted). Its errors go
+    to stderr at the scene's file and line, and compose exits 1. Without glslangValidator, one
+    line says the shader was not checked."""
+    try:
+        diagnostics = validate()
+    except EnvironmentProblem as problem:
+        print(f"glint: not validated: {problem}; --no-validate skips the check", file=sys.stderr)
+        return
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if not errors:
+        return
+    for diagnostic in errors:
+        print(diagnostic, file=sys.stderr)
+    count = f"{len(errors)} error{'s' if len(errors) > 1 else ''}"
+    raise InputError(
+        f"the composed shader does not compile ({count} above, at their source lines); "
+        "nothing was written. Fix the scene's file, or pass --no-validate to write it anyway"
+    )
 
 
 def _write_split(shader: Shader, output: str | None) -> int:

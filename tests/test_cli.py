@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import stat
 import subprocess
 import sys
@@ -47,6 +48,42 @@ def test_compose_to_unwritable_path_fails_cleanly(tmp_path: Path) -> None:
     assert_one_clear_line(result)
     assert "cannot write" in result.stderr and "choose a writable path" in result.stderr
     assert not out.parent.exists()
+
+
+def _scene_with_geometry(tmp_path: Path, body: str) -> Path:
+    """A scene whose distance function is the user's own file, holding `body`."""
+    (tmp_path / "field.glsl").write_text(
+        "float sceneDistance(vec3 p) {\n" + body + "    return length(p) - 1.0;\n}\n"
+    )
+    scene = tmp_path / "scene.toml"
+    scene.write_text(
+        '[geometry]\nfile = "field.glsl"\nmaterial = "m"\n'
+        "[materials.m]\nalbedo = [0.8, 0.8, 0.8]\n"
+        '[[lights]]\ntype = "directional"\ndirection = [0.3, 1.0, 0.2]\n'
+    )
+    return scene
+
+
+@pytest.mark.skipif(shutil.which("glslangValidator") is None, reason="needs glslangValidator")
+def test_compose_refuses_a_shader_that_does_not_compile_at_the_users_line(
+    tmp_path: Path,
+) -> None:
+    """Issue 28: a type error in the scene's own GLSL was written with exit 0 and showed only
+    when pasted. Compose now compiles what it writes: exit 1, the user's file and line, nothing
+    written; --no-validate writes it anyway; a sound file composes as before."""
+    scene = _scene_with_geometry(tmp_path, "    float wrong = vec2(1.0, 2.0);\n")
+    out = tmp_path / "out.glsl"
+    result = run("compose", str(scene), "-o", str(out))
+    assert result.returncode == 1 and not out.exists()
+    assert "Traceback" not in result.stderr
+    assert f"{tmp_path / 'field.glsl'}:2:" in result.stderr or "field.glsl:2:" in result.stderr
+    assert "cannot convert" in result.stderr and "--no-validate" in result.stderr
+    for target in ("webgl2", "desktop"):
+        assert run("compose", str(scene), "--target", target).returncode == 1
+    forced = run("compose", str(scene), "-o", str(out), "--no-validate")
+    assert forced.returncode == 0 and "vec2(1.0, 2.0)" in out.read_text()
+    sound = _scene_with_geometry(tmp_path, "")
+    assert run("compose", str(sound), "-o", str(out)).returncode == 0
 
 
 def test_bad_scene_exit_1_names_the_key(tmp_path: Path) -> None:
