@@ -86,6 +86,18 @@ def test_compose_refuses_a_shader_that_does_not_compile_at_the_users_line(
     assert run("compose", str(sound), "-o", str(out)).returncode == 0
 
 
+def test_a_scene_file_that_reads_a_channel_is_an_error_at_its_line(tmp_path: Path) -> None:
+    """Issue 28: iChannel0 read in the user's field sampled black with exit 0 (nothing is
+    bound to it); now one clear error names the file, the line and the channel."""
+    body = "    float bump = texture(iChannel0, p.xz).r;\n"
+    scene = _scene_with_geometry(tmp_path, body)
+    result = run("compose", str(scene), "--no-validate")
+    assert result.returncode == 1
+    assert_one_clear_line(result)
+    assert "field.glsl:1: sceneDistance reads iChannel0" in result.stderr
+    assert "sample black" in result.stderr
+
+
 def test_bad_scene_exit_1_names_the_key(tmp_path: Path) -> None:
     scene = tmp_path / "bad.toml"
     scene.write_text(

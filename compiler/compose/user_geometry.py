@@ -11,7 +11,8 @@ is what it requires, and the resolver finds it like any other requirement. The c
   material's own (id: the material's id, 0 for [geometry] material).
 
 Its names must not be the catalog's or those of glint's generated scene code: each such
-collision is an error naming both. The unit keeps the file as its origin, so `glint validate`
+collision is an error naming both. It may not read ShaderToy's channels: a scene binds nothing
+to them, and a read would sample black. The unit keeps the file as its origin, so `glint validate`
 reports a compile error at the user's file and line.
 """
 
@@ -48,6 +49,9 @@ CONTRACT = {
     ALBEDO: _Contract("vec3", ("vec3", "int", "vec3"), False),
 }
 
+# ShaderToy's texture channels: a scene binds nothing to them, so a read would sample black.
+CHANNELS = frozenset(f"iChannel{i}" for i in range(4))
+
 # The functions glint's generated scene code defines (scene_code.py, field_code.py).
 GENERATED_NAMES = frozenset(
     {"map", "materialAt", "surfaceAt", "shade", "mainImage", "subsurfaceAt", "submerged",
@@ -60,7 +64,8 @@ def user_unit(geometry: Geometry, constants: Collection[str] = ()) -> Unit:
     parse, breaks the contract or takes a name that is not its to take. `constants`: the
     scene's #define names (SUN_DIR ...), which the file may use."""
     path = geometry.path
-    symbols = analyze(geometry.source, path, provided=UNIFORM_NAMES)
+    symbols = analyze(geometry.source, path, provided=set(UNIFORM_NAMES) - CHANNELS)
+    _check_channels(symbols.functions, path)
     functions = {f.name: f for f in symbols.functions}
     _check_contract(functions, path, bool(geometry.materials))
     _check_names(symbols.defined, functions, path)
@@ -102,6 +107,19 @@ def _check_contract(functions: dict[str, FunctionDef], path: str, by_id: bool) -
             f"{path}:{functions[MATERIAL].line}: {MATERIAL} returns material ids, but the scene "
             "gives one [geometry] material; list them as [geometry.materials] (id = name)"
         )
+
+
+def _check_channels(functions: list[FunctionDef], path: str) -> None:
+    """A read of iChannelN is an error: nothing is bound to it in a composed scene, so ShaderToy
+    and glint's renderer would sample black and light a wrong picture without a word."""
+    for function in functions:
+        read = sorted(CHANNELS & (function.uses | function.calls))
+        if read:
+            raise InputError(
+                f"{path}:{function.line}: {function.name} reads {read[0]}, but a glint scene "
+                "binds nothing to ShaderToy's channels, so it would sample black; make the "
+                "pattern procedural (a noise or a hash of p)"
+            )
 
 
 def _check_requirements(requires: set[str], functions: list[FunctionDef], path: str) -> None:
