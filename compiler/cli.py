@@ -95,9 +95,10 @@ def build_parser() -> argparse.ArgumentParser:
     compose.add_argument(
         "--no-validate",
         action="store_true",
-        help="write the shader without compiling it with glslangValidator first (by default a "
-        "shader that does not compile is an error, at the scene's file and line, and nothing "
-        "is written)",
+        help="write the shader without checking it first (by default a shader that does not "
+        "compile with glslangValidator is an error, at the scene's file and line, and nothing "
+        "is written; a [geometry] field is sampled for a slope over its lipschitz and for "
+        "material ids nothing maps, each a warning)",
     )
     _add_quality(compose)
     compose.set_defaults(handler=cmd_compose)
@@ -348,6 +349,8 @@ def cmd_compose(args: argparse.Namespace) -> int:
     )
     if not args.no_validate and args.target not in LANGS:
         _refuse_invalid(shader.validate)
+    if not args.no_validate and shader.scene.geometry is not None:
+        _check_field(shader)
     to_stdout = args.output == "-"
     if args.explain:  # beside a shader on standard output, on stderr
         (sys.stderr if to_stdout else sys.stdout).write(shader.explain())
@@ -423,6 +426,21 @@ def _refuse_invalid(validate: Callable[[], list[Any]]) -> None:
         f"the composed shader does not compile ({count} above, at their source lines); "
         "nothing was written. Fix the scene's file, or pass --no-validate to write it anyway"
     )
+
+
+def _check_field(shader: Shader) -> None:
+    """Warn of what a [geometry] field promises and does not keep (compiler/verify/
+    field_checks.py): it samples the field on the GPU, so without one it says it did not."""
+    from glint.compiler.verify.field_checks import field_warnings
+
+    text = shader.text if shader.target == "shadertoy" else shader.retarget("shadertoy").text
+    try:
+        warnings = field_warnings(shader.scene, text)
+    except (EnvironmentProblem, InputError) as problem:
+        print(f"glint: the [geometry] field was not checked: {problem}", file=sys.stderr)
+        return
+    for warning in warnings:
+        print(f"glint: warning: {warning}", file=sys.stderr)
 
 
 def _write_split(shader: Shader, output: str | None) -> int:

@@ -98,6 +98,46 @@ def test_a_scene_file_that_reads_a_channel_is_an_error_at_its_line(tmp_path: Pat
     assert "sample black" in result.stderr
 
 
+@pytest.mark.render
+def test_compose_warns_of_a_lipschitz_too_small_and_an_id_nothing_maps(tmp_path: Path) -> None:
+    """Issue 28: a field steeper than its declared lipschitz rendered holes, and an id that no
+    material maps took another material, both with nothing said. Compose samples the field and
+    warns of each, with the measured slope and a point; an honest scene says nothing."""
+    (tmp_path / "bumpy.glsl").write_text(
+        "float sceneDistance(vec3 p) {\n"
+        "    return length(p) - 1.0 + 0.3 * sin(8.0 * p.x) * sin(8.0 * p.y) * sin(8.0 * p.z);\n"
+        "}\n"
+        "int sceneMaterial(vec3 p) {\n"
+        "    return p.y > 0.5 ? 1 : p.y > -0.5 ? 3 : 2;\n"
+        "}\n"
+    )
+    scene = tmp_path / "bumpy.toml"
+    text = (
+        '[geometry]\nfile = "bumpy.glsl"\nbounds = [[-1.5, -1.5, -1.5], [1.5, 1.5, 1.5]]\n'
+        '[geometry.materials]\n1 = "m"\n3 = "n"\n'
+        "[materials.m]\nalbedo = [0.8, 0.8, 0.8]\n[materials.n]\nalbedo = [0.2, 0.4, 0.8]\n"
+        '[[lights]]\ntype = "directional"\ndirection = [0.3, 1.0, 0.2]\n'
+    )
+    scene.write_text(text)
+    result = run("compose", str(scene), "-o", str(tmp_path / "out.glsl"))
+    assert result.returncode == 0, result.stderr  # warnings: the shader is still written
+    lipschitz = [line for line in result.stderr.splitlines() if "lipschitz = 1:" in line]
+    assert len(lipschitz) == 1, result.stderr
+    # |grad| reaches about 1 + 0.3 * 8 * sqrt(3) = 5.2 here; sampling finds at least 3
+    slope = float(lipschitz[0].split("changes by ")[1].split()[0])
+    assert 3.0 < slope < 5.3
+    assert "sceneMaterial returns 2 near the surface" in result.stderr
+    assert "returns 1" not in result.stderr and "returns 3" not in result.stderr
+    # declared steep enough and every id mapped: not a word
+    scene.write_text(
+        text.replace("[geometry.materials]", "lipschitz = 6.0\n[geometry.materials]").replace(
+            '1 = "m"', '1 = "m"\n2 = "m"'
+        )
+    )
+    quiet = run("compose", str(scene), "-o", str(tmp_path / "out.glsl"))
+    assert quiet.returncode == 0 and "warning" not in quiet.stderr, quiet.stderr
+
+
 def test_bad_scene_exit_1_names_the_key(tmp_path: Path) -> None:
     scene = tmp_path / "bad.toml"
     scene.write_text(
