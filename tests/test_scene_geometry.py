@@ -192,7 +192,11 @@ def test_a_compile_error_is_reported_at_the_user_file_and_line(
     glsl = "// my field\n\nfloat sceneDistance(vec3 p) {\n    return vec2(1.0);\n}\n"
     scene = _user_scene(tmp_path, glsl)
     out = tmp_path / "out.glsl"
-    assert main(["compose", str(scene), "-o", str(out)]) == 0
+    # compose compiles what it writes: the error at the user's line, nothing written
+    assert main(["compose", str(scene), "-o", str(out)]) == 1
+    assert "field.glsl:4:" in capsys.readouterr().err and not out.exists()
+    # written anyway on request, `glint validate` finds it at the same line
+    assert main(["compose", str(scene), "-o", str(out), "--no-validate"]) == 0
     assert main(["validate", str(out)]) == 1
     assert "field.glsl:4:" in capsys.readouterr().out
 
@@ -281,3 +285,53 @@ def test_the_plan_says_when_the_field_is_only_a_bound(tmp_path: Path) -> None:
         )
     user = glint.compose(_user_scene(tmp_path, DOUBLED, lipschitz=2.0))
     assert "not an exact distance" in user.plan.reasons["raymarch"]
+
+
+# A biconcave disc (a red blood cell): an ellipse revolved, its faces carved by two spheres with
+# a smooth blend. Thin and concave: a ray that grazes the dimple's rim on its way to the floor.
+CELL = """float sceneDistance(vec3 p) {
+    vec2 q = vec2(length(p.xz), p.y);
+    float disc = (length(q / vec2(1.0, 0.35)) - 1.0) * 0.35;
+    float dimples = min(length(p - vec3(0.0, 0.55, 0.0)), length(p + vec3(0.0, 0.55, 0.0))) - 0.5;
+    float h = clamp(0.5 - 0.5 * (disc + dimples) / 0.15, 0.0, 1.0);
+    return mix(disc, -dimples, h) + 0.15 * h * (1.0 - h);
+}
+"""
+
+
+@pytest.mark.render
+def test_a_long_lens_on_a_concave_field_shows_no_hairline_at_any_tier(tmp_path: Path) -> None:
+    """Issue 28: seen through a long lens (focal 5), the pixel-cone march's tolerance, an angle
+    fixed for focal 1.5, was two pixels wide: the dimple's rim caught rays meant for its floor
+    and drew a dark hairline, and the silhouette grew a dark rim (0.9 % of the pixels outliers
+    against the reference tier, 24 dark pixels inside the cell). Baked for the lens, it is half
+    a pixel again at every tier: no dark pixel inside the cell, outliers well under that."""
+    (tmp_path / "cell.glsl").write_text(CELL)
+    scene = tmp_path / "cell.toml"
+    scene.write_text(
+        '[camera]\ntype = "lookat"\nposition = [0.0, 4.0, 5.0]\ntarget = [0.0, 0.0, 0.0]\n'
+        "focal = 5.0\n"
+        '[geometry]\nfile = "cell.glsl"\nmaterial = "cell"\nlipschitz = 1.5\n'
+        "bounds = [[-1.1, -0.5, -1.1], [1.1, 0.5, 1.1]]\n"
+        "[materials.cell]\nalbedo = [0.7, 0.05, 0.04]\nroughness = 0.4\n"
+        '[[lights]]\ntype = "directional"\ndirection = [0.9, 0.35, 0.2]\nintensity = 3.0\n'
+        '[[lights]]\ntype = "sky"\nintensity = 0.5\n'
+    )
+    pictures = {}
+    for tier in ("reference", "balanced", "fast"):
+        shader = glint.compose(scene, tier=tier)
+        pictures[tier] = glint.render(shader, size=(640, 360), time=0.0).pixels
+    reference = pictures["reference"]
+    cell = (reference[..., 0] - reference[..., 2]) > 0.05
+    inside = cell.copy()
+    for _ in range(3):  # three pixels in from the silhouette
+        inside &= np.roll(inside, 1, 0) & np.roll(inside, -1, 0)
+        inside &= np.roll(inside, 1, 1) & np.roll(inside, -1, 1)
+    assert inside.sum() > 20000
+    luminance = reference.mean(axis=-1)
+    for tier in ("balanced", "fast"):
+        seen = pictures[tier].mean(axis=-1)
+        dark = (seen < luminance - 0.08) & inside
+        assert dark.sum() == 0, f"{tier}: {dark.sum()} dark pixels inside the cell"
+        outliers = ((seen < 0.5 * luminance) | (seen > 2.0 * luminance)).mean()
+        assert outliers < 0.004, f"{tier}: {outliers:.2%} outliers"

@@ -1,11 +1,12 @@
 """Parameter baking, the stage after planning: the values of snippet parameters that the scene
 sets (camera, environment, medium) and those computed from it (the nine spherical-harmonic
-coefficients of the environment for `irradiance.sh9`). The emitter writes them as #defines;
-snippets' defaults cover the rest."""
+coefficients of the environment for `irradiance.sh9`; a pixel-cone march's tolerance for the
+camera's focal length). The emitter writes them as #defines; snippets' defaults cover the
+rest."""
 
 from __future__ import annotations
 
-from glint.compiler.catalog.loader import glsl_value
+from glint.compiler.catalog.loader import glsl_value, load_catalog
 from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.scene import LookAtCamera, OrbitCamera, Scene
 from glint.compiler.compose.spherical_harmonics import project_sh9, sh9_params, snippet_environment
@@ -17,7 +18,27 @@ def bake(scene: Scene, plan: Plan) -> dict[str, str]:
     lit_by_environment = any(light.type == "environment" for light in scene.lights)
     if plan.choices.get("irradiance") == "irradiance.sh9" and lit_by_environment:
         params |= _sh9_params(plan.choices["env"], params)
+    params |= _march_pixel(scene, plan)
     return params
+
+
+# The focal length a pixel-cone march's MARCH_PIXEL default is for: there it is about half a
+# pixel at 360 lines (raymarch.cone).
+DEFAULT_FOCAL = 1.5
+
+
+def _march_pixel(scene: Scene, plan: Plan) -> dict[str, str]:
+    """MARCH_PIXEL for the scene's lens: the march stops within MARCH_PIXEL · t of a surface,
+    an angle, and a pixel's angle shrinks as the focal length grows. Left at its default, a
+    long lens (focal 5) let the march stop 2 pixels off the surface: silhouettes grew a dark
+    rim and a concave dimple's rim caught rays meant for its floor (hairlines). Scaled by
+    DEFAULT_FOCAL / focal it stays the same share of a pixel."""
+    march = plan.choices.get("raymarch")
+    param = load_catalog().get(march).params.get("MARCH_PIXEL") if march else None
+    if param is None or scene.camera is None:
+        return {}
+    pixel = float(param.default) * DEFAULT_FOCAL / scene.camera.focal
+    return {"MARCH_PIXEL": glsl_value(pixel, "float")}
 
 
 def _sh9_params(env_id: str, params: dict[str, str]) -> dict[str, str]:
