@@ -335,3 +335,21 @@ def test_a_long_lens_on_a_concave_field_shows_no_hairline_at_any_tier(tmp_path: 
         assert dark.sum() == 0, f"{tier}: {dark.sum()} dark pixels inside the cell"
         outliers = ((seen < 0.5 * luminance) | (seen > 2.0 * luminance)).mean()
         assert outliers < 0.004, f"{tier}: {outliers:.2%} outliers"
+
+
+def test_every_name_the_file_shares_with_glint_is_reported_at_once(tmp_path: Path) -> None:
+    """Issue 28: a port from ShaderToy met its clashes one per run (`map`, then `sdBox`, then
+    `PI` ...). One error now lists them all, each at its line."""
+    glsl = (
+        "float map(vec3 p) { return length(p) - 1.0; }\n"
+        "float sdBox(vec3 p, vec3 b) { return 0.0; }\n"
+        "#define PI 3.14159\n"
+        "float sceneDistance(vec3 p) { return map(p); }\n"
+    )
+    with pytest.raises(InputError) as raised:
+        glint.compose(_user_scene(tmp_path, glsl))
+    message = str(raised.value)
+    assert "3 names are glint's as well" in message
+    assert "field.glsl:1: `map` is also a function of glint's generated scene code" in message
+    assert "field.glsl:2: `sdBox` is also defined by the catalog's sdf.box" in message
+    assert "`PI` is also defined by the catalog's core.constants" in message

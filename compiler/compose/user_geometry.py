@@ -138,18 +138,24 @@ def _check_requirements(requires: set[str], functions: list[FunctionDef], path: 
 
 
 def _check_names(defined: set[str], functions: dict[str, FunctionDef], path: str) -> None:
+    """Every name of the file that glint's code also takes, all in one error (a port from
+    ShaderToy often has several: `map`, `diffuse`, `PI` ...), in the order of the file."""
     catalog = load_catalog()
+    clashes: list[tuple[int, str]] = []
     for name in sorted(defined):
-        where = f"{path}:{functions[name].line}" if name in functions else path
+        line = functions[name].line if name in functions else 0
+        where = f"{path}:{line}" if line else path
         if name in GENERATED_NAMES or name.startswith("object") and name[6:].isdigit():
-            raise InputError(
-                f"{where}: `{name}` is also a function of glint's generated scene code; "
-                "rename yours"
-            )
+            message = f"`{name}` is also a function of glint's generated scene code; rename yours"
+            clashes.append((line, f"{where}: {message}"))
+            continue
         providers = catalog.providers(name)
         if providers:
             theirs = ", ".join(f"{s.id} ({s.relpath})" for s in providers)
-            raise InputError(
-                f"{where}: `{name}` is also defined by the catalog's {theirs}; rename yours, "
-                "or delete it and call the catalog's"
-            )
+            message = f"`{name}` is also defined by the catalog's {theirs}; rename yours, or "
+            clashes.append((line, f"{where}: {message}delete it and call the catalog's"))
+    if len(clashes) == 1:
+        raise InputError(clashes[0][1])
+    if clashes:
+        lines = "\n".join(f"  {message}" for _, message in sorted(clashes))
+        raise InputError(f"{path}: {len(clashes)} names are glint's as well:\n{lines}")
