@@ -560,7 +560,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     shader: glint.Shader | glint.MeshShader | Path = Path(args.input)
     if args.input.endswith(".toml"):
         overrides = _overrides(args.variant)
-        from glint.compiler.compose.scene import load_scene
+        from glint.compiler.scene.model import load_scene
 
         scene = load_scene(shader)  # read once: a mesh scene's files are read with it
         if scene.is_mesh:  # rasterized: the programs llvmpipe runs

@@ -34,6 +34,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("files", "markdown", "collector"),
     ("glsl",),
     ("target", "evaluator"),  # the evaluator runs GLSL on the CPU: it needs the front end only
+    ("scene",),  # the scene model: what a scene file says, validated; no snippet, no code
     ("catalog",),
     ("compose",),  # bakes parameters with the evaluator (spherical harmonics of the sky)
     ("render",),

@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from glint.compiler.compose.scene import default_scene_path, load_scene
+from glint.compiler.scene.model import default_scene_path, load_scene
 
 EXAMPLES = sorted(default_scene_path().parent.glob("*.toml"))
 MESH_EXAMPLES = [path for path in EXAMPLES if load_scene(path).is_mesh]

@@ -7,8 +7,8 @@ from typing import Any
 
 import pytest
 
-from glint.compiler.compose.scene import scene_from_dict
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import scene_from_dict
 
 
 def base_scene(**more: Any) -> dict[str, Any]:

@@ -16,9 +16,9 @@ import pytest
 from PIL import Image as PILImage
 
 import glint
-from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import InputError
 from glint.compiler.render import render as render_rgba
+from glint.compiler.scene.model import load_scene
 
 ROOT = Path(__file__).parent.parent
 DEFAULT = ROOT / "snippets" / "scenes" / "default.toml"

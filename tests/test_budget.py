@@ -14,8 +14,8 @@ from glint.compiler.compose import explain as explain_module
 from glint.compiler.compose import planner as planner_module
 from glint.compiler.compose.budget import calls_per_pixel, front, within_budget
 from glint.compiler.compose.planner import plan
-from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import load_scene
 
 CATALOG = load_catalog()
 

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from glint.compiler.compose.pipeline import compose, compose_scene, glint_version
-from glint.compiler.compose.scene import parse_scene
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import parse_scene
 from glint.compiler.target.glslang import validate
 
 SCENES = "tests/scenes"

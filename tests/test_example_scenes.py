@@ -11,8 +11,8 @@ from mesh_scenes import MESH_EXAMPLES, example_params
 
 import glint
 from glint.compiler.compose.pipeline import compose
-from glint.compiler.compose.scene import default_scene_path
 from glint.compiler.render import image_stats, render
+from glint.compiler.scene.model import default_scene_path
 from glint.compiler.target.glslang import validate
 
 SCENES = sorted(default_scene_path().parent.glob("*.toml"))

@@ -11,15 +11,11 @@ import numpy as np
 import pytest
 from mesh_scenes import mesh_scene, raymarched_scene
 
-from glint.compiler.compose.mesh_geometry import (
-    builtin_mesh,
-    model_matrix,
-    normal_matrix,
-    smooth_normals,
-)
-from glint.compiler.compose.scene import parse_scene, scene_from_dict
-from glint.compiler.compose.shapes import Mesh
+from glint.compiler.compose.mesh_geometry import builtin_mesh, model_matrix, normal_matrix
 from glint.compiler.errors import InputError
+from glint.compiler.scene.mesh_files import smooth_normals
+from glint.compiler.scene.model import parse_scene, scene_from_dict
+from glint.compiler.scene.shapes import Mesh
 
 MATERIAL = '\nmaterial = "m"\n[materials.m]\nalbedo = [1.0, 1.0, 1.0]\n'
 

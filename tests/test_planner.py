@@ -21,7 +21,7 @@ from glint.compiler.cli import main
 from glint.compiler.compose.explain import explain
 from glint.compiler.compose.pipeline import compose_scene
 from glint.compiler.compose.planner import plan
-from glint.compiler.compose.scene import Scene, load_scene
+from glint.compiler.scene.model import Scene, load_scene
 
 CATALOG = load_catalog()
 # The raymarched examples here; the mesh ones (a plan per material) below.

@@ -18,9 +18,9 @@ from site_browser import MAKE_TEST
 
 from glint.compiler.bench.scenes import example_scenes
 from glint.compiler.compose.pipeline import compose_scene
-from glint.compiler.compose.scene import default_scene_path, load_scene
 from glint.compiler.render.images import flip_error
 from glint.compiler.render.runner import render_full
+from glint.compiler.scene.model import default_scene_path, load_scene
 
 if TYPE_CHECKING:
     from playwright.sync_api import Browser

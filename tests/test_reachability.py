@@ -17,9 +17,9 @@ from glint.compiler.compose.emitter import emit
 from glint.compiler.compose.pipeline import compose, compose_scene
 from glint.compiler.compose.planner import Plan
 from glint.compiler.compose.reachability import prune_unreachable
-from glint.compiler.compose.scene import default_scene_path, parse_scene
 from glint.compiler.compose.units import GENERATED, Unit, generated
 from glint.compiler.glsl import parse_source
+from glint.compiler.scene.model import default_scene_path, parse_scene
 from glint.compiler.target.glslang import validate
 from glint.compiler.target.sourcemap import build_line_map
 

@@ -8,9 +8,9 @@ from pathlib import Path
 import pytest
 
 from glint.compiler.compose.pipeline import compose
-from glint.compiler.compose.scene import default_scene_path
 from glint.compiler.render import render
 from glint.compiler.render.images import flip_error, load_png
+from glint.compiler.scene.model import default_scene_path
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from glint.compiler.compose.scene import load_scene, parse_scene
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import load_scene, parse_scene
 
 BASE = """
 [[objects]]

@@ -14,9 +14,9 @@ from mesh_scenes import example_params
 from glint.compiler.compose.bounds import shape_bounds, span_unit
 from glint.compiler.compose.field_code import rotation_matrix
 from glint.compiler.compose.pipeline import compose_scene
-from glint.compiler.compose.scene import load_scene, parse_scene
 from glint.compiler.errors import InputError
 from glint.compiler.render import render_full
+from glint.compiler.scene.model import load_scene, parse_scene
 
 EXAMPLES = Path(__file__).parent.parent / "snippets" / "scenes"
 WHOLE_RAY = "vec2 sceneSpan(vec3 ro, vec3 rd) {\n    return vec2(0.0, 1e30);\n}\n"

@@ -11,7 +11,7 @@ import pytest
 from scene_inputs import base_scene
 
 import glint
-from glint.compiler.compose.scene import scene_from_dict
+from glint.compiler.scene.model import scene_from_dict
 
 
 def test_the_mesh_camera_has_a_basis_straight_down_and_up() -> None:

@@ -13,9 +13,9 @@ from typing import Any
 
 import pytest
 
-from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import InputError
 from glint.compiler.files import MiB, read_user_file
+from glint.compiler.scene.model import load_scene
 
 
 def _geometry_scene(tmp_path: Path, file: str) -> Path:

@@ -22,9 +22,9 @@ from hypothesis import strategies as st
 from pydantic import BaseModel
 
 import glint
-from glint.compiler.compose.scene import Scene, default_scene_path, parse_scene
-from glint.compiler.compose.shapes import Mesh
 from glint.compiler.errors import GlintError
+from glint.compiler.scene.model import Scene, default_scene_path, parse_scene
+from glint.compiler.scene.shapes import Mesh
 
 MATERIALS = ["m", "n"]  # the names objects use, so that many scenes get past the references
 HOSTILE = [

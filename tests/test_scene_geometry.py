@@ -14,9 +14,9 @@ import pytest
 import glint
 from glint.compiler.cli import main
 from glint.compiler.compose.field_code import rotation_matrix
-from glint.compiler.compose.scene import scene_from_dict
 from glint.compiler.errors import InputError
 from glint.compiler.evaluator.api import evaluate
+from glint.compiler.scene.model import scene_from_dict
 
 UNIFORMS = {"iTime": 0.0, "iResolution": np.array([64.0, 36.0, 1.0]), "iMouse": np.zeros(4)}
 MATERIALS = {"a": {"albedo": [0.8, 0.8, 0.8]}, "b": {"albedo": [0.2, 0.4, 0.8]}}

@@ -9,7 +9,7 @@ from pathlib import Path
 from scene_inputs import base_scene, error
 
 import glint
-from glint.compiler.compose.scene_values import comment_text
+from glint.compiler.scene.values import comment_text
 from glint.compiler.target.glslang import validate
 
 HOSTILE = "x */ vec3 injected; /* \n#error injected\r\n\\\u2028\u202e\x00 y\\"

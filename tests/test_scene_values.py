@@ -1,4 +1,4 @@
-"""Every value of a scene is checked in one place (compiler/compose/scene_values.py): a number
+"""Every value of a scene is checked in one place (compiler/scene/values.py): a number
 that is not a finite float32, a direction float32 cannot normalise, groups nested past the
 stated depth each get one InputError naming the key, the value and what was expected, and
 every walk over a scene survives the deepest scene allowed."""
@@ -16,9 +16,9 @@ import pytest
 from scene_inputs import base_scene, error
 
 import glint
-from glint.compiler.compose.scene import parse_scene, scene_from_dict
-from glint.compiler.compose.scene_values import MAX_GROUP_DEPTH
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import parse_scene, scene_from_dict
+from glint.compiler.scene.values import MAX_GROUP_DEPTH
 
 ROOT = Path(__file__).parent.parent
 

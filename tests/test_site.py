@@ -308,7 +308,7 @@ def test_accuracy_section_from_plain_data() -> None:
 def test_scene_reference_has_every_key_and_the_gallery_every_example_scene() -> None:
     from pathlib import PurePosixPath
 
-    from glint.compiler.compose.scene import Scene
+    from glint.compiler.scene.model import Scene
     from glint.compiler.site.scene_pages import example_scenes, gallery_page, scene_reference_page
 
     page = scene_reference_page()

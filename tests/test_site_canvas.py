@@ -293,7 +293,7 @@ def test_instant_navigation_starts_the_next_pages_canvas(
 def test_every_example_scene_runs_live_in_the_gallery(
     live_site: LiveSite, browser_page: tuple[Page, PageLog]
 ) -> None:
-    from glint.compiler.compose.scene import load_scene
+    from glint.compiler.scene.model import load_scene
     from glint.compiler.site.scene_pages import example_scenes
 
     page, log = browser_page

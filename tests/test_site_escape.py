@@ -289,7 +289,7 @@ def test_the_real_catalog_reads_as_before(render: Any) -> None:
     """Every summary and source of the real catalog shows the same text as before the
     escaping (when it went in as HTML-escaped Markdown), and the scene model's descriptions
     keep their code spans."""
-    from glint.compiler.compose.scene import Scene
+    from glint.compiler.scene.model import Scene
 
     catalog = glint.catalog().values()
     values = [s.summary for s in catalog] + [source for s in catalog for source in s.sources]

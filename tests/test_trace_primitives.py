@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from glint.compiler.catalog.loader import load_catalog
-from glint.compiler.compose.scene import parse_scene
 from glint.compiler.compose.trace_code import analytic, scene_primitives
 from glint.compiler.evaluator.api import evaluate
+from glint.compiler.scene.model import parse_scene
 from glint.compiler.verify.references.scenes import Box, Ground, Sphere
 from glint.compiler.verify.references.trace import clearance, first_hit
 

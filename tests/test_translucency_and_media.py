@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from glint.compiler.compose.pipeline import compose_scene
-from glint.compiler.compose.scene import parse_scene
 from glint.compiler.errors import InputError
 from glint.compiler.render import render
+from glint.compiler.scene.model import parse_scene
 
 # A sphere seen head-on against the light: the camera on +z looks at the origin, the key light
 # shines from straight behind the sphere (toward the light is −z). Linear output (no tone

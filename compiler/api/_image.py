@@ -18,7 +18,7 @@ from ._shader import Shader, compose, is_source, load_scene
 if TYPE_CHECKING:
     import numpy as np
 
-    from glint.compiler.compose.scene import Scene
+    from glint.compiler.scene.model import Scene
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -142,7 +142,7 @@ def _mesh_shader(shader: object) -> MeshShader | None:
         return None
     if isinstance(shader, str | os.PathLike) and not _args.path("shader", shader).endswith(".toml"):
         return None
-    from glint.compiler.compose.scene import Scene
+    from glint.compiler.scene.model import Scene
 
     if not isinstance(shader, str | os.PathLike | Mapping | Scene):
         return None
@@ -164,7 +164,7 @@ def _source(shader: object) -> str:
     if isinstance(shader, str | os.PathLike):
         path = _args.path("shader", shader)
         return compose(path).text if path.endswith(".toml") else read_text_file(path)
-    from glint.compiler.compose.scene import Scene
+    from glint.compiler.scene.model import Scene
 
     if isinstance(shader, Mapping | Scene):
         return compose(shader).text

@@ -18,8 +18,8 @@ from ._shader import _check_choice, load_scene
 
 if TYPE_CHECKING:
     from glint.compiler.compose.mesh_pipeline import MeshComposition, MeshProgram
-    from glint.compiler.compose.scene import Scene
     from glint.compiler.render.runner import RenderResult
+    from glint.compiler.scene.model import Scene
     from glint.compiler.target.glslang import Diagnostic
 
     from ._shader import SceneInput
@@ -116,8 +116,8 @@ def draw_mesh_shader(
 
     from glint.compiler.compose.mesh_camera import camera_matrices, depth_range, eye_and_target
     from glint.compiler.compose.mesh_geometry import mesh_arrays, model_matrix, normal_matrix
-    from glint.compiler.compose.shapes import Mesh
     from glint.compiler.render.mesh_runner import MeshDraw, MeshView, render_meshes
+    from glint.compiler.scene.shapes import Mesh
 
     draws = []
     world = []

@@ -21,10 +21,10 @@ COMPOSE_TARGETS = TARGETS + LANGS
 
 if TYPE_CHECKING:
     from glint.compiler.compose.planner import Plan
-    from glint.compiler.compose.scene import Scene
     from glint.compiler.compose.split import SplitShader
     from glint.compiler.compose.uniform_params import UniformParam
     from glint.compiler.compose.units import Unit
+    from glint.compiler.scene.model import Scene
     from glint.compiler.target.glslang import Diagnostic
 
     # What `compose` takes for a scene.
@@ -154,7 +154,7 @@ def compose(
     """Compose a scene into one shader, as `glint compose` does.
 
     `scene` is the path of a scene TOML file, a dict with the same structure as the TOML, a
-    `glint.compiler.compose.scene.Scene`, or None for the embedded default scene. `target`,
+    `glint.compiler.scene.model.Scene`, or None for the embedded default scene. `target`,
     `tier`, `variants` ({slot: variant}) and `budget` (ns per pixel) are the command's
     `--target`, `--tier`, `--variant SLOT=VARIANT` and `--budget`; `params_as_uniforms` is
     `--params-as-uniforms` (webgl2 only). `target` "hlsl" or "msl" converts the shadertoy
@@ -207,7 +207,7 @@ def _converted(text: str, target: str, scene_name: str) -> str:
 
 def load_scene(scene: SceneInput) -> Scene:
     """The validated scene of a path, a dict, a Scene or None (the embedded default)."""
-    from glint.compiler.compose import scene as scenes
+    from glint.compiler.scene import model as scenes
 
     if scene is None:
         return scenes.load_scene(None)
@@ -216,7 +216,7 @@ def load_scene(scene: SceneInput) -> Scene:
     if isinstance(scene, scenes.Scene):
         return scene
     if isinstance(scene, Mapping):
-        from glint.compiler.compose.scene import scene_from_dict
+        from glint.compiler.scene.model import scene_from_dict
 
         return scene_from_dict(scene)
     raise UsageError(

@@ -60,10 +60,10 @@ import numpy as np
 from glint.compiler.bench.variants import is_cpu_renderer
 from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.compose.pipeline import compose_scene
-from glint.compiler.compose.scene import load_scene
 from glint.compiler.errors import EnvironmentProblem, InputError
 from glint.compiler.render import render_full
 from glint.compiler.render.images import flip_error, flip_map, flip_summary, outlier_mask
+from glint.compiler.scene.model import load_scene
 from glint.compiler.target.glslang import spirv_instruction_count
 
 TEMPLATE = "template.glsl"

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from glint.compiler.catalog.loader import glsl_value, load_catalog
 from glint.compiler.compose.planner import Plan
-from glint.compiler.compose.scene import LookAtCamera, OrbitCamera, Scene
 from glint.compiler.compose.spherical_harmonics import project_sh9, sh9_params, snippet_environment
+from glint.compiler.scene.model import LookAtCamera, OrbitCamera, Scene
 
 
 def bake(scene: Scene, plan: Plan) -> dict[str, str]:

@@ -7,7 +7,7 @@ the last. `span_unit` writes that as `sceneSpan(ro, rd)`, which the bounded marc
 Each shape's box is taken in its own frame (from its size), then through its scale, rotation
 and position (the box of the eight turned corners). Groups: a union holds its parts' boxes, an
 intersection lies in each of them, a subtraction in its first part's; a smooth blend grows a
-union by at most blend/4 (compose/shapes.py), taken as the whole blend. A repetition spreads its
+union by at most blend/4 (scene/shapes.py), taken as the whole blend. A repetition spreads its
 parts' box over its copies. A plane is unbounded, and so is the user's own field unless its
 [geometry] says where it lies.
 """
@@ -20,7 +20,9 @@ import numpy as np
 
 from glint.compiler.catalog.loader import glsl_value
 from glint.compiler.compose.field_code import rotation_matrix
-from glint.compiler.compose.shapes import (
+from glint.compiler.compose.trace_code import analytic
+from glint.compiler.compose.units import Unit, generated
+from glint.compiler.scene.shapes import (
     Box,
     Capsule,
     Cone,
@@ -34,8 +36,6 @@ from glint.compiler.compose.shapes import (
     Sphere,
     Torus,
 )
-from glint.compiler.compose.trace_code import analytic
-from glint.compiler.compose.units import Unit, generated
 
 Bounds = tuple[np.ndarray, np.ndarray]  # (lo, hi) corners
 SPAN = "sceneSpan"

@@ -19,9 +19,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from glint.compiler.catalog.measurements import Measurements, VariantCost
-from glint.compiler.compose.scene import DirectionalLight, EnvironmentLight, PointLight, Scene
 from glint.compiler.compose.scene_slots import SlotUse
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import DirectionalLight, EnvironmentLight, PointLight, Scene
 
 
 @dataclass(frozen=True)

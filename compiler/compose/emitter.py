@@ -13,9 +13,9 @@ from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog, glsl_value
 from glint.compiler.compose.planner import Plan
-from glint.compiler.compose.scene_values import comment_text
 from glint.compiler.compose.uniform_params import UniformParam
 from glint.compiler.compose.units import CONSTANTS, GENERATED, Unit, generated
+from glint.compiler.scene.values import comment_text
 from glint.compiler.target import shadertoy
 from glint.compiler.target.sourcemap import source_marker
 

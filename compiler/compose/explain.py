@@ -6,8 +6,8 @@ from __future__ import annotations
 from glint.compiler.catalog.measurements import load_measurements
 from glint.compiler.compose.budget import calls_per_pixel, estimated_cost
 from glint.compiler.compose.planner import Plan
-from glint.compiler.compose.scene import Scene
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import Scene
 
 
 def explain(scene: Scene, plan: Plan) -> str:

@@ -16,7 +16,7 @@ import math
 from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
-from glint.compiler.compose.shapes import (
+from glint.compiler.scene.shapes import (
     Box,
     Capsule,
     Cone,

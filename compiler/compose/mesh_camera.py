@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.compose.scene import OrbitCamera, Scene
+from glint.compiler.scene.model import OrbitCamera, Scene
 
 
 @dataclass(frozen=True)

@@ -20,10 +20,10 @@ from glint.compiler.compose.explain import explain
 from glint.compiler.compose.mesh_code import background_unit, ignored, lit_scene, mesh_code
 from glint.compiler.compose.pipeline import assemble, emit_shader, glint_version
 from glint.compiler.compose.planner import Plan, plan
-from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.scene_slots import SlotUse
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError, UsageError
+from glint.compiler.scene.model import Scene
 from glint.compiler.target.glslang import Diagnostic, validate, validate_stage
 from glint.compiler.target.mesh import (
     MESH_TARGETS,

@@ -14,7 +14,6 @@ from glint.compiler.compose.emitter import Shader, emit, parameter_unit
 from glint.compiler.compose.planner import Plan, plan
 from glint.compiler.compose.reachability import ROOTS, prune_unreachable
 from glint.compiler.compose.resolver import resolve
-from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.compose.scene_code import generate
 from glint.compiler.compose.uniform_params import (
     UniformParam,
@@ -26,6 +25,7 @@ from glint.compiler.compose.uniform_params import (
 )
 from glint.compiler.compose.units import CONSTANTS, Unit
 from glint.compiler.errors import InputError, UsageError
+from glint.compiler.scene.model import Scene, load_scene
 
 DERIVATIVES = re.compile(r"\b(dFdx|dFdy|fwidth)\s*\(")
 

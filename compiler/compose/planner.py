@@ -25,12 +25,12 @@ from glint.compiler.compose.budget import (
     estimated_cost,
     within_budget,
 )
-from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.scene_code import generate
 from glint.compiler.compose.scene_slots import SlotUse, slot_uses
 from glint.compiler.compose.trace_code import QUERIES, TRACE_UNIT
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import Scene
 
 
 @dataclass

@@ -13,16 +13,6 @@ from glint.compiler.catalog.loader import glsl_float, glsl_value
 from glint.compiler.compose.bounds import span_unit
 from glint.compiler.compose.field_code import ObjectCode, object_code
 from glint.compiler.compose.knobs import UniformParam
-from glint.compiler.compose.scene import (
-    BackLight,
-    BounceLight,
-    DirectionalLight,
-    EnvironmentLight,
-    Material,
-    PointLight,
-    Scene,
-    SkyLight,
-)
 from glint.compiler.compose.trace_code import trace_unit
 from glint.compiler.compose.units import Unit, generated
 from glint.compiler.compose.user_geometry import (
@@ -33,6 +23,16 @@ from glint.compiler.compose.user_geometry import (
     user_unit,
 )
 from glint.compiler.errors import InputError
+from glint.compiler.scene.model import (
+    BackLight,
+    BounceLight,
+    DirectionalLight,
+    EnvironmentLight,
+    Material,
+    PointLight,
+    Scene,
+    SkyLight,
+)
 
 
 @dataclass

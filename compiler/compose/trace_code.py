@@ -21,8 +21,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
-from glint.compiler.compose.shapes import Box, Placed, Plane, Sphere
 from glint.compiler.compose.units import Unit, generated
+from glint.compiler.scene.shapes import Box, Placed, Plane, Sphere
 
 QUERIES = ["traceScene", "sceneClearance", "sceneNormal"]
 TRACE_UNIT = "scene.trace"

@@ -23,11 +23,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from glint.compiler.catalog.loader import load_catalog
-from glint.compiler.compose.scene import Geometry
-from glint.compiler.compose.scene_values import marker_path
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import FunctionDef, analyze
+from glint.compiler.scene.model import Geometry
+from glint.compiler.scene.values import marker_path
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 
 DISTANCE = "sceneDistance"

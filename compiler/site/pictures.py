@@ -27,9 +27,9 @@ from pathlib import Path, PurePosixPath
 import glint
 from glint.compiler.catalog.loader import snippets_root
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.compose.scene import load_scene
 from glint.compiler.files import write_atomic
 from glint.compiler.markdown import md_code
+from glint.compiler.scene.model import load_scene
 
 log = logging.getLogger(__name__)
 

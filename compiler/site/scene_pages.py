@@ -22,7 +22,6 @@ import numpy as np
 import glint
 from glint.compiler.catalog.loader import snippets_root
 from glint.compiler.catalog.tiers import TIERS, tier_choice, tier_table
-from glint.compiler.compose.scene import Scene, load_scene
 from glint.compiler.markdown import (
     fenced,
     md_code,
@@ -35,6 +34,7 @@ from glint.compiler.markdown import (
     url_part,
 )
 from glint.compiler.render.images import flip_error, png_pixels
+from glint.compiler.scene.model import Scene, load_scene
 
 from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
 from .measured import load_bench

@@ -23,9 +23,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.compose.scene import Scene
 from glint.compiler.compose.user_geometry import DISTANCE, MATERIAL
 from glint.compiler.render import render
+from glint.compiler.scene.model import Scene
 
 GRID = 24  # points per axis
 STEP = 1e-3  # the finite difference, as a share of the box's diagonal

@@ -15,7 +15,10 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, Field, PrivateAttr, ValidationError, model_validator
 
-from glint.compiler.compose.scene_values import (
+from glint.compiler.errors import InputError
+from glint.compiler.files import MiB, read_user_text
+from glint.compiler.scene.shapes import SHAPE_TAGS, Mesh, Shape, Strict, exact, parts
+from glint.compiler.scene.values import (
     DIRECTION_RANGE,
     AtLeastOne,
     Color,
@@ -31,9 +34,6 @@ from glint.compiler.compose.scene_values import (
     nesting_problem,
     shown,
 )
-from glint.compiler.compose.shapes import SHAPE_TAGS, Mesh, Shape, Strict, exact, parts
-from glint.compiler.errors import InputError
-from glint.compiler.files import MiB, read_user_text
 
 # The largest files a scene reads: its own TOML and a [geometry] GLSL file (a scene or a
 # distance function of a few MiB is already far beyond what anyone writes by hand).
@@ -541,7 +541,7 @@ def scene_from_dict(data: Mapping[str, Any], filename: str = "<scene>") -> Scene
 
 def _read_meshes(scene: Scene, base: Path) -> None:
     """Read the mesh files of the scene's objects, relative to the scene's folder `base`."""
-    from glint.compiler.compose.mesh_geometry import read_mesh_file
+    from glint.compiler.scene.mesh_files import read_mesh_file
 
     for i, obj in enumerate(scene.objects):
         if isinstance(obj, Mesh) and obj.file is not None:

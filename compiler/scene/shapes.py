@@ -13,7 +13,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, model_validator
 
-from glint.compiler.compose.scene_values import (
+from glint.compiler.scene.values import (
     NonNegative,
     NonNegativeVec3,
     Number,
@@ -212,7 +212,7 @@ class Mesh(Placed):
             raise ValueError("subdivisions refines a builtin shape, not a mesh file")
         return self
 
-    # The file's triangles (mesh_geometry.MeshArrays), read when the scene is loaded.
+    # The file's triangles (scene/mesh_files.py, MeshArrays), read when the scene is loaded.
     _arrays: Any = PrivateAttr(None)
 
     @property
