@@ -15,7 +15,7 @@ from glint import compose_mesh
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.compose.emitter import emit
 from glint.compiler.compose.pipeline import compose, compose_scene
-from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.plan import Plan
 from glint.compiler.compose.reachability import prune_unreachable
 from glint.compiler.compose.units import GENERATED, Unit, generated
 from glint.compiler.glsl import parse_source

@@ -20,7 +20,7 @@ from . import _args
 COMPOSE_TARGETS = TARGETS + LANGS
 
 if TYPE_CHECKING:
-    from glint.compiler.compose.planner import Plan
+    from glint.compiler.compose.plan import Plan
     from glint.compiler.compose.split import SplitShader
     from glint.compiler.compose.uniform_params import UniformParam
     from glint.compiler.compose.units import Unit

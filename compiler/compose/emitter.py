@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog, glsl_value
-from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.plan import Plan
 from glint.compiler.compose.uniform_params import UniformParam
 from glint.compiler.compose.units import CONSTANTS, GENERATED, Unit, generated
 from glint.compiler.scene.values import comment_text

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from glint.compiler.catalog.measurements import load_measurements
 from glint.compiler.compose.budget import calls_per_pixel, estimated_cost
-from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.plan import Plan
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import Scene
 

@@ -19,7 +19,8 @@ from glint.compiler.compose.emitter import Shader, header, unit_blocks
 from glint.compiler.compose.explain import explain
 from glint.compiler.compose.mesh_code import background_unit, ignored, lit_scene, mesh_code
 from glint.compiler.compose.pipeline import assemble, emit_shader, glint_version
-from glint.compiler.compose.planner import Plan, plan
+from glint.compiler.compose.plan import Plan
+from glint.compiler.compose.planner import plan
 from glint.compiler.compose.scene_slots import SlotUse
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError, UsageError

@@ -11,7 +11,8 @@ from pathlib import Path
 from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
 from glint.compiler.compose.bake import bake
 from glint.compiler.compose.emitter import Shader, emit, parameter_unit
-from glint.compiler.compose.planner import Plan, plan
+from glint.compiler.compose.plan import Plan
+from glint.compiler.compose.planner import plan
 from glint.compiler.compose.reachability import ROOTS, prune_unreachable
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.scene_code import generate

@@ -13,7 +13,6 @@ fails loudly if the generated code reaches a slot the planner did not expect.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog
 from glint.compiler.catalog.measurements import VariantCost, load_measurements
@@ -25,21 +24,13 @@ from glint.compiler.compose.budget import (
     estimated_cost,
     within_budget,
 )
+from glint.compiler.compose.plan import Plan
 from glint.compiler.compose.scene_code import generate
-from glint.compiler.compose.scene_slots import SlotUse, slot_uses
+from glint.compiler.compose.scene_slots import slot_uses
 from glint.compiler.compose.trace_code import QUERIES, TRACE_UNIT
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import Scene
-
-
-@dataclass
-class Plan:
-    tier: str
-    choices: dict[str, str] = field(default_factory=dict)  # slot in use -> snippet id
-    reasons: dict[str, str] = field(default_factory=dict)  # slot -> why that variant
-    params: dict[str, str] = field(default_factory=dict)  # #define name -> GLSL value
-    uses: dict[str, SlotUse] = field(default_factory=dict)  # every slot: in or out, and why
 
 
 def plan(

@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 
 from glint.compiler.compose.emitter import emit
-from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.plan import Plan
 from glint.compiler.compose.units import Unit
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 

@@ -10,7 +10,7 @@ from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import tier_table
 from glint.compiler.compose.emitter import emit, parameter_unit
-from glint.compiler.compose.planner import Plan
+from glint.compiler.compose.plan import Plan
 from glint.compiler.compose.resolver import resolve
 from glint.compiler.compose.trace_code import QUERIES, Analytic, trace_glsl
 from glint.compiler.compose.units import Unit, generated
