@@ -664,7 +664,7 @@ def cmd_catalog(args: argparse.Namespace) -> int:
 
 
 def cmd_catalog_show(args: argparse.Namespace) -> int:
-    from glint.compiler.compose.catalog_cross import show_in
+    from glint.compiler.catalog_tools.cross import show_in
 
     sys.stdout.write(show_in(args.id, args.lang))
     return 0

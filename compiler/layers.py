@@ -37,6 +37,7 @@ LAYERS: list[tuple[str, ...]] = [
     ("scene",),  # the scene model: what a scene file says, validated; no snippet, no code
     ("catalog",),
     ("compose",),  # bakes parameters with the evaluator (spherical harmonics of the sky)
+    ("catalog_tools",),  # `glint catalog show` and its HLSL/MSL: a snippet composed to be shown
     ("render",),
     ("verify",),
     ("bench",),
@@ -61,7 +62,7 @@ class Import:
 
 
 def package_of(module: str) -> str:
-    """`glint.compiler.compose.planner` -> `compose`; `glint.lint.rules.x` -> `lint`;
+    """`glint.compiler.compose.planning.planner` -> `compose`; `glint.lint.rules.x` -> `lint`;
     `glint` (the public API, in compiler/api) -> `api`."""
     parts = module.split(".")
     if parts[:2] == ["glint", "lint"]:

@@ -10,10 +10,10 @@ import pytest
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.measurements import VariantCost, load_measurements
 from glint.compiler.cli import main
-from glint.compiler.compose import explain as explain_module
-from glint.compiler.compose import planner as planner_module
-from glint.compiler.compose.budget import calls_per_pixel, front, within_budget
-from glint.compiler.compose.planner import plan
+from glint.compiler.compose.planning import explain as explain_module
+from glint.compiler.compose.planning import planner as planner_module
+from glint.compiler.compose.planning.budget import calls_per_pixel, front, within_budget
+from glint.compiler.compose.planning.planner import plan
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import load_scene
 

@@ -256,8 +256,8 @@ def test_a_preset_of_a_preset_is_refused(tmp_path) -> None:  # type: ignore[no-u
 
 
 def test_catalog_presets_are_listed_checked_and_composed() -> None:
+    from glint.compiler.compose.linking.standalone import standalone_source
     from glint.compiler.compose.pipeline import compose
-    from glint.compiler.compose.standalone import standalone_source
     from glint.compiler.target.glslang import validate
 
     soft_12 = CATALOG.get("shadow.soft_12")

@@ -13,7 +13,7 @@ import pytest
 
 from glint.compiler.catalog.loader import glsl_value, load_catalog
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.compose.catalog_show import show_source
+from glint.compiler.catalog_tools.show import show_source
 from glint.compiler.target.glslang import validate
 
 GLINT = [sys.executable, "-m", "glint.compiler.cli"]

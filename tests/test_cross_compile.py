@@ -18,7 +18,7 @@ import pytest
 import glint
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.tiers import TIERS
-from glint.compiler.compose.catalog_cross import show_in
+from glint.compiler.catalog_tools.cross import show_in
 from glint.compiler.errors import InputError
 from glint.compiler.glsl.symbols import analyze
 from glint.compiler.target.cross import check_hlsl, cross_compile_image

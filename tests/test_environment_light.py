@@ -11,8 +11,8 @@ import pytest
 
 from glint.compiler.bench.plans import APPROXIMATIONS
 from glint.compiler.catalog.loader import glsl_value, load_catalog
-from glint.compiler.compose.snippet_evaluation import evaluate_snippet
-from glint.compiler.compose.spherical_harmonics import (
+from glint.compiler.compose.linking.snippet_evaluation import evaluate_snippet
+from glint.compiler.compose.planning.spherical_harmonics import (
     PARAM_NAMES,
     project_sh9,
     sh9_basis,

@@ -33,8 +33,8 @@ def test_the_rules_say_what_may_import_what() -> None:
 
 
 def test_an_import_against_the_layers_and_a_cycle_are_found() -> None:
-    up = Import("glint.compiler.glsl.parser", "glint.compiler.compose.planner", 3)
-    down = Import("glint.compiler.compose.planner", "glint.compiler.glsl.parser", 5)
+    up = Import("glint.compiler.glsl.parser", "glint.compiler.compose.planning.planner", 3)
+    down = Import("glint.compiler.compose.planning.planner", "glint.compiler.glsl.parser", 5)
     edges = {"glsl": {"compose": [up]}, "compose": {"glsl": [down]}}
     assert violations(edges) == [up]
     assert cycles(edges) == [["compose", "glsl", "compose"]]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from pathlib import PurePosixPath
 
-from glint.compiler.compose.uniform_params import read_manifest
+from glint.compiler.compose.linking.uniform_params import read_manifest
 from glint.compiler.site.live_canvas import (
     DEFAULT_SHADER,
     EDITOR_SCRIPT,

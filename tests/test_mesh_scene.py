@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from mesh_scenes import mesh_scene, raymarched_scene
 
-from glint.compiler.compose.mesh_geometry import builtin_mesh, model_matrix, normal_matrix
+from glint.compiler.compose.mesh.geometry import builtin_mesh, model_matrix, normal_matrix
 from glint.compiler.errors import InputError
 from glint.compiler.scene.mesh_files import smooth_normals
 from glint.compiler.scene.model import parse_scene, scene_from_dict
@@ -147,13 +147,13 @@ def test_a_mesh_file_with_a_nan_vertex_or_a_bad_index_names_it(tmp_path: Path) -
 def test_a_mesh_file_past_the_limits_is_refused(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    import glint.compiler.compose.mesh_geometry as mesh_geometry
+    import glint.compiler.scene.mesh_files as mesh_files
 
     (tmp_path / "tet.obj").write_text(TETRAHEDRON)
-    monkeypatch.setattr(mesh_geometry, "MAX_TRIANGLES", 3)
+    monkeypatch.setattr(mesh_files, "MAX_TRIANGLES", 3)
     with pytest.raises(InputError, match="4 triangles, more than the 3 glint draws"):
         parse_scene(_file_scene("tet.obj"), str(tmp_path / "scene.toml"))
-    monkeypatch.setattr(mesh_geometry, "MESH_FILE_LIMIT", 16)
+    monkeypatch.setattr(mesh_files, "MESH_FILE_LIMIT", 16)
     with pytest.raises(InputError, match="larger than the .* MiB glint reads for a mesh file"):
         parse_scene(_file_scene("tet.obj"), str(tmp_path / "scene.toml"))
 

@@ -4,7 +4,7 @@ tessellated sphere under phong shading and one directional light.
 The band risers are smoothsteps over fract(N·x) in [1 − s, 1], so the middle of the k-th riser
 (halfway between two levels) is at N·L = (k + 1 − s/2) / N; the rim's edge is where
 (1 − N·V)·(N·L)^p = e. N·L and N·V at each pixel are computed here independently of the
-renderer: the pixel's ray from the camera model that compiler/compose/mesh_camera.py documents
+renderer: the pixel's ray from the camera model that compiler/compose/mesh/camera.py documents
 (normalize(uv.x·right + uv.y·up + focal·forward), uv = (2·fragCoord − iResolution.xy) /
 iResolution.y), intersected with the exact unit sphere. The rendered image's edges (where
 the luminance jumps between neighbouring pixels) must lie within two pixels of those contours,

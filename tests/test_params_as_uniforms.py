@@ -12,8 +12,8 @@ import pytest
 from mesh_scenes import example_params
 
 from glint.compiler.cli import main
+from glint.compiler.compose.linking.uniform_params import constant_uses, read_manifest
 from glint.compiler.compose.pipeline import compose
-from glint.compiler.compose.uniform_params import constant_uses, read_manifest
 from glint.compiler.target.glslang import validate
 
 SCENES = example_params("its programs take their parameters as #defines only (no webgl2 target)")

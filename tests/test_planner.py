@@ -18,9 +18,9 @@ from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import TIERS, tier_table
 from glint.compiler.cli import main
-from glint.compiler.compose.explain import explain
 from glint.compiler.compose.pipeline import compose_scene
-from glint.compiler.compose.planner import plan
+from glint.compiler.compose.planning.explain import explain
+from glint.compiler.compose.planning.planner import plan
 from glint.compiler.scene.model import Scene, load_scene
 
 CATALOG = load_catalog()

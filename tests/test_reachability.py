@@ -13,10 +13,10 @@ from mesh_scenes import MESH_EXAMPLES, RAYMARCHED_EXAMPLES
 
 from glint import compose_mesh
 from glint.compiler.catalog.loader import load_catalog
-from glint.compiler.compose.emitter import emit
+from glint.compiler.compose.linking.emitter import emit
+from glint.compiler.compose.linking.reachability import prune_unreachable
 from glint.compiler.compose.pipeline import compose, compose_scene
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.reachability import prune_unreachable
+from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.units import GENERATED, Unit, generated
 from glint.compiler.glsl import parse_source
 from glint.compiler.scene.model import default_scene_path, parse_scene

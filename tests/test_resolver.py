@@ -6,7 +6,7 @@ import pytest
 
 from glint.compiler.catalog.loader import Catalog, load_catalog, parse_snippet
 from glint.compiler.catalog.slots import SCENE_FUNCTIONS
-from glint.compiler.compose.resolver import resolve
+from glint.compiler.compose.linking.resolver import resolve
 from glint.compiler.compose.units import generated
 from glint.compiler.errors import InputError
 
@@ -121,7 +121,7 @@ def test_slot_requirement_without_a_choice() -> None:
 
 def test_real_catalog_resolves_every_requirement_of_every_snippet() -> None:
     """Each snippet's requirements resolve with the balanced choices (no dangling names)."""
-    from glint.compiler.compose.planner import tier_table
+    from glint.compiler.compose.planning.planner import tier_table
 
     catalog = load_catalog()
     choices = {slot: f"{slot}.{v}" for slot, v in tier_table()["balanced"].items()}

@@ -1,4 +1,4 @@
-"""sceneSpan (compose/bounds.py): the part of a ray where a scene's surfaces can be. A march
+"""sceneSpan (compose/codegen/bounds.py): the part of a ray where a scene's surfaces can be. A march
 that keeps to it must draw what a march of the whole ray draws, on every example scene; each
 shape's box must hold the shape; and a user's field is bounded only by what it declares."""
 
@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 from mesh_scenes import example_params
 
-from glint.compiler.compose.bounds import shape_bounds, span_unit
-from glint.compiler.compose.field_code import rotation_matrix
+from glint.compiler.compose.codegen.bounds import shape_bounds, span_unit
+from glint.compiler.compose.codegen.field_code import rotation_matrix
 from glint.compiler.compose.pipeline import compose_scene
 from glint.compiler.errors import InputError
 from glint.compiler.render import render_full

@@ -15,7 +15,7 @@ from glint.compiler.scene.model import scene_from_dict
 
 
 def test_the_mesh_camera_has_a_basis_straight_down_and_up() -> None:
-    from glint.compiler.compose.mesh_camera import camera_matrices
+    from glint.compiler.compose.mesh.camera import camera_matrices
 
     for y in (4.0, -4.0):
         scene = scene_from_dict(base_scene(camera={"type": "lookat", "position": [0.0, y, 0.0]}))

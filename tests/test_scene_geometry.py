@@ -13,7 +13,7 @@ import pytest
 
 import glint
 from glint.compiler.cli import main
-from glint.compiler.compose.field_code import rotation_matrix
+from glint.compiler.compose.codegen.field_code import rotation_matrix
 from glint.compiler.errors import InputError
 from glint.compiler.evaluator.api import evaluate
 from glint.compiler.scene.model import scene_from_dict

@@ -266,7 +266,7 @@ def test_deep_groups_in_a_toml_file_are_refused_by_the_cli(tmp_path: Path) -> No
 
 
 def test_a_box_of_bounds_past_float32_is_left_out_for_the_whole_ray() -> None:
-    from glint.compiler.compose.bounds import span_unit
+    from glint.compiler.compose.codegen.bounds import span_unit
 
     scene = scene_from_dict(base_scene(objects=[
         {"shape": "box", "material": "m", "size": [1e20, 1.0, 1.0], "scale": 1e30}

@@ -26,7 +26,7 @@ from PIL import Image
 from site_browser import KATEX_DIR, MAKE_TEST, ROOT, PageLog, serve, watch
 
 import glint
-from glint.compiler.compose.uniform_params import read_manifest
+from glint.compiler.compose.linking.uniform_params import read_manifest
 from glint.compiler.render.images import flip_error
 from glint.compiler.target.glslang import validate
 

@@ -1,7 +1,7 @@
 """The `trace` snippets, run by the numpy evaluator at float32, against the float64 references of
 compiler/verify/references/trace.py: the first hit of rays from around each primitive, the
 signed angular clearance (the quantity the analytic soft shadow turns into a penumbra), and the
-box's face normal; and the scene queries written from them (compose/trace_code.py)."""
+box's face normal; and the scene queries written from them (compose/codegen/trace_code.py)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from glint.compiler.catalog.loader import load_catalog
-from glint.compiler.compose.trace_code import analytic, scene_primitives
+from glint.compiler.compose.codegen.trace_code import analytic, scene_primitives
 from glint.compiler.evaluator.api import evaluate
 from glint.compiler.scene.model import parse_scene
 from glint.compiler.verify.references.scenes import Box, Ground, Sphere

@@ -43,7 +43,7 @@ class Snippet:
         """What `glint catalog show ID --lang LANG` prints: the snippet with everything it needs
         (other slots at their balanced-tier variants) as one block of GLSL to paste, or that
         block converted to HLSL or MSL (`lang` "hlsl" or "msl") through SPIR-V."""
-        from glint.compiler.compose.catalog_cross import show_in
+        from glint.compiler.catalog_tools.cross import show_in
 
         return show_in(self.id, lang)
 

@@ -17,7 +17,7 @@ from . import _args
 from ._shader import _check_choice, load_scene
 
 if TYPE_CHECKING:
-    from glint.compiler.compose.mesh_pipeline import MeshComposition, MeshProgram
+    from glint.compiler.compose.mesh.pipeline import MeshComposition, MeshProgram
     from glint.compiler.render.runner import RenderResult
     from glint.compiler.scene.model import Scene
     from glint.compiler.target.glslang import Diagnostic
@@ -94,7 +94,7 @@ def compose_mesh(
 ) -> MeshShader:
     """Compose a mesh scene (objects with shape = "mesh") for `target` (mesh-webgl2: GLSL ES
     3.00, mesh-desktop: GLSL 3.30), as `glint compose --target mesh-...` does."""
-    from glint.compiler.compose.mesh_pipeline import compose_mesh_scene
+    from glint.compiler.compose.mesh.pipeline import compose_mesh_scene
 
     _check_choice("target", target, MESH_TARGETS)
     if tier is not None:
@@ -114,8 +114,8 @@ def draw_mesh_shader(
     """Draw a composed mesh scene: its meshes' triangles, placed, with the camera at `time`."""
     import numpy as np
 
-    from glint.compiler.compose.mesh_camera import camera_matrices, depth_range, eye_and_target
-    from glint.compiler.compose.mesh_geometry import mesh_arrays, model_matrix, normal_matrix
+    from glint.compiler.compose.mesh.camera import camera_matrices, depth_range, eye_and_target
+    from glint.compiler.compose.mesh.geometry import mesh_arrays, model_matrix, normal_matrix
     from glint.compiler.render.mesh_runner import MeshDraw, MeshView, render_meshes
     from glint.compiler.scene.shapes import Mesh
 

@@ -20,9 +20,9 @@ from . import _args
 COMPOSE_TARGETS = TARGETS + LANGS
 
 if TYPE_CHECKING:
-    from glint.compiler.compose.plan import Plan
-    from glint.compiler.compose.split import SplitShader
-    from glint.compiler.compose.uniform_params import UniformParam
+    from glint.compiler.compose.linking.split import SplitShader
+    from glint.compiler.compose.linking.uniform_params import UniformParam
+    from glint.compiler.compose.planning.plan import Plan
     from glint.compiler.compose.units import Unit
     from glint.compiler.scene.model import Scene
     from glint.compiler.target.glslang import Diagnostic
@@ -62,7 +62,7 @@ class Shader:
     def explain(self) -> str:
         """What `glint compose --explain` prints: each slot in or out and why, which variant
         fills it and why, the material paths the scene turns on."""
-        from glint.compiler.compose.explain import explain
+        from glint.compiler.compose.planning.explain import explain
 
         return explain(self.scene, self.plan)
 
@@ -81,8 +81,8 @@ class Shader:
     def retarget(self, target: str, params_as_uniforms: bool = False) -> Shader:
         """The same composition emitted for `target` (with `params_as_uniforms`, webgl2 only),
         without planning it again: what `compose` with those options gives for the scene."""
+        from glint.compiler.compose.codegen.scene_code import generate
         from glint.compiler.compose.pipeline import emit_shader
-        from glint.compiler.compose.scene_code import generate
 
         _check_choice("target", target, COMPOSE_TARGETS)
         params_as_uniforms = _args.flag("params_as_uniforms", params_as_uniforms)
@@ -105,8 +105,8 @@ class Shader:
     def split_common(self) -> SplitShader:
         """The shader as two ShaderToy tabs: the lighting library for the Common tab and a short
         Image tab that uses it (`glint compose --split common`); shadertoy target only."""
+        from glint.compiler.compose.linking.split import split_common
         from glint.compiler.compose.pipeline import glint_version
-        from glint.compiler.compose.split import split_common
 
         if self.target != "shadertoy":
             raise UsageError(f"--split common is for the shadertoy target, not {self.target}")

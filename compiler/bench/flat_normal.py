@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from glint.compiler.catalog.loader import Catalog
-from glint.compiler.compose.standalone import standalone_source
+from glint.compiler.compose.linking.standalone import standalone_source
 from glint.compiler.render import render
 from glint.compiler.verify.references.normals import BOX_HALF, angle_deg
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from glint.compiler.catalog.loader import Snippet
-from glint.compiler.compose.standalone import SCENE_STUB
+from glint.compiler.compose.linking.standalone import SCENE_STUB
 from glint.compiler.verify.probes import entry_function, probe_inputs
 from glint.compiler.verify.references import reference
 from glint.compiler.verify.references.geometry import dots

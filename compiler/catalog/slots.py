@@ -151,11 +151,11 @@ SCENE_FUNCTIONS: dict[str, str] = {
     "map": "float map(vec3 p)",
     "materialAt": "int materialAt(vec3 p)",
     # Only for a scene whose every object is an analytic primitive (an unplaced sphere, box or
-    # plane): the closed-form queries of compose/trace_code.py.
+    # plane): the closed-form queries of compose/codegen/trace_code.py.
     "traceScene": "float traceScene(vec3 ro, vec3 rd, float tmax)",
     "sceneClearance": "float sceneClearance(vec3 ro, vec3 rd, float tmax, float reach)",
     "sceneNormal": "vec3 sceneNormal(vec3 p)",
-    # The part (start, end) of a ray where surfaces can be (compose/bounds.py).
+    # The part (start, end) of a ray where surfaces can be (compose/codegen/bounds.py).
     "sceneSpan": "vec2 sceneSpan(vec3 ro, vec3 rd)",
 }
 SCENE_CONSTANTS: dict[str, str] = {

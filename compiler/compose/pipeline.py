@@ -9,14 +9,11 @@ from importlib.metadata import version as package_version
 from pathlib import Path
 
 from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
-from glint.compiler.compose.bake import bake
-from glint.compiler.compose.emitter import Shader, emit, parameter_unit
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.planner import plan
-from glint.compiler.compose.reachability import ROOTS, prune_unreachable
-from glint.compiler.compose.resolver import resolve
-from glint.compiler.compose.scene_code import generate
-from glint.compiler.compose.uniform_params import (
+from glint.compiler.compose.codegen.scene_code import generate
+from glint.compiler.compose.linking.emitter import Shader, emit, parameter_unit
+from glint.compiler.compose.linking.reachability import ROOTS, prune_unreachable
+from glint.compiler.compose.linking.resolver import resolve
+from glint.compiler.compose.linking.uniform_params import (
     UniformParam,
     as_uniforms,
     candidates,
@@ -24,6 +21,9 @@ from glint.compiler.compose.uniform_params import (
     defined_params,
     manifest_comment,
 )
+from glint.compiler.compose.planning.bake import bake
+from glint.compiler.compose.planning.plan import Plan
+from glint.compiler.compose.planning.planner import plan
 from glint.compiler.compose.units import CONSTANTS, Unit
 from glint.compiler.errors import InputError, UsageError
 from glint.compiler.scene.model import Scene, load_scene

@@ -25,7 +25,7 @@ class Unit:
     rank: int | None = None
     # For the scene's own code: the calls that its content decided, each with the reason
     # (("shadow", "lights[0] (directional) casts shadows"), ...), in the order the planner
-    # reads them (compose/scene_slots.py).
+    # reads them (compose/planning/scene_slots.py).
     why: tuple[tuple[str, str], ...] = ()
 
 

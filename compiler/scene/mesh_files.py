@@ -1,7 +1,7 @@
 """Mesh files as a scene reads them: a file's indexed triangles and normals, read with trimesh
 within limits (a regular file, its size, its triangle count), so that a scene with a mesh object
 is whole once loaded. Placing the triangles in the world is the composer's
-(compose/mesh_geometry.py).
+(compose/mesh/geometry.py).
 """
 
 from __future__ import annotations

@@ -32,7 +32,7 @@ from glint.compiler.bench.errors import set_errors
 from glint.compiler.bench.plans import plan_for
 from glint.compiler.bench.samples import ProbeSet, domain_samples, per_axis
 from glint.compiler.catalog.loader import Snippet, load_catalog
-from glint.compiler.compose.snippet_evaluation import snippet_source
+from glint.compiler.compose.linking.snippet_evaluation import snippet_source
 from glint.compiler.evaluator.errors import UnsupportedError
 from glint.compiler.files import write_atomic
 from glint.compiler.markdown import md_code, md_prose, md_text, path_url, safe_image, table

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
 from glint.compiler.catalog.slots import SCENE_SYMBOLS, SLOTS
-from glint.compiler.compose.standalone import standalone_source
+from glint.compiler.compose.linking.standalone import standalone_source
 from glint.compiler.glsl.symbols import ModuleSymbols, analyze
 from glint.compiler.target.glslang import Diagnostic, validate
 from glint.compiler.target.shadertoy import UNIFORM_NAMES

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.compose.user_geometry import DISTANCE, MATERIAL
+from glint.compiler.compose.codegen.user_geometry import DISTANCE, MATERIAL
 from glint.compiler.render import render
 from glint.compiler.scene.model import Scene
 

@@ -15,7 +15,11 @@ import numpy as np
 
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.catalog.slots import SCENE_FUNCTIONS
-from glint.compiler.compose.snippet_evaluation import entry_of, evaluate_snippet, snippet_source
+from glint.compiler.compose.linking.snippet_evaluation import (
+    entry_of,
+    evaluate_snippet,
+    snippet_source,
+)
 from glint.compiler.evaluator.errors import UnsupportedError
 from glint.compiler.evaluator.interpreter import Interpreter
 

@@ -16,7 +16,7 @@ import numpy as np
 
 from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.compose.standalone import SCENE_STUB, standalone_source
+from glint.compiler.compose.linking.standalone import SCENE_STUB, standalone_source
 from glint.compiler.errors import InputError
 from glint.compiler.glsl.symbols import FunctionDef, analyze
 from glint.compiler.render import render, render_full

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from glint.compiler.compose.snippet_evaluation import evaluate_snippet, snippet_units
+from glint.compiler.compose.linking.snippet_evaluation import evaluate_snippet, snippet_units
 
 
 def grid(n: int = 64) -> tuple[np.ndarray, np.ndarray]:

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from lark import Tree
 
-from glint.compiler.compose.catalog_cross import entry_main
+from glint.compiler.catalog_tools.cross import entry_main
 from glint.compiler.evaluator import UnsupportedError, evaluate, values
 from glint.compiler.glsl import types as T
 from glint.compiler.glsl.ast import Field, Index, token_text, variable_name

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from glint.compiler.catalog.loader import load_catalog
-from glint.compiler.compose.snippet_evaluation import evaluate_snippet
+from glint.compiler.compose.linking.snippet_evaluation import evaluate_snippet
 from glint.compiler.verify.references import REFERENCES
 from glint.compiler.verify.references.geometry import Lobe, directional_albedo, dots
 

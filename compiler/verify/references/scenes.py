@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from glint.compiler.compose.trace_code import Analytic, trace_glsl
+from glint.compiler.compose.codegen.trace_code import Analytic, trace_glsl
 
 Vec3 = tuple[float, float, float]
 

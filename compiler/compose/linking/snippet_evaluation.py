@@ -8,8 +8,8 @@ import numpy as np
 
 from glint.compiler.catalog.loader import Catalog, Snippet, glsl_value, load_catalog
 from glint.compiler.catalog.slots import SCENE_SYMBOLS, SLOTS
-from glint.compiler.compose.resolver import resolve
-from glint.compiler.compose.standalone import standalone_choices
+from glint.compiler.compose.linking.resolver import resolve
+from glint.compiler.compose.linking.standalone import standalone_choices
 from glint.compiler.compose.units import from_snippet, generated
 from glint.compiler.evaluator.api import evaluate
 

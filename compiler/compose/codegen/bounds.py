@@ -19,8 +19,8 @@ import itertools
 import numpy as np
 
 from glint.compiler.catalog.loader import glsl_value
-from glint.compiler.compose.field_code import rotation_matrix
-from glint.compiler.compose.trace_code import analytic
+from glint.compiler.compose.codegen.field_code import rotation_matrix
+from glint.compiler.compose.codegen.trace_code import analytic
 from glint.compiler.compose.units import Unit, generated
 from glint.compiler.scene.shapes import (
     Box,

@@ -7,8 +7,12 @@ rest."""
 from __future__ import annotations
 
 from glint.compiler.catalog.loader import glsl_value, load_catalog
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.spherical_harmonics import project_sh9, sh9_params, snippet_environment
+from glint.compiler.compose.planning.plan import Plan
+from glint.compiler.compose.planning.spherical_harmonics import (
+    project_sh9,
+    sh9_params,
+    snippet_environment,
+)
 from glint.compiler.scene.model import LookAtCamera, OrbitCamera, Scene
 
 

@@ -14,14 +14,14 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from glint.compiler.catalog.loader import Catalog, load_catalog
-from glint.compiler.compose.bake import bake
-from glint.compiler.compose.emitter import Shader, header, unit_blocks
-from glint.compiler.compose.explain import explain
-from glint.compiler.compose.mesh_code import background_unit, ignored, lit_scene, mesh_code
+from glint.compiler.compose.linking.emitter import Shader, header, unit_blocks
+from glint.compiler.compose.mesh.code import background_unit, ignored, lit_scene, mesh_code
 from glint.compiler.compose.pipeline import assemble, emit_shader, glint_version
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.planner import plan
-from glint.compiler.compose.scene_slots import SlotUse
+from glint.compiler.compose.planning.bake import bake
+from glint.compiler.compose.planning.explain import explain
+from glint.compiler.compose.planning.plan import Plan
+from glint.compiler.compose.planning.planner import plan
+from glint.compiler.compose.planning.scene_slots import SlotUse
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError, UsageError
 from glint.compiler.scene.model import Scene

@@ -18,7 +18,7 @@ from functools import cache
 
 import numpy as np
 
-from glint.compiler.compose.snippet_evaluation import evaluate_snippet
+from glint.compiler.compose.linking.snippet_evaluation import evaluate_snippet
 
 Environment = Callable[[np.ndarray], np.ndarray]
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from glint.compiler.catalog.measurements import Measurements, VariantCost
-from glint.compiler.compose.scene_slots import SlotUse
+from glint.compiler.compose.planning.scene_slots import SlotUse
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import DirectionalLight, EnvironmentLight, PointLight, Scene
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from glint.compiler.compose.scene_slots import SlotUse
+from glint.compiler.compose.planning.scene_slots import SlotUse
 
 
 @dataclass

@@ -18,16 +18,16 @@ from glint.compiler.catalog.loader import Catalog
 from glint.compiler.catalog.measurements import VariantCost, load_measurements
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import tier_table
-from glint.compiler.compose.budget import (
+from glint.compiler.compose.codegen.scene_code import generate
+from glint.compiler.compose.codegen.trace_code import QUERIES, TRACE_UNIT
+from glint.compiler.compose.planning.budget import (
     calls_per_pixel,
     candidates_for,
     estimated_cost,
     within_budget,
 )
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.scene_code import generate
-from glint.compiler.compose.scene_slots import slot_uses
-from glint.compiler.compose.trace_code import QUERIES, TRACE_UNIT
+from glint.compiler.compose.planning.plan import Plan
+from glint.compiler.compose.planning.scene_slots import slot_uses
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import Scene

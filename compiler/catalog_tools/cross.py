@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from glint.compiler.catalog.loader import Catalog, load_catalog
 from glint.compiler.catalog.slots import SCENE_FUNCTIONS
-from glint.compiler.compose.catalog_show import show_source
+from glint.compiler.catalog_tools.show import show_source
 from glint.compiler.errors import UsageError
 from glint.compiler.glsl.symbols import FunctionDef, analyze
 from glint.compiler.glsl.types import is_scalar_constructible, size

@@ -10,18 +10,18 @@ import re
 from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
-from glint.compiler.compose.bounds import span_unit
-from glint.compiler.compose.field_code import ObjectCode, object_code
-from glint.compiler.compose.knobs import UniformParam
-from glint.compiler.compose.trace_code import trace_unit
-from glint.compiler.compose.units import Unit, generated
-from glint.compiler.compose.user_geometry import (
+from glint.compiler.compose.codegen.bounds import span_unit
+from glint.compiler.compose.codegen.field_code import ObjectCode, object_code
+from glint.compiler.compose.codegen.knobs import UniformParam
+from glint.compiler.compose.codegen.trace_code import trace_unit
+from glint.compiler.compose.codegen.user_geometry import (
     ALBEDO,
     DISTANCE,
     GEOMETRY_MATERIAL,
     MATERIAL,
     user_unit,
 )
+from glint.compiler.compose.units import Unit, generated
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import (
     BackLight,

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from glint.compiler.compose.field_code import rotation_matrix
+from glint.compiler.compose.codegen.field_code import rotation_matrix
 from glint.compiler.scene.mesh_files import MeshArrays, indexed_triangles
 from glint.compiler.scene.shapes import Mesh, Placed
 

@@ -12,8 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import Catalog, glsl_value
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.uniform_params import UniformParam
+from glint.compiler.compose.linking.uniform_params import UniformParam
+from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.units import CONSTANTS, GENERATED, Unit, generated
 from glint.compiler.scene.values import comment_text
 from glint.compiler.target import shadertoy

@@ -12,8 +12,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from glint.compiler.compose.emitter import emit
-from glint.compiler.compose.plan import Plan
+from glint.compiler.compose.linking.emitter import emit
+from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.units import Unit
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from glint.compiler.catalog.loader import Catalog, Snippet, glsl_value, load_catalog
 from glint.compiler.catalog.slots import SCENE_FUNCTIONS, SCENE_SYMBOLS, SLOTS
-from glint.compiler.compose.resolver import resolve
-from glint.compiler.compose.standalone import SCENE_DEFINES, standalone_choices
+from glint.compiler.compose.linking.resolver import resolve
+from glint.compiler.compose.linking.standalone import SCENE_DEFINES, standalone_choices
 from glint.compiler.compose.units import Unit, from_snippet, generated
 
 _SCENE_UNIT = "scene.provided"

@@ -30,8 +30,8 @@ from dataclasses import asdict
 from lark import Token, Tree
 
 from glint.compiler.catalog.loader import Catalog
-from glint.compiler.compose.knobs import UniformParam
-from glint.compiler.compose.plan import Plan
+from glint.compiler.compose.codegen.knobs import UniformParam
+from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.units import Unit
 from glint.compiler.glsl import Macro, parse_source, preprocess
 from glint.compiler.glsl.ast import Variable, VariableDeclaration

@@ -4,8 +4,8 @@ variant fills it and why; then the material paths the scene turns on."""
 from __future__ import annotations
 
 from glint.compiler.catalog.measurements import load_measurements
-from glint.compiler.compose.budget import calls_per_pixel, estimated_cost
-from glint.compiler.compose.plan import Plan
+from glint.compiler.compose.planning.budget import calls_per_pixel, estimated_cost
+from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import Scene
 

@@ -9,10 +9,10 @@ import re
 from glint.compiler.catalog.loader import Catalog, Snippet
 from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.catalog.tiers import tier_table
-from glint.compiler.compose.emitter import emit, parameter_unit
-from glint.compiler.compose.plan import Plan
-from glint.compiler.compose.resolver import resolve
-from glint.compiler.compose.trace_code import QUERIES, Analytic, trace_glsl
+from glint.compiler.compose.codegen.trace_code import QUERIES, Analytic, trace_glsl
+from glint.compiler.compose.linking.emitter import emit, parameter_unit
+from glint.compiler.compose.linking.resolver import resolve
+from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.units import Unit, generated
 
 # Stand-ins for what the composer generates from a scene, so that a snippet that needs the
@@ -20,7 +20,7 @@ from glint.compiler.compose.units import Unit, generated
 SCENE_STUB = """float map(vec3 p) { return min(length(p) - 1.0, p.y + 1.0); }
 int materialAt(vec3 p) { return 0; }
 """
-# The same scene's closed-form queries, for the analytic variants (compose/trace_code.py).
+# The same scene's closed-form queries, for the analytic variants (compose/codegen/trace_code.py).
 TRACE_STUB = trace_glsl(
     [
         Analytic("sphere", size="1.0"),

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import Catalog
 from glint.compiler.catalog.slots import SLOTS
-from glint.compiler.compose.resolver import providers
+from glint.compiler.compose.linking.resolver import providers
 from glint.compiler.compose.units import Unit
 from glint.compiler.scene.model import Scene
 
