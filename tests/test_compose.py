@@ -153,7 +153,7 @@ def lit_scene() -> str:
 def test_point_bounce_environment_lights_and_a_tinted_penumbra() -> None:
     shader = compose_scene(parse_scene(lit_scene()))
     text = shader.text
-    assert "pow(vec3(shadow(s.P, SUN_DIR, 0.02, 5.0)), SUN_PENUMBRA)" in text
+    assert "pow(vec3(shadow(s.P + s.N * hitLift, SUN_DIR, 0.02, 5.0)), SUN_PENUMBRA)" in text
     assert "#define SUN_PENUMBRA vec3(1.0, 1.2, 1.5)" in text
     assert "#define POINT_RANGE 6.0" in text
     assert "distance(POINT_POS, s.P)" in text  # the point light's shadow stops at the light

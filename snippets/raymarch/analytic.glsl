@@ -2,7 +2,7 @@
 id = "raymarch.analytic"
 slot = "raymarch"
 summary = "No march: the nearest of the scene's closed-form ray hits (every object an analytic primitive)"
-provides = ["raymarch"]
+provides = ["raymarch", "marchTolerance"]
 requires = ["traceScene"]
 params = { MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] } }
 sources = ["Kay and Kajiya 1986, ray tracing complex scenes", "Haines et al. 2019, Precision Improvements for Ray/Sphere Intersection"]
@@ -15,4 +15,9 @@ formula = 't_{\text{hit}} = \min_k t_k(\mathbf{o}, \boldsymbol{\omega}) \text{ o
 // tolerance), and has no step budget to run out of at grazing angles.
 float raymarch(vec3 ro, vec3 rd) {
     return traceScene(ro, rd, MARCH_FAR);
+}
+
+// A closed-form hit lies on the surface to rounding: nothing to lift.
+float marchTolerance(float t) {
+    return 0.0;
 }

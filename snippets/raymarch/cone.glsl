@@ -2,7 +2,7 @@
 id = "raymarch.cone"
 slot = "raymarch"
 summary = "Sphere tracing that stops once the scene is within a pixel's cone, then refines the hit by one secant step"
-provides = ["raymarch"]
+provides = ["raymarch", "marchTolerance"]
 requires = ["map"]
 params = { MARCH_STEPS = { type = "int", default = 128, range = [1, 1024] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_PIXEL = { type = "float", default = 0.002, range = [0.0, 0.05] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] } }
 sources = ["Hart 1996, sphere tracing", "Keinert et al. 2014, Enhanced Sphere Tracing (pixel-cone termination)"]
@@ -43,4 +43,12 @@ float raymarch(vec3 ro, vec3 rd) {
     float ahead = d < dPrev ? d * dPrev / (dPrev - d) : 0.0;
     float dAhead = map(ro + rd * (t + ahead));
     return abs(dAhead) < abs(d) ? t + ahead : t;
+}
+
+// How far from the surface a hit may be at distance t: the pixel cone's radius there (or
+// MARCH_EPSILON near the eye). Shadow rays start that far out along the normal (the scene
+// code's hitLift): a hit accepted that far off a concave rim would otherwise shadow itself
+// (a dark hairline).
+float marchTolerance(float t) {
+    return max(MARCH_EPSILON, MARCH_PIXEL * t);
 }

@@ -2,7 +2,7 @@
 id = "raymarch.relaxed"
 slot = "raymarch"
 summary = "Over-relaxed sphere tracing: steps of ω·d while consecutive unbounding spheres overlap, plain steps after the first that does not; stops within a pixel's cone and refines the hit by one secant step"
-provides = ["raymarch"]
+provides = ["raymarch", "marchTolerance"]
 requires = ["map", "sceneSpan"]
 params = { MARCH_STEPS = { type = "int", default = 128, range = [1, 1024] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_PIXEL = { type = "float", default = 0.002, range = [0.0, 0.05] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] }, MARCH_RELAX = { type = "float", default = 1.3, range = [1.0, 1.9] } }
 sources = ["Keinert, Schäfer, Korndörfer, Ganse, Stamminger 2014, Enhanced Sphere Tracing (over-relaxation, pixel-cone termination)", "Hart 1996, sphere tracing"]
@@ -69,4 +69,10 @@ float raymarch(vec3 ro, vec3 rd) {
     float ahead = d < dPrev ? d * (t - tPrev) / (dPrev - d) : 0.0;
     float dAhead = map(ro + rd * (t + ahead));
     return abs(dAhead) < abs(d) ? t + ahead : t;
+}
+
+// How far from the surface a hit may be at distance t, as in raymarch.cone; shadow rays
+// start that far out along the normal.
+float marchTolerance(float t) {
+    return max(MARCH_EPSILON, MARCH_PIXEL * t);
 }

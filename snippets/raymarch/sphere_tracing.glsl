@@ -2,7 +2,7 @@
 id = "raymarch.sphere_tracing"
 slot = "raymarch"
 summary = "Sphere tracing: distance along the ray to the first hit, or -1"
-provides = ["raymarch"]
+provides = ["raymarch", "marchTolerance"]
 requires = ["map"]
 params = { MARCH_STEPS = { type = "int", default = 512, range = [1, 4096] }, MARCH_EPSILON = { type = "float", default = 0.001, range = [1e-6, 0.1] }, MARCH_FAR = { type = "float", default = 50.0, range = [1.0, 10000.0] } }
 sources = ["lighting-model skill, complete code template (raymarching)", "Hart 1996"]
@@ -21,4 +21,11 @@ float raymarch(vec3 ro, vec3 rd) {
         if (t > MARCH_FAR) break;
     }
     return -1.0;
+}
+
+// How far from the surface a hit may be: the march stops once the distance is under
+// MARCH_EPSILON. Shadow rays start that far out along the normal (the scene code's
+// hitLift), so that they leave from outside the surface.
+float marchTolerance(float t) {
+    return MARCH_EPSILON;
 }

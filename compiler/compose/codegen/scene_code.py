@@ -92,6 +92,8 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
         if scene.medium.level is not None:
             units.append(_submerged_unit(scene.medium.level))
             path = "submerged(ro, rd, t)"
+    if any(getattr(light, "shadow", False) for light in scene.lights):
+        units.append(_hit_lift_unit())
     units.append(_main_unit(scene, normal_in_uniform_flow, path))
     knobs = dict(lights.knobs)
     for material_knobs in values.values():
@@ -105,6 +107,12 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
 
 def _vec3(v: list[float]) -> str:
     return glsl_value(v, "vec3")
+
+
+# Where a shadow ray starts: the shading point lifted by the march's tolerance at the hit, which
+# mainImage writes to a global (_hit_lift_unit).
+HIT_LIFT = "hitLift"
+LIFTED = f"s.P + s.N * {HIT_LIFT}"
 
 
 def light_code(scene: Scene) -> LightCode:
@@ -157,9 +165,9 @@ def light_code(scene: Scene) -> LightCode:
             visibility = "vec3(1.0)"
             if light.shadow:
                 dist = glsl_float(light.shadow_distance)
-                cast = f"vec3(shadow(s.P, {ident}_DIR, 0.02, {dist}))"
+                cast = f"vec3(shadow({LIFTED}, {ident}_DIR, 0.02, {dist}))"
                 visibility = cast
-                requires.append("shadow")
+                requires += ["shadow", HIT_LIFT]
                 if light.penumbra is not None:
                     defines[f"{ident}_PENUMBRA"] = _vec3(light.penumbra)
                     visibility = f"pow({cast}, {ident}_PENUMBRA)"
@@ -174,8 +182,8 @@ def light_code(scene: Scene) -> LightCode:
             visibility = "vec3(1.0)"
             if light.shadow:
                 toward = f"normalize({ident}_POS - s.P)"
-                visibility = f"vec3(shadow(s.P, {toward}, 0.02, distance({ident}_POS, s.P)))"
-                requires.append("shadow")
+                visibility = f"vec3(shadow({LIFTED}, {toward}, 0.02, distance({ident}_POS, s.P)))"
+                requires += ["shadow", HIT_LIFT]
             calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
             requires.append("pointLight")
             shaded_through_brdf(i, "pointLight", light.shadow)
@@ -516,6 +524,16 @@ float submerged(vec3 ro, vec3 rd, float t) {{
     return generated("scene.submerged", ["submerged"], [], body)
 
 
+def _hit_lift_unit() -> Unit:
+    """The global that carries the march's tolerance at the hit to the shadow rays."""
+    body = (
+        "// How far the march may have stopped from the surface at this pixel's hit\n"
+        "// (marchTolerance): shadow rays start that far out along the normal.\n"
+        f"float {HIT_LIFT} = 0.0;\n"
+    )
+    return generated("scene.hit_lift", [HIT_LIFT], [], body)
+
+
 def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | None = None) -> Unit:
     requires = [
         "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
@@ -537,10 +555,18 @@ def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | No
         requires.append("medium")
         requires += ["submerged"] if "submerged" in medium_path else []
         through = f"        color = medium(color, {medium_path});\n"
+    # The march stops up to marchTolerance(t) from the surface, on either side: shadow rays
+    # start that far out along the normal (HIT_LIFT), or a hit accepted that far off a concave
+    # rim shadows itself (dark hairlines). Only shadows: AO and the rest read the point itself.
+    lift = ""
+    if any(getattr(light, "shadow", False) for light in scene.lights):
+        lift = f"        {HIT_LIFT} = marchTolerance(t);\n"
+        requires += ["marchTolerance", HIT_LIFT]
+        why.append(("marchTolerance", "shadow rays start clear of where the march stopped"))
     if not normal_in_uniform_flow:
         hit = f"""    if (t > 0.0) {{
         vec3 P = ro + t * rd;
-        color = shade(surfaceAt(P, calcNormal(P), -rd));
+{lift}        color = shade(surfaceAt(P, calcNormal(P), -rd));
 {through}    }}
 """
     else:
@@ -554,7 +580,7 @@ def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | No
     vec3 N = calcNormal(P);
     N = faceforward(N, rd, N);
     if (t > 0.0) {{
-        color = shade(surfaceAt(P, N, -rd));
+{lift}        color = shade(surfaceAt(P, N, -rd));
 {through}    }}
 """
     body = (

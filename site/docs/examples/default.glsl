@@ -346,6 +346,11 @@ vec3 outputTransfer(vec3 color) {
 }
 
 // source: <generated>:1
+// How far the march may have stopped from the surface at this pixel's hit
+// (marchTolerance): shadow rays start that far out along the normal.
+float hitLift = 0.0;
+
+// source: <generated>:1
 // The scene's signed distance: the union of its objects.
 float map(vec3 p) {
     float d = sdSphere(p, 1.0);
@@ -455,12 +460,17 @@ float raymarch(vec3 ro, vec3 rd) {
     return traceScene(ro, rd, MARCH_FAR);
 }
 
+// A closed-form hit lies on the surface to rounding: nothing to lift.
+float marchTolerance(float t) {
+    return 0.0;
+}
+
 // source: <generated>:1
 // Light arriving at the eye from a surface point.
 vec3 shade(Surface s) {
     float occlusion = ambientOcclusion(s.P, s.N);
     vec3 color = vec3(0.0);
-    color += directionalLight(s, SUN_DIR, SUN_COLOR, vec3(shadow(s.P, SUN_DIR, 0.02, 5.0)));
+    color += directionalLight(s, SUN_DIR, SUN_COLOR, vec3(shadow(s.P + s.N * hitLift, SUN_DIR, 0.02, 5.0)));
     color += skyLight(s, SKY_COLOR, occlusion);
     color += backLight(s, BACK_DIR, BACK_COLOR, occlusion);
     color += environmentLight(s, occlusion);
@@ -476,6 +486,7 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     float t = raymarch(ro, rd);
     if (t > 0.0) {
         vec3 P = ro + t * rd;
+        hitLift = marchTolerance(t);
         color = shade(surfaceAt(P, calcNormal(P), -rd));
     }
     color = outputTransfer(tonemap(color * EXPOSURE));
