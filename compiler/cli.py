@@ -317,7 +317,7 @@ def _mouse(text: str) -> tuple[float, float, float, float]:
     return values  # type: ignore[return-value]
 
 
-def _overrides(pairs: list[str]) -> dict[str, str]:
+def _variants(pairs: list[str]) -> dict[str, str]:
     result = {}
     for pair in pairs:
         slot, sep, variant = pair.partition("=")
@@ -343,7 +343,7 @@ def cmd_compose(args: argparse.Namespace) -> int:
         Path(args.scene) if args.scene is not None else None,
         target=args.target,
         tier=args.tier,
-        variants=_overrides(args.variant),
+        variants=_variants(args.variant),
         budget=args.budget,
         params_as_uniforms=args.params_as_uniforms,
     )
@@ -385,7 +385,7 @@ def _compose_mesh(args: argparse.Namespace) -> int:
         Path(args.scene) if args.scene is not None else None,
         target=args.target,
         tier=args.tier,
-        variants=_overrides(args.variant),
+        variants=_variants(args.variant),
     )
     if args.explain:
         sys.stdout.write(shader.explain())
@@ -559,14 +559,14 @@ def cmd_render(args: argparse.Namespace) -> int:
     _refuse_converted(args.input, "render")
     shader: glint.Shader | glint.MeshShader | Path = Path(args.input)
     if args.input.endswith(".toml"):
-        overrides = _overrides(args.variant)
+        variants = _variants(args.variant)
         from glint.compiler.scene.model import load_scene
 
         scene = load_scene(shader)  # read once: a mesh scene's files are read with it
         if scene.is_mesh:  # rasterized: the programs llvmpipe runs
-            shader = glint.compose_mesh(scene, tier=args.tier, variants=overrides)
+            shader = glint.compose_mesh(scene, tier=args.tier, variants=variants)
         else:
-            shader = glint.compose(scene, tier=args.tier, variants=overrides, budget=args.budget)
+            shader = glint.compose(scene, tier=args.tier, variants=variants, budget=args.budget)
     width, height = args.size
     image = glint.render(
         shader,

@@ -39,9 +39,7 @@ AS_TEMPLATE = {"balanced": TEMPLATE_MODELS}
 @pytest.fixture(scope="module")
 def default_rows() -> list[TierMeasure]:
     labels: list[str] = []
-    rows, label = measure_scenes(
-        ["default"], progress=labels.append, overrides=AS_TEMPLATE, **SMALL
-    )
+    rows, label = measure_scenes(["default"], progress=labels.append, variants=AS_TEMPLATE, **SMALL)
     assert labels == [f"default/{row.tier}" for row in rows]
     assert "llvmpipe" not in label or "CPU time" in label
     return rows
@@ -103,14 +101,14 @@ def test_the_template_row(default_rows: list[TierMeasure]) -> None:
 
 @pytest.mark.render
 def test_spirv_counts_repeat(default_rows: list[TierMeasure]) -> None:
-    again, _ = measure_scenes(["default"], overrides=AS_TEMPLATE, **SMALL)
+    again, _ = measure_scenes(["default"], variants=AS_TEMPLATE, **SMALL)
     assert [(r.tier, r.spirv) for r in again] == [(r.tier, r.spirv) for r in default_rows]
 
 
 @pytest.mark.render
 def test_a_worse_variant_raises_the_flip(default_rows: list[TierMeasure]) -> None:
     worse, _ = measure_scenes(
-        ["default"], tiers=("balanced",), overrides={"balanced": {"diffuse": "toon"}},
+        ["default"], tiers=("balanced",), variants={"balanced": {"diffuse": "toon"}},
         template=False, **SMALL,
     )  # fmt: skip
     assert [row.tier for row in worse] == ["balanced"]

@@ -106,14 +106,14 @@ def test_budget_replaces_the_tier_with_the_best_that_fits(measured: Path) -> Non
 
 def test_an_override_is_kept_and_counts_against_the_budget(measured: Path) -> None:
     scene = load_scene(None)
-    the_plan = plan(scene, CATALOG, overrides={"shadow": "soft_64"}, budget=12)
+    the_plan = plan(scene, CATALOG, variants={"shadow": "soft_64"}, budget=12)
     assert the_plan.choices["shadow"] == "shadow.soft_64"
     assert the_plan.choices["ao"] == "ao.sdf5"  # 10 + 2 fits
-    assert plan(scene, CATALOG, overrides={"shadow": "soft_64"}, budget=11.5).choices["ao"] == (
+    assert plan(scene, CATALOG, variants={"shadow": "soft_64"}, budget=11.5).choices["ao"] == (
         "ao.sdf3"
     )
     with pytest.raises(InputError, match="below the cheapest"):
-        plan(scene, CATALOG, overrides={"shadow": "soft_64"}, budget=10.5)
+        plan(scene, CATALOG, variants={"shadow": "soft_64"}, budget=10.5)
 
 
 def test_missing_or_broken_measurements_are_named(tmp_path: Path) -> None:

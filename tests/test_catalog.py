@@ -256,8 +256,8 @@ def test_a_preset_of_a_preset_is_refused(tmp_path) -> None:  # type: ignore[no-u
 
 
 def test_catalog_presets_are_listed_checked_and_composed() -> None:
+    from glint import compose
     from glint.compiler.compose.linking.standalone import standalone_source
-    from glint.compiler.compose.pipeline import compose
     from glint.compiler.target.glslang import validate
 
     soft_12 = CATALOG.get("shadow.soft_12")
@@ -267,7 +267,7 @@ def test_catalog_presets_are_listed_checked_and_composed() -> None:
     assert entry["signature"] == ["float shadow(vec3 ro, vec3 rd, float tmin, float tmax)"]
     assert {p["name"]: p["default"] for p in entry["params"]}["SHADOW_STEPS"] == 12
     assert "#define SHADOW_STEPS 12\n" in standalone_source(soft_12, CATALOG)
-    shader = compose(overrides={"shadow": "soft_12"}).text
+    shader = compose(variants={"shadow": "soft_12"}).text
     assert "#define SHADOW_STEPS 12\n" in shader and "shadow.soft_12" in shader
     assert "// source: snippets/shadow/soft.glsl:" in shader
     assert validate(shader, "soft_12.glsl") == []

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.compose.pipeline import compose
+from glint import compose
 
 GLINT = [sys.executable, "-m", "glint.compiler.cli"]
 

@@ -7,7 +7,8 @@ import re
 import numpy as np
 import pytest
 
-from glint.compiler.compose.pipeline import compose, compose_scene, glint_version
+from glint import compose
+from glint.compiler.compose.pipeline import compose_scene, glint_version
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import parse_scene
 from glint.compiler.target.glslang import validate
@@ -51,8 +52,8 @@ def test_webgl2_and_desktop_are_complete_shaders() -> None:
 
 
 def test_variant_override_swaps_the_snippet() -> None:
-    soft = compose(overrides={"shadow": "soft"}).text
-    hard = compose(overrides={"shadow": "hard"}).text
+    soft = compose(variants={"shadow": "soft"}).text
+    hard = compose(variants={"shadow": "hard"}).text
     assert "snippets/shadow/soft.glsl" in soft and "snippets/shadow/hard.glsl" not in soft
     assert "snippets/shadow/hard.glsl" in hard and "snippets/shadow/soft.glsl" not in hard
     assert validate(hard, "hard.glsl") == []
@@ -60,9 +61,9 @@ def test_variant_override_swaps_the_snippet() -> None:
 
 def test_unknown_variant_and_slot_are_named() -> None:
     with pytest.raises(InputError, match="--variant.shadow: unknown variant 'blurry'; variants"):
-        compose(overrides={"shadow": "blurry"})
+        compose(variants={"shadow": "blurry"})
     with pytest.raises(InputError, match="--variant.glow: unknown slot"):
-        compose(overrides={"glow": "x"})
+        compose(variants={"glow": "x"})
 
 
 BARE = """
@@ -181,7 +182,7 @@ def test_fast_tier_uses_the_hemisphere_and_no_sh_constants() -> None:
 
 
 def test_derivative_normals_are_taken_in_uniform_control_flow() -> None:
-    flat = compose(overrides={"normal": "derivative_flat"}).text
+    flat = compose(variants={"normal": "derivative_flat"}).text
     main = flat[flat.index("void mainImage") :]
     assert main.index("calcNormal(P)") < main.index("if (t > 0.0)")
     assert validate(flat, "flat.glsl") == []

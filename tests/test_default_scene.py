@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from glint import compose
 from glint.compiler.bench.scenes import TEMPLATE_MODELS, template_source
-from glint.compiler.compose.pipeline import compose
 from glint.compiler.render import flip_error, image_stats, render
 
 pytestmark = pytest.mark.render
@@ -26,7 +26,7 @@ SIZE = (320, 180)
 
 @pytest.fixture(scope="module")
 def composed() -> str:
-    text = compose(tier="balanced", overrides=TEMPLATE_MODELS).text
+    text = compose(tier="balanced", variants=TEMPLATE_MODELS).text
     # The catalog's sphere tracing takes 512 steps where the template stops at 128 (and then
     # shows sky below a grazing horizon); with the template's budget it is the template's march.
     assert text.count("#define MARCH_STEPS 512\n") == 1

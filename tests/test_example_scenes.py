@@ -10,7 +10,7 @@ import pytest
 from mesh_scenes import MESH_EXAMPLES, example_params
 
 import glint
-from glint.compiler.compose.pipeline import compose
+from glint import compose
 from glint.compiler.render import image_stats, render
 from glint.compiler.scene.model import default_scene_path
 from glint.compiler.target.glslang import validate
@@ -26,7 +26,7 @@ def test_there_are_examples_beyond_the_default() -> None:
 @pytest.mark.parametrize("scene", example_params(NOT_SHADERTOY))
 @pytest.mark.parametrize("target", ["shadertoy", "webgl2", "desktop"])
 def test_example_validates(scene: Path, target: str) -> None:
-    shader = compose(scene, target)
+    shader = compose(scene, target=target)
     assert [str(d) for d in validate(shader.text, scene.name, target)] == []
 
 
@@ -99,7 +99,7 @@ def test_every_variant_composes_into_a_scene_of_its_slot(snippet_id: str) -> Non
     slot, variant = snippet_id.split(".", 1)
     name = SCENE_OF_SLOT[slot]
     scene = None if name is None else default_scene_path().parent / f"{name}.toml"
-    shader = compose(scene, overrides={slot: variant})
+    shader = compose(scene, variants={slot: variant})
     assert snippet_id in {u.id for u in shader.units}
     assert [str(d) for d in validate(shader.text, f"{snippet_id}.glsl")] == []
     stats = image_stats(render(shader.text, 96, 54, time=1.0))

@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 from mesh_scenes import example_params
 
+from glint import compose
 from glint.compiler.cli import main
 from glint.compiler.compose.linking.uniform_params import constant_uses, read_manifest
-from glint.compiler.compose.pipeline import compose
 from glint.compiler.target.glslang import validate
 
 SCENES = example_params("its programs take their parameters as #defines only (no webgl2 target)")
@@ -30,7 +30,7 @@ def test_ranged_parameters_become_uniforms_listed_in_the_manifest() -> None:
     # the reference tier marches (the others trace the default scene in closed form)
     shader = compose(target="webgl2", params_as_uniforms=True, tier="reference")
     manifest = read_manifest(shader.text)
-    assert manifest == shader.uniforms
+    assert manifest == list(shader.uniforms)
     assert [p.name for p in manifest] == _uniform_names(shader.text)
     by_name = {p.name: p for p in manifest}
     # the default scene's AO and march step count (an int: a loop bound, fine in ES 3.00)

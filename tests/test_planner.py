@@ -29,7 +29,7 @@ EXAMPLES = example_params("a plan per material: test_mesh_programs_emit_their_pl
 
 
 def emitted_slots(scene: Scene, tier: str = "balanced", **overrides: str) -> set[str]:
-    shader = compose_scene(scene, tier=tier, overrides=overrides or None)
+    shader = compose_scene(scene, tier=tier, variants=overrides or None)
     return {u.slot for u in shader.units if u.slot in SLOTS and not SLOTS[u.slot].many}
 
 
@@ -174,9 +174,7 @@ def test_rough_diffuse_model_only_with_a_diffuse_roughness() -> None:
         == "diffuse.lambert"
     )
     # An explicit choice wins over the content's.
-    chosen = plan(
-        build([SUN], {"diffuse_roughness": 0.4}), CATALOG, overrides={"diffuse": "burley"}
-    )
+    chosen = plan(build([SUN], {"diffuse_roughness": 0.4}), CATALOG, variants={"diffuse": "burley"})
     assert chosen.choices["diffuse"] == "diffuse.burley"
 
 
@@ -205,7 +203,7 @@ def test_translucency_needs_a_directional_light() -> None:
 def test_an_override_of_a_slot_not_in_use_brings_nothing_in() -> None:
     scene = build([SUN | {"shadow": False}])
     assert "shadow" not in planned_slots(scene, shadow="soft_64")
-    assert "shadow.soft_64" not in compose_scene(scene, overrides={"shadow": "soft_64"}).text
+    assert "shadow.soft_64" not in compose_scene(scene, variants={"shadow": "soft_64"}).text
 
 
 def test_explain_names_every_slot_with_its_reason() -> None:

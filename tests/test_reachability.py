@@ -11,11 +11,11 @@ import pytest
 from lark import Token, Tree
 from mesh_scenes import MESH_EXAMPLES, RAYMARCHED_EXAMPLES
 
-from glint import compose_mesh
+from glint import compose, compose_mesh
 from glint.compiler.catalog.loader import load_catalog
 from glint.compiler.compose.linking.emitter import emit
 from glint.compiler.compose.linking.reachability import prune_unreachable
-from glint.compiler.compose.pipeline import compose, compose_scene
+from glint.compiler.compose.pipeline import compose_scene
 from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.units import GENERATED, Unit, generated
 from glint.compiler.glsl import parse_source
@@ -145,7 +145,7 @@ INTERFACE = re.compile(r"^(?:in|out|uniform) \w+ (\w+);", re.M)
 def test_composed_shader_holds_only_reachable_items(
     scene: Path, tier: str, overrides: dict[str, str]
 ) -> None:
-    text = compose(scene, tier=tier, overrides=overrides).text
+    text = compose(scene, tier=tier, variants=overrides).text
     assert unreachable_items(text) == set()
     assert mismatched_lines(text) == []
 
@@ -169,7 +169,7 @@ def test_mesh_stages_hold_only_what_main_reaches(scene: Path, tier: str) -> None
     ids=[f"{s.stem}-{t}-{'-'.join(o.values()) or 'plan'}" for s, t, o in CASES],
 )
 def test_composed_shader_validates(scene: Path, tier: str, overrides: dict[str, str]) -> None:
-    text = compose(scene, tier=tier, overrides=overrides).text
+    text = compose(scene, tier=tier, variants=overrides).text
     assert [str(d) for d in validate(text, f"{scene.stem}.glsl")] == []
 
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from glint.compiler.compose.pipeline import compose
+from glint import compose
 from glint.compiler.render import render
 from glint.compiler.render.images import flip_error, load_png
 from glint.compiler.scene.model import default_scene_path

@@ -344,8 +344,8 @@ def test_a_concave_field_shows_no_hairline_at_any_tier(
     rays meant for its floor (now baked for the lens: 18 joined dark pixels before); far away,
     a hit accepted up to the cone's radius (0.06 at 30 units) shadowed itself from a shadow ray
     that starts 0.02 along the light (now shadow rays start the march's tolerance out along the
-    normal, marchTolerance: 42 joined dark pixels without it). Against the reference tier no dark line is
-    left inside the cell, and outliers stay rare."""
+    normal, marchTolerance: 42 joined dark pixels without it). Against the reference tier no
+    dark line is left inside the cell, and outliers stay rare."""
     (tmp_path / "cell.glsl").write_text(CELL.replace("SIZE", repr(size)))
     scene = tmp_path / "cell.toml"
     half = [1.1 * size, 0.5 * size]

@@ -48,7 +48,7 @@ SIZE = 33  # odd, so that the centre pixel's ray is the camera's axis
 
 def centre_linear(text: str, **overrides: str) -> np.ndarray:
     """Linear RGB of the centre pixel of the scene rendered with `overrides` variants."""
-    shader = compose_scene(parse_scene(text), overrides=overrides or None)
+    shader = compose_scene(parse_scene(text), variants=overrides or None)
     image = render(shader.text, SIZE, SIZE, time=0.0)
     return image[SIZE // 2, SIZE // 2, :3].astype(np.float64) ** 2.2
 

@@ -99,9 +99,9 @@ def compose_mesh(
     _check_choice("target", target, MESH_TARGETS)
     if tier is not None:
         _check_choice("tier", tier, TIERS)
-    overrides = _args.str_mapping("variants", variants)
+    variants = _args.str_mapping("variants", variants)
     model = load_scene(scene)
-    return MeshShader(compose_mesh_scene(model, target, tier, overrides))
+    return MeshShader(compose_mesh_scene(model, target, tier, variants))
 
 
 def draw_mesh_shader(

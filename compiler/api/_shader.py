@@ -172,12 +172,12 @@ def compose(
     _check_uniforms(target, params_as_uniforms)
     if tier is not None:
         _check_choice("tier", tier, TIERS)
-    overrides = _args.str_mapping("variants", variants)
+    variants = _args.str_mapping("variants", variants)
     if budget is not None and not _args.number("budget", budget) > 0:
         raise UsageError(f"budget: expected a positive number of ns, got {budget!r}")
     model = load_scene(scene)
     emit_as = "shadertoy" if target in LANGS else target
-    composed = compose_scene(model, emit_as, tier, overrides, budget, params_as_uniforms)
+    composed = compose_scene(model, emit_as, tier, variants, budget, params_as_uniforms)
     return Shader(
         _converted(composed.text, target, model.name),
         target,

@@ -70,7 +70,7 @@ TEMPLATE = "template.glsl"
 REFERENCE_TIER = "reference"
 TEMPLATE_ROW = "template"
 TEMPLATE_SCENE = "default"  # the example scene that the template renders
-# The template's models as variant overrides: the tiers are tuned from measurements and need not
+# The template's models as variant variants: the tiers are tuned from measurements and need not
 # stay the template's; composed with these, the default scene is the template's picture.
 TEMPLATE_MODELS = {
     "D": "ggx",
@@ -351,7 +351,7 @@ def _measure_scene(
     repeats: int,
     times: Sequence[float],
     passes: int,
-    overrides: Mapping[str, Mapping[str, str]],
+    variants: Mapping[str, Mapping[str, str]],
     with_template: bool,
     progress: Callable[[str], None] | None,
 ) -> tuple[list[TierMeasure], str]:
@@ -364,7 +364,7 @@ def _measure_scene(
     # The reference tier is always drawn: it is the yardstick of the others.
     measured = list(dict.fromkeys([REFERENCE_TIER, *tiers]))
     shaders = [
-        _Shader(tier, compose_scene(scene, tier=tier, overrides=dict(overrides.get(tier, {}))).text)
+        _Shader(tier, compose_scene(scene, tier=tier, variants=dict(variants.get(tier, {}))).text)
         for tier in measured
     ]
     template = with_template and scene.name == TEMPLATE_SCENE
@@ -411,14 +411,14 @@ def measure_scenes(
     repeats: int = 7,
     times: Sequence[float] = DEFAULT_TIMES,
     progress: Callable[[str], None] | None = None,
-    overrides: Mapping[str, Mapping[str, str]] | None = None,
+    variants: Mapping[str, Mapping[str, str]] | None = None,
     template: bool = True,
     passes: int = 3,
 ) -> tuple[list[TierMeasure], str]:
     """Measure each scene (example names or .toml paths; None: every example scene) at each
     tier, plus the template on the default scene; return the rows and the renderer label.
 
-    `overrides` maps a tier to slot = variant overrides for it (as `--variant`); the reference
+    `variants` maps a tier to slot = variant variants for it (as `--variant`); the reference
     tier is measured even when `tiers` leaves it out, as every FLIP is taken against it.
     Each shader is drawn in `passes` x len(times) contexts, `repeats` draws each, the first
     not timed; FLIP is taken on the first pass's images. `progress(label)` is called
@@ -430,7 +430,7 @@ def measure_scenes(
     renderer = ""
     for name in scenes if scenes is not None else example_scenes():
         scene_rows, renderer = _measure_scene(
-            name, tiers, size, max(repeats, 2), times, max(passes, 1), overrides or {},
+            name, tiers, size, max(repeats, 2), times, max(passes, 1), variants or {},
             template, progress,
         )  # fmt: skip
         rows.extend(scene_rows)

@@ -6,11 +6,10 @@ import re
 from collections.abc import Collection, Mapping
 from dataclasses import replace
 from importlib.metadata import version as package_version
-from pathlib import Path
 
 from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
 from glint.compiler.compose.codegen.scene_code import generate
-from glint.compiler.compose.linking.emitter import Shader, emit, parameter_unit
+from glint.compiler.compose.linking.emitter import Composition, emit, parameter_unit
 from glint.compiler.compose.linking.reachability import ROOTS, prune_unreachable
 from glint.compiler.compose.linking.resolver import resolve
 from glint.compiler.compose.linking.uniform_params import (
@@ -26,7 +25,7 @@ from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.planning.planner import plan
 from glint.compiler.compose.units import CONSTANTS, Unit
 from glint.compiler.errors import InputError, UsageError
-from glint.compiler.scene.model import Scene, load_scene
+from glint.compiler.scene.model import Scene
 
 DERIVATIVES = re.compile(r"\b(dFdx|dFdy|fwidth)\s*\(")
 
@@ -44,10 +43,10 @@ def compose_scene(
     scene: Scene,
     target: str = "shadertoy",
     tier: str | None = None,
-    overrides: dict[str, str] | None = None,
+    variants: dict[str, str] | None = None,
     budget: float | None = None,
     params_as_uniforms: bool = False,
-) -> Shader:
+) -> Composition:
     """Compose a scene; `budget` (ns per pixel) picks the quality variants from measurements;
     `params_as_uniforms` (webgl2 only) makes the ranged parameters uniforms a page can set."""
     if scene.is_mesh:
@@ -58,7 +57,7 @@ def compose_scene(
         )
     catalog = load_catalog()
     code = generate(scene)
-    the_plan = plan(scene, catalog, tier, overrides, budget, code.units)
+    the_plan = plan(scene, catalog, tier, variants, budget, code.units)
     the_plan = replace(the_plan, params=bake(scene, the_plan))
     if uses_derivatives(catalog.get(the_plan.choices["normal"])):
         # the same calls, written so that the normal is taken in uniform control flow
@@ -93,7 +92,7 @@ def emit_shader(
     params_as_uniforms: bool = False,
     catalog: Catalog | None = None,
     knobs: Mapping[str, UniformParam] | None = None,
-) -> Shader:
+) -> Composition:
     """Emit composed units for `target`: the last step of composing, also used to emit one
     composition for a second target without planning it again (the site's live canvases)."""
     if params_as_uniforms and target != "webgl2":
@@ -106,7 +105,7 @@ def emit_shader(
             scene_name, the_plan, units, catalog, target, knobs or {}
         )
     text = emit(scene_name, the_plan, units, target, glint_version())
-    return Shader(text=text, units=units, plan=the_plan, uniforms=uniforms)
+    return Composition(text=text, units=units, plan=the_plan, uniforms=uniforms)
 
 
 def _params_as_uniforms(
@@ -139,17 +138,3 @@ def _params_as_uniforms(
     params = [p for p in params if p.name not in constant]
     body = as_uniforms(block, params) + manifest_comment(params)
     return [*units[:index], replace(units[index], body=body), *units[index + 1 :]], params
-
-
-def compose(
-    scene_path: str | Path | None = None,
-    target: str = "shadertoy",
-    tier: str | None = None,
-    overrides: dict[str, str] | None = None,
-    budget: float | None = None,
-    params_as_uniforms: bool = False,
-) -> Shader:
-    """Compose a scene file (None: the embedded default scene) into one shader."""
-    return compose_scene(
-        load_scene(scene_path), target, tier, overrides, budget, params_as_uniforms
-    )

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from mesh_scenes import example_params
 
-from glint.compiler.compose.pipeline import compose
+from glint import compose
 from glint.compiler.scene.model import default_scene_path
 from glint.lint.options import Options
 from glint.lint.runner import lint_source

@@ -23,7 +23,7 @@ TARGETS = shadertoy.TARGETS
 
 
 @dataclass
-class Shader:
+class Composition:
     text: str
     units: list[Unit]
     plan: Plan

@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from glint.compiler.catalog.loader import Catalog, load_catalog
-from glint.compiler.compose.linking.emitter import Shader, header, unit_blocks
+from glint.compiler.compose.linking.emitter import Composition, header, unit_blocks
 from glint.compiler.compose.mesh.code import background_unit, ignored, lit_scene, mesh_code
 from glint.compiler.compose.pipeline import assemble, emit_shader, glint_version
 from glint.compiler.compose.planning.bake import bake
@@ -64,7 +64,7 @@ class MeshComposition:
     scene: Scene
     target: str
     programs: list[MeshProgram]
-    background: Shader  # a complete fragment shader for a full-screen triangle
+    background: Composition  # a complete fragment shader for a full-screen triangle
     ignored: list[str]  # what the scene asks for that has no effect on meshes
 
     def files(self, base: str | Path) -> dict[Path, str]:
@@ -107,7 +107,7 @@ def compose_mesh_scene(
     scene: Scene,
     target: str,
     tier: str | None = None,
-    overrides: dict[str, str] | None = None,
+    variants: dict[str, str] | None = None,
 ) -> MeshComposition:
     """The programs of a mesh scene for `target` (mesh-webgl2 or mesh-desktop)."""
     if target not in MESH_TARGETS:
@@ -120,10 +120,10 @@ def compose_mesh_scene(
     catalog = load_catalog()
     version = glint_version()
     programs = [
-        _program(scene, material, target, tier, overrides, catalog, version)
+        _program(scene, material, target, tier, variants, catalog, version)
         for material in scene.used_materials()
     ]
-    background = _background(scene, target, tier, overrides, catalog)
+    background = _background(scene, target, tier, variants, catalog)
     return MeshComposition(scene, target, programs, background, ignored(scene))
 
 
@@ -132,7 +132,7 @@ def _program(
     material: str,
     target: str,
     tier: str | None,
-    overrides: dict[str, str] | None,
+    variants: dict[str, str] | None,
     catalog: Catalog,
     version: str,
 ) -> MeshProgram:
@@ -140,7 +140,7 @@ def _program(
     code = mesh_code(lit, material)
     models = lit.materials[material].models
     key = (f"materials.{material}.models", models) if models else None
-    the_plan = plan(lit, catalog, tier, overrides, None, code.vertex + code.fragment, key)
+    the_plan = plan(lit, catalog, tier, variants, None, code.vertex + code.fragment, key)
     the_plan = replace(the_plan, params=bake(lit, the_plan))
     the_plan.uses.update({slot: SlotUse(False, why) for slot, why in _NOT_IN_MESH_PROGRAMS.items()})
     shading = lit.shading_of(material)
@@ -161,14 +161,14 @@ def _background(
     scene: Scene,
     target: str,
     tier: str | None,
-    overrides: dict[str, str] | None,
+    variants: dict[str, str] | None,
     catalog: Catalog,
-) -> Shader:
+) -> Composition:
     """The sky behind the meshes: cameraRay and background, as a full-screen shader."""
     lit = lit_scene(scene)
     defines = mesh_code(lit, scene.used_materials()[0]).defines  # SUN_DIR for the sun disc
     units = [background_unit(scene)]
-    the_plan = plan(lit, catalog, tier, overrides, None, units)
+    the_plan = plan(lit, catalog, tier, variants, None, units)
     the_plan = replace(the_plan, params=bake(lit, the_plan))
     units = assemble(units, catalog, the_plan, defines)
     return emit_shader(scene.name, the_plan, units, background_target(target), catalog=catalog)

@@ -37,7 +37,7 @@ def plan(
     scene: Scene,
     catalog: Catalog,
     tier: str | None = None,
-    overrides: dict[str, str] | None = None,
+    variants: dict[str, str] | None = None,
     budget: float | None = None,
     units: list[Unit] | None = None,
     models: tuple[str, Mapping[str, str]] | None = None,
@@ -85,11 +85,11 @@ def plan(
         choose("specocc", "none", "effects.ao = false: no occlusion to derive it from")
     for source, table in (
         ("quality.variants", scene.quality.variants),
-        ("--variant", overrides or {}),
+        ("--variant", variants or {}),
         models or ("", {}),
     ):
         for slot, variant in table.items():
-            _check_override(catalog, source, slot, variant)
+            _check_variant(catalog, source, slot, variant)
             choose(slot, variant, f"{source} {slot} = {variant!r}")
             fixed.add(slot)
 
@@ -147,7 +147,7 @@ def _rough_materials(scene: Scene) -> list[str]:
     ]
 
 
-def _check_override(catalog: Catalog, source: str, slot: str, variant: str) -> None:
+def _check_variant(catalog: Catalog, source: str, slot: str, variant: str) -> None:
     if slot not in SLOTS or SLOTS[slot].many:
         one_variant = [name for name, s in SLOTS.items() if not s.many]
         raise InputError(f"{source}.{slot}: unknown slot; slots: {', '.join(one_variant)}")
