@@ -118,12 +118,19 @@ def edit_html(snippet_id: str, code: str) -> str:
     )
 
 
+def _live_choices(
+    ids: Sequence[str], pictures: Mapping[str, Picture]
+) -> list[tuple[str, PurePosixPath]]:
+    """The variants among `ids` that have a live shader, each with its shader's path."""
+    return [(id_, live_path(id_)) for id_ in ids if id_ in pictures and pictures[id_].live]
+
+
 def slot_live_section(
     slot: str, ids: Sequence[str], pictures: Mapping[str, Picture], first: str | None
 ) -> str:
     """A slot page's Live section: one canvas and a selector of the variants that have a live
     shader, starting on `first` (the reference tier's variant) where it has one."""
-    choices = [(id_, live_path(id_)) for id_ in ids if id_ in pictures and pictures[id_].live]
+    choices = _live_choices(ids, pictures)
     if not choices:
         return ""
     start = live_path(first) if first is not None and first in dict(choices) else choices[0][1]
@@ -143,7 +150,7 @@ def slot_compare_section(
     """A slot page's A/B comparison: two variants' live shaders on one picture split by a
     divider the reader drags, and their difference amplified; the first pair is the reference
     tier's variant and the next one."""
-    choices = [(id_, live_path(id_)) for id_ in ids if id_ in pictures and pictures[id_].live]
+    choices = _live_choices(ids, pictures)
     if len(choices) < 2:
         return ""
     paths = [path for _, path in choices]

@@ -135,10 +135,14 @@ def probe_inputs(function: FunctionDef, out_params: bool = False) -> tuple[list[
     return names, f"{function.name}({', '.join(args)})"
 
 
-def _fetches(channels: int = _CHANNELS) -> str:
+def _fetches(channels: int = _CHANNELS, name: str = "in") -> str:
     return "    ivec2 texel = ivec2(fragCoord);\n" + "".join(
-        f"    vec4 in{c} = texelFetch(iChannel{c}, texel, 0);\n" for c in range(channels)
+        f"    vec4 {name}{c} = texelFetch(iChannel{c}, texel, 0);\n" for c in range(channels)
     )
+
+
+def _main_image(body: str) -> str:
+    return f"void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{body}}}\n"
 
 
 def _main(statements: str, result: str, calls: int, channels: int = _CHANNELS) -> str:
@@ -147,7 +151,7 @@ def _main(statements: str, result: str, calls: int, channels: int = _CHANNELS) -
     if calls == 1:
         body = f"{_fetches(channels)}{statements}    fragColor = {result};\n"
     else:
-        fetched = _fetches(channels).replace("vec4 in", "vec4 base")
+        fetched = _fetches(channels, "base")
         jittered = "".join(f"        vec4 in{c} = base{c} * scale;\n" for c in range(channels))
         inner = "".join(f"    {line}\n" for line in statements.splitlines())
         body = (
@@ -158,7 +162,7 @@ def _main(statements: str, result: str, calls: int, channels: int = _CHANNELS) -
             "    }\n"
             "    fragColor = total;\n"
         )
-    return f"void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{body}}}\n"
+    return _main_image(body)
 
 
 def _outputs(function: FunctionDef, call: str) -> tuple[str, str, str]:
@@ -215,6 +219,13 @@ def run_probe(
     own body, e.g. a helper such as envBRDFApprox) instead of the slot's entry."""
     catalog = catalog or load_catalog()
     source, names, width = probe_shader(catalog.get(snippet_id), catalog, scene_stub, function)
+    return _samples(source, snippet_id, names, inputs, width)
+
+
+def _samples(
+    source: str, snippet_id: str, names: list[str], inputs: dict[str, np.ndarray], width: int
+) -> np.ndarray:
+    """A probe's values: one pixel per sample, its inputs packed into the channels."""
     count = _sample_count(snippet_id, names, inputs)
     channels, rows, cols = _pack(names, inputs, count, min(count, _ROW))
     return _unpack(render(source, cols, rows, channels=channels), count, width)
@@ -233,12 +244,9 @@ def run_statements(
     the entry's own probe cannot build, such as a Surface from its own N and V). Returns the
     first `width` channels per sample, as run_probe does."""
     catalog = catalog or load_catalog()
-    main = f"void mainImage(out vec4 fragColor, in vec2 fragCoord) {{\n{_fetches()}{statements}}}\n"
+    main = _main_image(_fetches() + statements)
     code = standalone_source(catalog.get(snippet_id), catalog, main, SCENE_STUB)
-    source = PROBE_PRELUDE + code + shadertoy.EPILOGUE
-    count = _sample_count(snippet_id, names, inputs)
-    channels, rows, cols = _pack(names, inputs, count, min(count, _ROW))
-    return _unpack(render(source, cols, rows, channels=channels), count, width)
+    return _samples(PROBE_PRELUDE + code + shadertoy.EPILOGUE, snippet_id, names, inputs, width)
 
 
 @dataclass(frozen=True)
@@ -278,11 +286,11 @@ def run_probe_timed(
     count = _sample_count(snippet_id, names, inputs)
     channels, rows, cols = _pack(names, inputs, max(count, pixels), _ROW)
     frame = render_full(source, cols, rows, channels=channels, repeats=repeats)
-    image = frame.image
-    if calls > 1:
+    if calls == 1:
+        values = _unpack(frame.image, count, width)
+    else:  # the loop's sum means little: the values are one call's, one pixel per sample
         single = probe_shader(snippet, catalog, scene_stub, function, out_params)[0]
-        image = render_full(single, cols, rows, channels=channels, repeats=1).image
-    values = _unpack(image, count, width)
+        values = _samples(single, snippet_id, names, inputs, width)
     return TimedProbe(values, frame.draw_times, rows * cols * calls, frame.renderer)
 
 

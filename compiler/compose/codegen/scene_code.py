@@ -92,9 +92,10 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
         if scene.medium.level is not None:
             units.append(_submerged_unit(scene.medium.level))
             path = "submerged(ro, rd, t)"
-    if any(getattr(light, "shadow", False) for light in scene.lights):
+    lifted = HIT_LIFT in lights.requires  # a shadow ray starts from the lifted point
+    if lifted:
         units.append(_hit_lift_unit())
-    units.append(_main_unit(scene, normal_in_uniform_flow, path))
+    units.append(_main_unit(scene, normal_in_uniform_flow, path, lifted))
     knobs = dict(lights.knobs)
     for material_knobs in values.values():
         knobs.update((knob.name, knob) for knob in material_knobs)
@@ -534,7 +535,10 @@ def _hit_lift_unit() -> Unit:
     return generated("scene.hit_lift", [HIT_LIFT], [], body)
 
 
-def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | None = None) -> Unit:
+def _main_unit(
+    scene: Scene, normal_in_uniform_flow: bool, medium_path: str | None = None, lifted: bool = False
+) -> Unit:
+    """`mainImage`; `lifted`: shadow rays start from the point lifted by hitLift, which it sets."""
     requires = [
         "cameraRay", "background", "raymarch", "shade", "surfaceAt", "calcNormal",
         "outputTransfer", "tonemap",
@@ -559,7 +563,7 @@ def _main_unit(scene: Scene, normal_in_uniform_flow: bool, medium_path: str | No
     # start that far out along the normal (HIT_LIFT), or a hit accepted that far off a concave
     # rim shadows itself (dark hairlines). Only shadows: AO and the rest read the point itself.
     lift = ""
-    if any(getattr(light, "shadow", False) for light in scene.lights):
+    if lifted:
         lift = f"        {HIT_LIFT} = marchTolerance(t);\n"
         requires += ["marchTolerance", HIT_LIFT]
         why.append(("marchTolerance", "shadow rays start clear of where the march stopped"))
