@@ -5,6 +5,9 @@ approximation is measured against its own float64 truth, apart from the timed pa
   (`references.environment.dfg_split_sum`), as the directional albedo f0·A + B that the
   reflection is weighted by: the error is the larger of its two ends, f0 = 0 and f0 = 1 (it is
   linear in f0 between them).
+- `area.representative` and `area.sampled`: the light of a sphere, disc or rectangle off a white
+  dielectric against the light integrated over its surface in float64 (`references.area`),
+  over lights of many sizes, distances and tilts, some past the horizon or seen from behind.
 - `ibl.simple_reflection`: the light it reflects from the gradient sky (a dielectric, no
   occlusion) against the GGX lobe integrated over that sky (`specular_environment`), for
   normals all around, views above the surface and roughness over [0, 1].
@@ -15,11 +18,16 @@ Each function returns the errors per sample and the samples' coordinates, as a P
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from glint.compiler.catalog.loader import Catalog
 from glint.compiler.verify.probes import run_probe, run_statements
+from glint.compiler.verify.references.area import area_light
 from glint.compiler.verify.references.environment import dfg_split_sum, specular_environment
+
+RenderedErrors = Callable[[Catalog], tuple[np.ndarray, dict[str, np.ndarray]]]
 
 GRID = 64  # samples per axis of a two-input approximation
 MIN_NOV = 1e-4  # as core.surface's
@@ -30,6 +38,86 @@ SEED = 7
 REFLECTION_PROBE = """    Surface s = makeSurface(vec3(0.0), in0.xyz, in1.xyz, vec3(1.0), in0.w);
     fragColor = vec4(environmentLight(s, 1.0), 1.0);
 """
+
+
+AREA_CASES = 120  # per shape
+# A white dielectric with its normal on +z, seen along in0.xyz at roughness in0.w, lit by the
+# light in1..in3 (centre, right, up, shape) of radiance 1.
+AREA_PROBE = """    vec3 V = normalize(in0.xyz);
+    Surface s = makeSurface(vec3(0.0), vec3(0.0, 0.0, 1.0), V, vec3(1.0), in0.w);
+    vec3 right = vec3(in1.w, in2.xy);
+    vec3 up = vec3(in2.zw, in3.x);
+    fragColor = vec4(areaLight(s, in1.xyz, right, up, int(in3.y + 0.5), vec3(1.0)), 1.0);
+"""
+
+
+def area_cases(count: int = AREA_CASES, seed: int = SEED) -> dict[str, np.ndarray]:
+    """Lights of every shape around a surface whose normal is +z: centres 0.5 to 6 away, most
+    above the horizon and some straddling it; sizes up to about 60° across; discs and
+    rectangles tilted up to 60° from facing the point, one in ten facing away; views from
+    grazing to overhead, roughness 0.1 to 1 (below, a highlight is narrower than the float64
+    grid resolves). Keys: the probe's inputs, each (3 · count,)."""
+    rng = np.random.default_rng(seed)
+    total = 3 * count
+    shape = np.repeat(np.arange(3), count).astype(np.float64)
+    direction = rng.normal(size=(total, 3))
+    direction[:, 2] = np.abs(direction[:, 2]) - 0.3 * rng.uniform(size=total)
+    direction /= np.linalg.norm(direction, axis=1, keepdims=True)
+    dist = rng.uniform(0.5, 6.0, total)
+    center = direction * dist[:, None]
+    size = dist * rng.uniform(0.02, 0.5, total)  # radius or half side
+    toward = -direction + rng.normal(scale=0.5, size=(total, 3))
+    toward[rng.uniform(size=total) < 0.1] *= -1.0  # facing away
+    toward /= np.linalg.norm(toward, axis=1, keepdims=True)
+    helper = np.where(np.abs(toward[:, 1:2]) < 0.99, [[0.0, 1.0, 0.0]], [[1.0, 0.0, 0.0]])
+    right = np.cross(helper, toward)
+    right /= np.linalg.norm(right, axis=1, keepdims=True)
+    up = np.cross(toward, right)
+    aspect = np.where(shape == 2, rng.uniform(0.3, 1.0, total), 1.0)
+    right *= size[:, None]
+    up *= (size * aspect)[:, None]
+    v = rng.normal(size=(total, 3))
+    v[:, 2] = np.abs(v[:, 2]) + 0.02
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    roughness = rng.uniform(0.1, 1.0, total)
+    columns = [*v.T, roughness, *center.T, *right.T, *up.T, shape]
+    names = ["v0", "v1", "v2", "roughness", "c0", "c1", "c2", "r0", "r1", "r2", "u0", "u1",
+             "u2", "shape"]  # fmt: skip
+    return {
+        n: np.asarray(c, np.float32).astype(np.float64) for n, c in zip(names, columns, strict=True)
+    }
+
+
+def area_timing_inputs() -> dict[str, np.ndarray]:
+    """The cases of area_cases as the entry's own probe takes them (areaLight(s, center,
+    right, up, shape, radiance) with a fixed white Surface of its roughness and N·V), so that
+    the cost is timed on the same mix of shapes as the error."""
+    cases = area_cases()
+    inputs = {"s.roughness": cases["roughness"], "s.NoV": np.maximum(cases["v2"], 1e-4)}
+    for key, name in (("c", "center"), ("r", "right"), ("u", "up")):
+        inputs |= {f"{name}{i}": cases[f"{key}{i}"] for i in range(3)}
+    inputs["shape"] = cases["shape"]
+    inputs |= {f"radiance{i}": np.ones_like(cases["shape"]) for i in range(3)}
+    return inputs
+
+
+def area_errors(variant: str) -> RenderedErrors:
+    """|areaLight − the float64 integral| per colour channel of an area variant."""
+
+    def errors(catalog: Catalog) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+        inputs = area_cases()
+        names = list(inputs)
+        gpu = run_statements(variant, AREA_PROBE, names, inputs, 3, catalog)
+        stack = {k: np.stack([inputs[f"{k}{i}"] for i in range(3)], axis=1) for k in "vcru"}
+        exact = area_light(
+            v=stack["v"], roughness=inputs["roughness"], center=stack["c"], right=stack["r"],
+            up=stack["u"], shape=inputs["shape"],
+        )  # fmt: skip
+        error = np.abs(np.asarray(gpu, np.float64) - exact[:, None])
+        where = {"shape": inputs["shape"], "roughness": inputs["roughness"], "exact": exact}
+        return np.where(np.isfinite(error), error, np.inf), where
+
+    return errors
 
 
 def _grid(first: tuple[float, float], second: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:

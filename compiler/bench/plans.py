@@ -18,12 +18,17 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
-from glint.compiler.bench.approximations import env_brdf_errors, reflection_errors
+from glint.compiler.bench.approximations import (
+    RenderedErrors,
+    area_errors,
+    area_timing_inputs,
+    env_brdf_errors,
+    reflection_errors,
+)
 from glint.compiler.bench.flat_normal import flat_normal_errors, render_flat
 from glint.compiler.bench.normals import normal_set
 from glint.compiler.bench.occlusion import ao_sets, shadow_sets
@@ -42,8 +47,6 @@ FLAT_FACES = "sdf_normal (flat faces)"
 # Slots whose values are a visible fraction that reaches 0 by design: no relative error.
 FRACTIONS = {"specocc"}
 # Variants whose error is that of an approximation they contain: its truth, unit and errors.
-
-RenderedErrors = Callable[[Catalog], tuple[np.ndarray, dict[str, np.ndarray]]]
 
 
 @dataclass
@@ -65,6 +68,8 @@ FRACTIONS = {"specocc"}
 APPROXIMATIONS: dict[str, tuple[str, str, RenderedErrors]] = {
     "ibl.env_brdf_approx": ("dfg_split_sum", "albedo", env_brdf_errors),
     "ibl.simple_reflection": ("specular_environment", "radiance", reflection_errors),
+    "area.representative": ("area_light", "radiance", area_errors("area.representative")),
+    "area.sampled": ("area_light", "radiance", area_errors("area.sampled")),
 }
 
 
@@ -97,6 +102,9 @@ def plan_for(snippet: Snippet) -> Plan:
         return Plan(snippet.reference, "transmittance", subsurface_sets())
     if slot == "normal":
         return _normal_plan(snippet)
+    if slot == "area":
+        truth, unit, errors = APPROXIMATIONS[snippet.id]
+        return Plan(truth, unit, [ProbeSet(area_timing_inputs())], rendered=errors)
     if snippet.domain:
         case = domain_set(snippet)
         if case.exact is None:

@@ -338,8 +338,8 @@ def glsl_value(value: Any, type_: str) -> str:
         return str(int(value))
     if type_ == "bool":
         return "true" if value else "false"
-    if type_ == "vec3":
-        return "vec3(" + ", ".join(glsl_float(v) for v in value) + ")"
+    if type_ in ("vec2", "vec3"):
+        return f"{type_}(" + ", ".join(glsl_float(v) for v in value) + ")"
     raise ValueError(f"unknown parameter type {type_}")
 
 

@@ -62,6 +62,14 @@ SLOTS: dict[str, Slot] = {
             "attenuation",
             "float attenuation(float dist, float range)",
         ),
+        # One entry for the three shapes (sphere, disc, rectangle): `shape` is a constant at
+        # every call, so a compiler folds the branches of the two shapes a call does not use.
+        Slot(
+            "area",
+            "light from a sphere, disc or rectangle of uniform radiance",
+            "areaLight",
+            "vec3 areaLight(Surface s, vec3 center, vec3 right, vec3 up, int shape, vec3 radiance)",
+        ),
         Slot(
             "ao",
             "ambient occlusion of the SDF scene",

@@ -6,6 +6,7 @@ effects, post) and how much accuracy to pay for (quality). Nothing in it execute
 
 from __future__ import annotations
 
+import math
 import re
 import tomllib
 from collections.abc import Mapping
@@ -22,6 +23,8 @@ from glint.compiler.scene.values import (
     DIRECTION_RANGE,
     AtLeastOne,
     Color,
+    ConeAngle,
+    FieldOfView,
     Number,
     Positive,
     PositiveVec3,
@@ -30,6 +33,7 @@ from glint.compiler.scene.values import (
     Unit,
     Vec3,
     direction_problem,
+    integer,
     key_path,
     nesting_problem,
     shown,
@@ -39,6 +43,20 @@ from glint.compiler.scene.values import (
 # distance function of a few MiB is already far beyond what anyone writes by hand).
 SCENE_FILE_LIMIT = 4 * MiB
 GEOMETRY_FILE_LIMIT = 4 * MiB
+
+
+def _fov_sets_focal(camera: OrbitCamera | LookAtCamera) -> None:
+    """A camera given by its field of view gets the focal length it stands for: everything
+    downstream reads `focal`. Given both, they must agree."""
+    if camera.fov is None:
+        return
+    focal = 1.0 / math.tan(math.radians(camera.fov) / 2.0)
+    if "focal" in camera.model_fields_set and abs(camera.focal - focal) > 1e-6 * focal:
+        raise ValueError(
+            f"focal {camera.focal:g} and fov {camera.fov:g} disagree (fov {camera.fov:g} is "
+            f"focal {focal:.6g}); give one of them"
+        )
+    camera.focal = focal
 
 
 class OrbitCamera(Strict):
@@ -51,12 +69,21 @@ class OrbitCamera(Strict):
     """Height of the camera above the target."""
     speed: Number = 0.3
     """Radians per second of the orbit (0 holds still)."""
+    start: Number = 0.0
+    """The orbit's angle at iTime = 0, in degrees: 0 puts the eye on +x, 90 on +z."""
     focal: Positive = 1.5
-    """Focal length in screen heights: larger zooms in."""
+    """Distance from the eye to a screen two units tall (1.5 sees 67.4° from the bottom of
+    the picture to its top): larger zooms in. `fov` sets it by the angle instead."""
+    fov: FieldOfView | None = None
+    """Vertical field of view in degrees, bottom to top of the picture; replaces focal
+    (focal = 1 / tan(fov / 2))."""
+    roll: Number = 0.0
+    """Turns the picture about the line of sight, in degrees (positive turns it clockwise)."""
 
     @model_validator(mode="after")
     def _eye_apart(self) -> OrbitCamera:
         _check_line_of_sight([self.radius, self.height, 0.0], self.target, "radius and height")
+        _fov_sets_focal(self)
         return self
 
 
@@ -67,10 +94,17 @@ class LookAtCamera(Strict):
     target: Vec3 = [0.0, 0.0, 0.0]
     """The point it looks at."""
     focal: Positive = 1.5
-    """Focal length in screen heights: larger zooms in."""
+    """Distance from the eye to a screen two units tall (1.5 sees 67.4° from the bottom of
+    the picture to its top): larger zooms in. `fov` sets it by the angle instead."""
+    fov: FieldOfView | None = None
+    """Vertical field of view in degrees, bottom to top of the picture; replaces focal
+    (focal = 1 / tan(fov / 2))."""
+    roll: Number = 0.0
+    """Turns the picture about the line of sight, in degrees (positive turns it clockwise)."""
 
     @model_validator(mode="after")
     def _distinct(self) -> LookAtCamera:
+        _fov_sets_focal(self)
         if self.position == self.target:
             raise ValueError("position and target must differ")
         sight = [t - p for p, t in zip(self.position, self.target, strict=True)]
@@ -123,6 +157,9 @@ class Material(Strict):
     subsurface: Color | None = None
     """Light that passes through the body and scatters toward the eye (translucency), per
     channel: the interior's scattering colour. Absent: the material is opaque."""
+    emission: Color | None = None
+    """Light the surface gives off itself, linear RGB added after lighting (a lamp's shade, a
+    screen, lava): unlit and unshadowed, and seen in reflections."""
     subsurface_g: SignedUnit = 0.5
     """Asymmetry g of the interior's phase function: > 0 scatters forward (glows when back-lit)."""
     shading: ShadingMode | None = None
@@ -179,6 +216,114 @@ class PointLight(Strict):
     """Whether it casts shadows (the `shadow` slot)."""
 
 
+class SpotLight(Strict):
+    """A point light that shines into a cone: full inside `inner`, none outside `outer`."""
+
+    type: Literal["spot"]
+    position: Vec3
+    """Where the light is."""
+    direction: Vec3 | None = None
+    """The way it shines (from the light into the scene), e.g. [0, -1, 0] for straight down."""
+    target: Vec3 | None = None
+    """A point it shines at, instead of `direction`."""
+    color: Color = [1.0, 1.0, 1.0]
+    intensity: Radiometric = 1.0
+    """Multiplies the colour, as a point light's (on the cone's axis it is one)."""
+    inner: ConeAngle = 20.0
+    """Half-angle of the full-strength cone, degrees from the axis."""
+    outer: ConeAngle = 30.0
+    """Half-angle where the light reaches zero, degrees from the axis."""
+    range: Positive = 10.0
+    """Where the attenuation reaches zero (for the attenuation variants that have a range)."""
+    shadow: bool = True
+    """Whether it casts shadows (the `shadow` slot)."""
+
+    @model_validator(mode="after")
+    def _aim(self) -> SpotLight:
+        if (self.direction is None) == (self.target is None):
+            raise ValueError("give direction (the way it shines) or target (a point), one of them")
+        if self.target is not None:
+            if self.target == self.position:
+                raise ValueError("target: the point it shines at must not be its position")
+            self.direction = [t - p for p, t in zip(self.position, self.target, strict=True)]
+            self.target = None
+        _check_direction(self.direction)
+        if self.inner > self.outer:
+            raise ValueError(
+                f"inner {self.inner:g} is wider than outer {self.outer:g}; the full-strength "
+                "cone lies inside the outer one"
+            )
+        return self
+
+
+class _AreaLight(Strict):
+    """What every area light has. Its `intensity` is that of the point light it looks like
+    from far away (the same units as a point light's): the surface's radiance is the
+    intensity over its (projected) area."""
+
+    position: Vec3
+    """The light's centre."""
+    color: Color = [1.0, 1.0, 1.0]
+    intensity: Radiometric = 1.0
+    """Multiplies the colour: a point light's intensity, spread over the light's area."""
+    shadow: bool = True
+    """Whether it casts shadows (the `shadow` slot, softened by the light's size)."""
+
+
+class SphereLight(_AreaLight):
+    """A glowing ball (a bulb): it shines every way."""
+
+    type: Literal["sphere"]
+    radius: Positive = 0.25
+
+
+class DiscLight(_AreaLight):
+    """A glowing disc that shines from one face (a ceiling lamp, a softbox)."""
+
+    type: Literal["disc"]
+    direction: Vec3 = [0.0, -1.0, 0.0]
+    """The way its lit face looks (from the light into the scene)."""
+    radius: Positive = 0.5
+
+    @model_validator(mode="after")
+    def _nonzero(self) -> DiscLight:
+        _check_direction(self.direction)
+        return self
+
+
+class RectLight(_AreaLight):
+    """A glowing rectangle that shines from one face (a window, a panel)."""
+
+    type: Literal["rect"]
+    direction: Vec3 = [0.0, -1.0, 0.0]
+    """The way its lit face looks (from the light into the scene)."""
+    size: Annotated[list[Positive], Field(min_length=2, max_length=2)] = [1.0, 1.0]
+    """Width and height."""
+    up: Vec3 | None = None
+    """Which way its height runs (made perpendicular to direction); by default the world's y,
+    or z for a rectangle facing straight up or down."""
+
+    @model_validator(mode="after")
+    def _nonzero(self) -> RectLight:
+        _check_direction(self.direction)
+        if self.up is not None:
+            problem = direction_problem(self.up)
+            if problem is not None:
+                raise ValueError(f"up {problem}")
+            if _parallel(self.up, self.direction):
+                raise ValueError("up is along direction; it must say which way the height runs")
+        return self
+
+
+def _parallel(a: list[float], b: list[float]) -> bool:
+    cross = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    scale = math.sqrt(sum(x * x for x in a) * sum(x * x for x in b))
+    return math.sqrt(sum(x * x for x in cross)) <= 1e-6 * scale
+
+
+AREA_LIGHTS = (SphereLight, DiscLight, RectLight)
+
+
 class SkyLight(Strict):
     type: Literal["sky"]
     color: Color = [0.2, 0.5, 1.0]
@@ -220,7 +365,16 @@ class EnvironmentLight(Strict):
 
 
 Light = Annotated[
-    DirectionalLight | PointLight | SkyLight | BackLight | BounceLight | EnvironmentLight,
+    DirectionalLight
+    | PointLight
+    | SpotLight
+    | SphereLight
+    | DiscLight
+    | RectLight
+    | SkyLight
+    | BackLight
+    | BounceLight
+    | EnvironmentLight,
     Field(discriminator="type"),
 ]
 Camera = Annotated[OrbitCamera | LookAtCamera, Field(discriminator="type")]
@@ -340,6 +494,12 @@ class Medium(Strict):
 class Background(Strict):
     sun: bool = True
     """Draw a glow and a disc around the key light."""
+    color: Color | None = None
+    """A flat colour for rays that hit nothing, in place of the environment (which surfaces
+    still reflect and are lit by). Absent: the background shows the environment."""
+    tonemap: bool = True
+    """Whether the background goes through exposure and the tone map as the lit surfaces do;
+    false shows `color` (or the environment) as given, so [1, 1, 1] is white on screen."""
 
 
 class Effects(Strict):
@@ -350,8 +510,9 @@ class Effects(Strict):
 class Post(Strict):
     tonemap: Literal["none", "reinhard", "aces"] = "reinhard"
     """The tone map applied before output."""
-    output: Literal["gamma22", "srgb"] = "gamma22"
-    """The transfer function to the display."""
+    output: Literal["gamma22", "srgb", "none"] = "gamma22"
+    """The transfer function to the display; none writes the linear colour (for a buffer
+    another pass reads, or a runner that encodes it)."""
     exposure: Positive = 1.0
     """Scales the linear colour before the tone map (2 is one stop brighter)."""
 
@@ -368,6 +529,13 @@ class Quality(Strict):
     """The quality tier: which variant fills each slot."""
     variants: dict[str, str] = {}
     """Slot -> variant, overriding the tier, e.g. { shadow = "hard" }."""
+    params: dict[str, integer(-(2**24)) | Number | Vec3] = {}  # type: ignore[valid-type]
+    """Values of the chosen snippets' parameters, e.g. { SHADOW_K = 16, AO_STEPS = 8 }: they
+    replace the defaults and the values glint derives (see `glint catalog show SLOT.VARIANT`
+    for each snippet's parameters and their ranges)."""
+    aa: integer(1, 8) = 1  # type: ignore[valid-type]
+    """Anti-aliasing: each pixel averages aa × aa samples spread over its area (1: one sample,
+    the ray through its centre). The cost grows as aa²."""
 
 
 class Scene(Strict):
@@ -480,6 +648,20 @@ class Scene(Strict):
                 )
         if self.geometry is not None:
             raise ValueError("geometry: a mesh scene has no distance field; remove [geometry]")
+        # what the rasterized programs do not draw yet: refused rather than dropped unseen
+        unsupported = [
+            ("camera.roll", self.camera.roll != 0.0),
+            ("quality.aa", self.quality.aa != 1),
+            ("background.color", self.background.color is not None),
+            ("background.tonemap", not self.background.tonemap),
+            *(
+                (f"materials.{n}.emission", m.emission is not None)
+                for n, m in self.materials.items()
+            ),
+        ]
+        for key, given in unsupported:
+            if given:
+                raise ValueError(f"{key}: not available in mesh scenes yet; remove it")
         if self.medium is not None:
             raise ValueError("medium: not available in mesh scenes yet; remove [medium]")
 
@@ -577,6 +759,10 @@ _TAGS: dict[str, type[BaseModel]] = {
     **SHAPE_TAGS,
     "directional": DirectionalLight,
     "point": PointLight,
+    "spot": SpotLight,
+    "sphere": SphereLight,
+    "disc": DiscLight,
+    "rect": RectLight,
     "sky": SkyLight,
     "back": BackLight,
     "bounce": BounceLight,

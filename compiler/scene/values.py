@@ -67,6 +67,10 @@ NonNegative = _number(ge=0.0)
 Unit = _number(ge=0.0, le=1.0)
 SignedUnit = _number(ge=-1.0, le=1.0)
 AtLeastOne = _number(ge=1.0)
+# A camera's field of view in degrees: any lens, short of 180° (where the focal length is 0).
+FieldOfView = _number(gt=0.0, lt=179.0)
+# A cone's half-angle in degrees, from its axis: a spot light's.
+ConeAngle = _number(ge=0.0, le=89.0)
 Vec3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
 PositiveVec3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
 NonNegativeVec3 = Annotated[list[NonNegative], Field(min_length=3, max_length=3)]

@@ -89,7 +89,11 @@ def snippet_function(snippet: Snippet, name: str) -> FunctionDef:
 
 
 def entry_function(snippet: Snippet) -> FunctionDef:
+    """The function a probe calls: the slot's entry; for a library snippet with a domain (a
+    light's falloff), the function it provides first."""
     slot = SLOTS[snippet.slot]
+    if slot.entry is None and snippet.domain and snippet.provides:
+        return snippet_function(snippet, snippet.provides[0])
     if slot.entry is None:
         raise InputError(f"{snippet.id}: slot {slot.name} has no entry function to probe")
     return snippet_function(snippet, slot.entry)
@@ -119,6 +123,8 @@ def probe_inputs(function: FunctionDef, out_params: bool = False) -> tuple[list[
             else:
                 parts = [scalar(f"{param.name}{i}") for i in range(size)]
                 args.append(f"{param.type}({', '.join(parts)})")
+        elif param.type == "int":  # an enumeration or a count, sent as a float
+            args.append(f"int({scalar(param.name)} + 0.5)")
         elif param.type in STRUCT_FIELDS:
             fields = [scalar(f"{param.name}.{f}") for f in STRUCT_FIELDS[param.type]]
             args.append(f"{param.type}({', '.join(fields)})")

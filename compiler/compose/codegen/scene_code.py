@@ -24,14 +24,19 @@ from glint.compiler.compose.codegen.user_geometry import (
 from glint.compiler.compose.units import Unit, generated
 from glint.compiler.errors import InputError
 from glint.compiler.scene.model import (
+    AREA_LIGHTS,
     BackLight,
     BounceLight,
     DirectionalLight,
+    DiscLight,
     EnvironmentLight,
     Material,
     PointLight,
+    RectLight,
     Scene,
     SkyLight,
+    SphereLight,
+    SpotLight,
 )
 
 
@@ -85,7 +90,10 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     )
     if translucent:
         units.append(_subsurface_unit(scene, materials))
-    units.append(shade_unit(scene, lights, translucent))
+    emissive = any(scene.materials[m].emission is not None for m in materials)
+    if emissive:
+        units.append(_emission_unit(scene, materials))
+    units.append(shade_unit(scene, lights, translucent, emissive))
     path = None  # how far the light from the hit point travels through the medium
     if scene.medium is not None:
         path = "t"
@@ -188,6 +196,45 @@ def light_code(scene: Scene) -> LightCode:
             calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
             requires.append("pointLight")
             shaded_through_brdf(i, "pointLight", light.shadow)
+        elif isinstance(light, SpotLight):
+            ident = name("SPOT")
+            assert light.direction is not None  # the model turns a target into a direction
+            defines[f"{ident}_POS"] = _vec3(light.position)
+            defines[f"{ident}_DIR"] = f"normalize({_vec3(light.direction)})"
+            cones = [math.cos(math.radians(a)) for a in (light.outer, light.inner)]
+            defines[f"{ident}_CONE"] = glsl_value(cones, "vec2")
+            colour(ident, light.color, light.intensity)
+            defines[f"{ident}_RANGE"] = glsl_float(light.range)
+            visibility = "vec3(1.0)"
+            if light.shadow:
+                toward = f"normalize({ident}_POS - s.P)"
+                visibility = f"vec3(shadow({LIFTED}, {toward}, 0.02, distance({ident}_POS, s.P)))"
+                requires += ["shadow", HIT_LIFT]
+            calls.append(
+                f"spotLight(s, {ident}_POS, {ident}_DIR, {ident}_CONE, {ident}_COLOR, "
+                f"{ident}_RANGE, {visibility})"
+            )
+            requires.append("spotLight")
+            shaded_through_brdf(i, "spotLight", light.shadow)
+        elif isinstance(light, AREA_LIGHTS):
+            ident = name("AREA")
+            shape, right, up, area = area_frame(light)
+            defines[f"{ident}_POS"] = _vec3(light.position)
+            defines[f"{ident}_RIGHT"] = _vec3(right)
+            defines[f"{ident}_UP"] = _vec3(up)
+            colour(ident, light.color, light.intensity)
+            # the intensity is the light's seen from afar; its surface's radiance is that
+            # spread over its area (projected, for a sphere)
+            defines[f"{ident}_RADIANCE"] = f"({ident}_COLOR / {glsl_float(area)})"
+            args = f"{ident}_POS, {ident}_RIGHT, {ident}_UP, {shape}"
+            visibility = ""
+            if light.shadow:
+                visibility = f" * areaShadow({LIFTED}, {args})"
+                requires += ["areaShadow", HIT_LIFT]
+                why.append(("areaShadow", f"{labels[i]} casts shadows"))
+            calls.append(f"areaLight(s, {args}, {ident}_RADIANCE){visibility}")
+            requires += ["areaLight", shape]
+            why.append(("areaLight", f"{labels[i]} is an area light"))
         elif isinstance(light, SkyLight):
             ident = name("SKY")
             colour(ident, light.color, light.intensity)
@@ -210,6 +257,41 @@ def light_code(scene: Scene) -> LightCode:
             requires.append("irradianceLight")
             why.append(("irradianceLight", f"{labels[i]} lights with the environment's irradiance"))
     return LightCode(defines, calls, requires, directional, why, labels, knobs)
+
+
+def area_frame(
+    light: SphereLight | DiscLight | RectLight,
+) -> tuple[str, list[float], list[float], float]:
+    """An area light as areaLight takes it: its shape's constant, the vectors `right` and `up`
+    (right × up is the way a disc or rectangle shines; a sphere reads only right's length),
+    and the area its intensity is spread over (a sphere's seen from afar, πr²)."""
+    if isinstance(light, SphereLight):
+        r = light.radius
+        return "AREA_SPHERE", [r, 0.0, 0.0], [0.0, r, 0.0], math.pi * r * r
+    facing = _unit(light.direction)
+    hint = light.up if isinstance(light, RectLight) and light.up is not None else None
+    if hint is None:
+        hint = [0.0, 0.0, 1.0] if abs(facing[1]) > 0.999 else [0.0, 1.0, 0.0]
+    right = _unit(_cross(hint, facing))
+    up = _cross(facing, right)  # right × up = facing
+    if isinstance(light, DiscLight):
+        r = light.radius
+        return "AREA_DISC", _scaled(right, r), _scaled(up, r), math.pi * r * r
+    width, height = light.size
+    return "AREA_RECT", _scaled(right, width / 2), _scaled(up, height / 2), width * height
+
+
+def _unit(v: list[float]) -> list[float]:
+    length = math.sqrt(sum(c * c for c in v))
+    return [c / length for c in v]
+
+
+def _cross(a: list[float], b: list[float]) -> list[float]:
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def _scaled(v: list[float], k: float) -> list[float]:
+    return [round(c * k, 7) + 0.0 for c in v]
 
 
 def _intensity_knob(name: str, value: float) -> UniformParam:
@@ -469,7 +551,19 @@ def _translucency(ident: str) -> str:
     )
 
 
-def shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
+def _emission_unit(scene: Scene, materials: list[str]) -> Unit:
+    """`emissionAt(P)`: the light the material at P gives off itself (0 for most)."""
+    bodies = [
+        [f"return {_vec3(scene.materials[name].emission or [0.0, 0.0, 0.0])};"]
+        for name in materials
+    ]
+    branches, lookup = _by_material(bodies)
+    lines = ["// Light the material at P gives off itself.", "vec3 emissionAt(vec3 P) {"]
+    lines += [*branches, "}"]
+    return generated("scene.emission", ["emissionAt"], lookup, "\n".join(lines) + "\n")
+
+
+def shade_unit(scene: Scene, lights: LightCode, translucent: bool, emissive: bool = False) -> Unit:
     lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
     requires = ["Surface", *lights.requires]
     why = list(lights.why)
@@ -504,6 +598,11 @@ def shade_unit(scene: Scene, lights: LightCode, translucent: bool) -> Unit:
     if reflection:
         lines.append(f"    color += environmentLight(s, {occlusion});")
         requires.append("environmentLight")
+    if emissive:
+        lines.append("    color += emissionAt(s.P);")
+        requires.append("emissionAt")
+        material = next(m for m in scene.used_materials() if scene.materials[m].emission)
+        why.append(("emissionAt", f"material {material!r} has emission"))
     lines += ["    return color;", "}"]
     return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n", why=why)
 
@@ -567,6 +666,11 @@ def _main_unit(
         lift = f"        {HIT_LIFT} = marchTolerance(t);\n"
         requires += ["marchTolerance", HIT_LIFT]
         why.append(("marchTolerance", "shadow rays start clear of where the march stopped"))
+    # A background shown as given skips exposure and the tone map: only what the rays hit
+    # goes through them.
+    exposed = "tonemap(color * EXPOSURE)"
+    if not scene.background.tonemap:
+        through += f"        color = {exposed};\n"
     if not normal_in_uniform_flow:
         hit = f"""    if (t > 0.0) {{
         vec3 P = ro + t * rd;
@@ -587,16 +691,43 @@ def _main_unit(
 {lift}        color = shade(surfaceAt(P, N, -rd));
 {through}    }}
 """
-    body = (
-        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+    cast = (
         "    vec3 ro;\n"
         "    vec3 rd;\n"
         "    cameraRay(fragCoord, ro, rd);\n"
         "    vec3 color = background(rd);\n"
         "    float t = raymarch(ro, rd);\n"
         f"{hit}"
-        "    color = outputTransfer(tonemap(color * EXPOSURE));\n"
-        "    fragColor = vec4(color, 1.0);\n"
+    )
+    display = exposed if scene.background.tonemap else "color"
+    aa = scene.quality.aa
+    if aa == 1:
+        body = (
+            "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+            f"{cast}"
+            f"    color = outputTransfer({display});\n"
+            "    fragColor = vec4(color, 1.0);\n"
+            "}\n"
+        )
+        return generated("scene.main", ["mainImage"], requires, body, why=why)
+    why.append(("pixelColor", f"quality.aa = {aa}: {aa * aa} rays per pixel"))
+    body = (
+        "// The tone-mapped colour seen along the ray through fragCoord.\n"
+        "vec3 pixelColor(vec2 fragCoord) {\n"
+        f"{cast}"
+        f"    return {display};\n"
+        "}\n"
+        "\n"
+        "// quality.aa: the mean of a grid of rays spread evenly over the pixel, taken after the\n"
+        "// tone map (a bright edge then blends as the eye sees it) and before the transfer.\n"
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    vec3 sum = vec3(0.0);\n"
+        f"    for (int i = 0; i < {aa}; i++) {{\n"
+        f"        for (int j = 0; j < {aa}; j++) {{\n"
+        f"            sum += pixelColor(fragCoord + (vec2(i, j) + 0.5) / {aa}.0 - 0.5);\n"
+        "        }\n"
+        "    }\n"
+        f"    fragColor = vec4(outputTransfer(sum / {aa * aa}.0), 1.0);\n"
         "}\n"
     )
-    return generated("scene.main", ["mainImage"], requires, body, why=why)
+    return generated("scene.main", ["pixelColor", "mainImage"], requires, body, why=why)

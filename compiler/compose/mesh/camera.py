@@ -34,7 +34,7 @@ def eye_and_target(
     target = np.asarray(camera.target, dtype=np.float64)
     if not isinstance(camera, OrbitCamera):
         return np.asarray(camera.position, dtype=np.float64), target
-    angle, height = time * camera.speed, camera.height
+    angle, height = math.radians(camera.start) + time * camera.speed, camera.height
     if mouse[0] > 0.0 or mouse[1] > 0.0:
         angle = 2.0 * math.pi * mouse[0] / size[0]
         height = 2.0 * camera.height * mouse[1] / size[1]

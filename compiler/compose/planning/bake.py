@@ -6,13 +6,17 @@ rest."""
 
 from __future__ import annotations
 
-from glint.compiler.catalog.loader import glsl_value, load_catalog
+import math
+
+from glint.compiler.catalog.loader import Param, glsl_value, load_catalog
+from glint.compiler.catalog.slots import SLOTS
 from glint.compiler.compose.planning.plan import Plan
 from glint.compiler.compose.planning.spherical_harmonics import (
     project_sh9,
     sh9_params,
     snippet_environment,
 )
+from glint.compiler.errors import InputError
 from glint.compiler.scene.model import LookAtCamera, OrbitCamera, Scene
 
 
@@ -23,7 +27,62 @@ def bake(scene: Scene, plan: Plan) -> dict[str, str]:
     if plan.choices.get("irradiance") == "irradiance.sh9" and lit_by_environment:
         params |= _sh9_params(plan.choices["env"], params)
     params |= _march_pixel(scene, plan)
+    if plan.choices.get("area") is not None:
+        params |= _area_shadow_rays(plan)
+    params |= given_params(scene, plan)
     return params
+
+
+# Shadow rays per side toward an area light, by tier: one ray (the centre's shadow) at fast,
+# 2 × 2 spread over the light at the others (its penumbra grows with its size).
+AREA_SHADOW_RAYS = {"fast": 1}
+
+
+def _area_shadow_rays(plan: Plan) -> dict[str, str]:
+    rays = AREA_SHADOW_RAYS.get(plan.tier)
+    return {} if rays is None else {"AREA_SHADOW_RAYS": str(rays)}
+
+
+def given_params(scene: Scene, plan: Plan) -> dict[str, str]:
+    """[quality.params]: values of parameters of the snippets the plan takes (its one-variant
+    slots' and the libraries'), checked against each one's type and range."""
+    given = scene.quality.params
+    if not given:
+        return {}
+    catalog = load_catalog()
+    chosen = [catalog.get(snippet_id) for snippet_id in plan.choices.values()]
+    libraries = [s for s in catalog.snippets.values() if SLOTS[s.slot].many]
+    known: dict[str, Param] = {}
+    for snippet in [*chosen, *libraries]:
+        for name, param in snippet.params.items():
+            known.setdefault(name, param)
+    out: dict[str, str] = {}
+    for name, value in given.items():
+        param = known.get(name)
+        if param is None:
+            names = ", ".join(sorted(known))
+            raise InputError(
+                f"quality.params.{name}: not a parameter of the snippets this scene uses at "
+                f"the {plan.tier} tier; theirs: {names}"
+            )
+        out[name] = _checked(f"quality.params.{name}", param, value)
+    return out
+
+
+def _checked(key: str, param: Param, value: float | int | list[float]) -> str:
+    """The GLSL value of a given parameter, or an error naming what the parameter takes."""
+    if param.type == "vec3":
+        if not isinstance(value, list):
+            raise InputError(f"{key}: a vec3 parameter; give three numbers, e.g. [1.0, 0.5, 0.0]")
+        return glsl_value([float(v) for v in value], "vec3")
+    if isinstance(value, list):
+        raise InputError(f"{key}: a {param.type} parameter; give one number, not a list")
+    if param.type == "int" and not isinstance(value, int):
+        raise InputError(f"{key}: an int parameter (a count); give a whole number, not {value!r}")
+    if param.range is not None and not param.range[0] <= value <= param.range[1]:
+        low, high = param.range
+        raise InputError(f"{key}: {value!r} is outside its range, {low:g} to {high:g}")
+    return glsl_value(int(value) if param.type == "int" else float(value), param.type)
 
 
 # The focal length a pixel-cone march's MARCH_PIXEL default is for: there it is about half a
@@ -62,10 +121,17 @@ def scene_params(scene: Scene) -> dict[str, str]:
         params["CAMERA_HEIGHT"] = glsl_value(camera.height, "float")
         params["CAMERA_SPEED"] = glsl_value(camera.speed, "float")
         params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+        if camera.start:
+            params["CAMERA_START"] = glsl_value(math.radians(camera.start), "float")
     elif isinstance(camera, LookAtCamera):
         params["CAMERA_POSITION"] = glsl_value(camera.position, "vec3")
         params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
         params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+    if camera.roll:
+        turn = (camera.roll + 180.0) % 360.0 - 180.0  # the same roll, within ±180°
+        params["CAMERA_ROLL"] = glsl_value(math.radians(turn), "float")
+    if scene.background.color is not None:
+        params["BACKGROUND_COLOR"] = glsl_value(scene.background.color, "vec3")
     if scene.environment is not None:
         params["ENV_TOP"] = glsl_value(scene.environment.top, "vec3")
         params["ENV_BOTTOM"] = glsl_value(scene.environment.bottom, "vec3")

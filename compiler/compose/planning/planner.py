@@ -65,7 +65,9 @@ def plan(
     choose("tonemap", scene.post.tonemap, f"post.tonemap = {scene.post.tonemap!r}")
     choose("output", scene.post.output, f"post.output = {scene.post.output!r}")
     has_sun = any(light.type == "directional" for light in scene.lights)
-    if scene.background.sun and has_sun:
+    if scene.background.color is not None:
+        choose("background", "color", "background.color is set")
+    elif scene.background.sun and has_sun:
         choose("background", "gradient_sun", "background.sun with a directional light")
     else:
         choose("background", "gradient", "no sun to draw in the background")

@@ -28,12 +28,13 @@ class SlotUse:
 
 # Why a slot is out when nothing in the scene reaches it.
 _OUT = {
-    "D": "no directional or point light is shaded through the BRDF",
+    "D": "no light is shaded through the BRDF",
     "F": "no BRDF light and no environment reflection",
-    "V": "no directional or point light is shaded through the BRDF",
-    "diffuse": "no directional or point light is shaded through the BRDF",
-    "specular": "no directional or point light is shaded through the BRDF",
-    "attenuation": "no point light",
+    "V": "no light is shaded through the BRDF",
+    "diffuse": "no light is shaded through the BRDF",
+    "specular": "no light is shaded through the BRDF",
+    "attenuation": "no point or spot light",
+    "area": "no area light (sphere, disc or rect)",
     "shadow": "no light casts a shadow",
     "specocc": "no environment reflection",
     "env": "nothing samples the environment",

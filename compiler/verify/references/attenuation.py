@@ -1,4 +1,5 @@
-"""Float64 references for the distance falloff of a point light (slot attenuation).
+"""Float64 references for the falloff of a point light with distance (slot attenuation) and of
+a spot light with angle (light.spot_cone).
 
 Each takes `dist` (from the light to the shaded point) and `range` (how far the light reaches),
 like `float attenuation(float dist, float range)`, and returns the factor by which the light's
@@ -50,9 +51,19 @@ def quadratic(*, dist: ArrayLike, range: ArrayLike | None = None) -> np.ndarray:
     return 1.0 / (1.0 + QUADRATIC_LINEAR * d + QUADRATIC_QUADRATIC * d * d)
 
 
+def spot_cone(*, cosAngle: ArrayLike, cosOuter: ArrayLike, cosInner: ArrayLike) -> np.ndarray:
+    """Filament's spot falloff: the cosine's place between the outer and the inner cone,
+    clamped to [0, 1] and squared; cones closer than 1e-4 in cosine count as 1e-4 apart."""
+    c = np.asarray(cosAngle, np.float64)
+    outer = np.asarray(cosOuter, np.float64)
+    width = np.maximum(np.asarray(cosInner, np.float64) - outer, 1e-4)
+    return np.clip((c - outer) / width, 0.0, 1.0) ** 2
+
+
 # The references this module contributes to the registry, by the name snippets use.
 REFERENCES = {
     "attenuation_inverse_square": inverse_square,
     "attenuation_inverse_square_windowed": inverse_square_windowed,
     "attenuation_quadratic": quadratic,
+    "spot_cone": spot_cone,
 }

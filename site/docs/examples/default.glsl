@@ -53,6 +53,8 @@
 #define CAMERA_SPEED 0.3
 #define CAMERA_TARGET vec3(0.0, 0.0, 0.0)
 #define CAMERA_FOCAL 1.5
+#define CAMERA_ROLL 0.0
+#define CAMERA_START 0.0
 #define AO_STRENGTH 3.0
 #define SHADOW_K 8.0
 #define MARCH_FAR 50.0
@@ -309,7 +311,11 @@ vec3 environmentLight(Surface s, float ao) {
 // before any drag, so a render (no mouse) follows iTime and the picture does not change.
 void cameraRay(vec2 fragCoord, out vec3 ro, out vec3 rd) {
     vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;
-    float angle = iTime * CAMERA_SPEED;
+    // Roll (radians): the screen turns counterclockwise under the picture, which turns clockwise.
+    float c = cos(CAMERA_ROLL);
+    float r = sin(CAMERA_ROLL);
+    uv = mat2(c, r, -r, c) * uv;
+    float angle = CAMERA_START + iTime * CAMERA_SPEED;
     float height = CAMERA_HEIGHT;
     if (iMouse.x > 0.0 || iMouse.y > 0.0) {
         angle = 6.28318531 * iMouse.x / iResolution.x;
