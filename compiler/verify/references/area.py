@@ -25,9 +25,8 @@ from glint.compiler.verify.references.visibility import V_smith_ggx_correlated
 
 DIELECTRIC_F0 = 0.04
 MIN_NOV = 1e-4  # as core.surface's
-GRID = (
-    256  # samples per side of each rule: within 1 % (0.0043) of 512 at the worst of the bench cases
-)
+# Samples per side of each rule: within 1 % (0.0043) of 512's at the worst of the bench cases.
+GRID = 256
 SPHERE, DISC, RECT = 0, 1, 2
 
 
