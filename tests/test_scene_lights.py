@@ -224,3 +224,31 @@ def test_fov_and_focal_must_agree() -> None:
     camera = {"type": "lookat", "position": [0, 1, 4], "fov": 60.0, "focal": 1.5}
     with pytest.raises(InputError, match="focal 1.5 and fov 60 disagree"):
         scene_from_dict(_scene(camera=camera))
+
+
+def test_a_smooth_surface_reflects_the_scene_at_balanced_not_at_fast() -> None:
+    """A mirror floor under a glowing ball, no lights: with effects.reflections the floor
+    below the ball shows the ball's emission (balanced), without it only the environment;
+    the fast tier keeps the environment, as documented."""
+    scene = _scene(
+        objects=[
+            {"shape": "plane", "material": "mirror"},
+            {"shape": "sphere", "position": [0.0, 1.2, 0.0], "radius": 0.5, "material": "lamp"},
+        ],
+        materials={
+            "mirror": {"albedo": [0.9, 0.9, 0.9], "roughness": 0.0, "metallic": 1.0},
+            "lamp": {"albedo": [0.0, 0.0, 0.0], "emission": [0.0, 4.0, 0.0]},
+        },
+        camera={"type": "lookat", "position": [0.0, 1.0, 5.0], "target": [0.0, 0.3, 0.0]},
+        environment={"top": [0.1, 0.1, 0.1], "bottom": [0.1, 0.1, 0.1]},
+    )
+    reflecting = dict(scene, effects={"ao": False, "reflections": True})
+    plain, mirrored = _pixels(scene), _pixels(reflecting)
+    fast, fast_plain = _pixels(reflecting, "fast"), _pixels(scene, "fast")
+    # the ball's image in the floor: green there only with reflections
+    image = (mirrored[..., 1] > 1.0) & (plain[..., 1] < 0.2)
+    assert image.sum() > 20
+    rows = np.nonzero(image)[0]
+    ball_rows = np.nonzero(plain[..., 1] > 1.0)[0]
+    assert rows.min() > ball_rows.max()  # below the ball, in the floor
+    np.testing.assert_allclose(fast, fast_plain, atol=1e-6)

@@ -88,7 +88,7 @@ class Shader:
         params_as_uniforms = _args.flag("params_as_uniforms", params_as_uniforms)
         _check_uniforms(target, params_as_uniforms)
         emit_as = "shadertoy" if target in LANGS else target
-        knobs = generate(self.scene).knobs if params_as_uniforms else None
+        knobs = generate(self.scene, tier=self.plan.tier).knobs if params_as_uniforms else None
         composed = emit_shader(
             self.scene.name, self.plan, list(self.units), emit_as, params_as_uniforms,
             knobs=knobs,

@@ -8,7 +8,7 @@ from dataclasses import replace
 from importlib.metadata import version as package_version
 
 from glint.compiler.catalog.loader import Catalog, Snippet, load_catalog
-from glint.compiler.compose.codegen.scene_code import generate
+from glint.compiler.compose.codegen.scene_code import MIRROR_UNIT, generate
 from glint.compiler.compose.linking.emitter import Composition, emit, parameter_unit
 from glint.compiler.compose.linking.reachability import ROOTS, prune_unreachable
 from glint.compiler.compose.linking.resolver import resolve
@@ -56,12 +56,20 @@ def compose_scene(
             "fragment shader per material)"
         )
     catalog = load_catalog()
-    code = generate(scene)
+    tier = tier or scene.quality.tier
+    code = generate(scene, tier=tier)
     the_plan = plan(scene, catalog, tier, variants, budget, code.units)
     the_plan = replace(the_plan, params=bake(scene, the_plan))
     if uses_derivatives(catalog.get(the_plan.choices["normal"])):
+        if any(unit.id == MIRROR_UNIT for unit in code.units):
+            raise InputError(
+                f"effects.reflections: the normal variant {the_plan.choices['normal']} takes "
+                "screen-space derivatives, which a mirror ray's hit has none of; choose "
+                "another normal variant (--variant normal=central_differences), or turn "
+                "reflections off"
+            )
         # the same calls, written so that the normal is taken in uniform control flow
-        code = generate(scene, normal_in_uniform_flow=True)
+        code = generate(scene, normal_in_uniform_flow=True, tier=tier)
     units = assemble(code.units, catalog, the_plan, code.defines)
     return emit_shader(scene.name, the_plan, units, target, params_as_uniforms, catalog, code.knobs)
 

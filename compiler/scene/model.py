@@ -505,6 +505,11 @@ class Background(Strict):
 class Effects(Strict):
     ao: bool = True
     """Ambient occlusion (the `ao` slot)."""
+    reflections: bool = False
+    """Mirror reflections: a smooth surface (roughness below 0.3, fading in toward 0) reflects
+    the scene itself, one bounce, at the balanced and reference tiers; what it sees is lit as
+    the scene is, emission included. The fast tier, and rough surfaces, reflect only the
+    environment. A second march for each smooth pixel: about twice its cost."""
 
 
 class Post(Strict):

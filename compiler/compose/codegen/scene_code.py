@@ -60,9 +60,13 @@ class LightCode:
     knobs: dict[str, UniformParam] = field(default_factory=dict)  # each light's intensity
 
 
-def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
-    """The scene's own code. `normal_in_uniform_flow` computes the normal outside the hit
-    branch, for normal variants built on screen-space derivatives."""
+def generate(
+    scene: Scene, normal_in_uniform_flow: bool = False, tier: str | None = None
+) -> SceneCode:
+    """The scene's own code at `tier` (the scene's own by default). `normal_in_uniform_flow`
+    computes the normal outside the hit branch, for normal variants built on screen-space
+    derivatives."""
+    tier = tier or scene.quality.tier
     lights = light_code(scene)
     materials = scene.used_materials()
     objects = [object_code(obj, i) for i, obj in enumerate(scene.objects)]
@@ -93,14 +97,18 @@ def generate(scene: Scene, normal_in_uniform_flow: bool = False) -> SceneCode:
     emissive = any(scene.materials[m].emission is not None for m in materials)
     if emissive:
         units.append(_emission_unit(scene, materials))
-    units.append(shade_unit(scene, lights, translucent, emissive))
+    mirrored = scene.effects.reflections and tier in MIRROR_TIERS
+    units.append(shade_unit(scene, lights, translucent, emissive, mirrored))
+    if mirrored:
+        units.append(_mirror_unit(scene))
     path = None  # how far the light from the hit point travels through the medium
     if scene.medium is not None:
         path = "t"
         if scene.medium.level is not None:
             units.append(_submerged_unit(scene.medium.level))
             path = "submerged(ro, rd, t)"
-    lifted = HIT_LIFT in lights.requires  # a shadow ray starts from the lifted point
+    # a shadow ray (and a mirror ray) starts from the lifted point
+    lifted = HIT_LIFT in lights.requires or mirrored
     if lifted:
         units.append(_hit_lift_unit())
     units.append(_main_unit(scene, normal_in_uniform_flow, path, lifted))
@@ -563,8 +571,56 @@ def _emission_unit(scene: Scene, materials: list[str]) -> Unit:
     return generated("scene.emission", ["emissionAt"], lookup, "\n".join(lines) + "\n")
 
 
-def shade_unit(scene: Scene, lights: LightCode, translucent: bool, emissive: bool = False) -> Unit:
-    lines = ["// Light arriving at the eye from a surface point.", "vec3 shade(Surface s) {"]
+# The tiers whose smooth surfaces reflect the scene when effects.reflections is on, and the
+# roughness below which they do (fading in from it to 0).
+MIRROR_TIERS = ("balanced", "reference")
+MIRROR_ROUGHNESS = 0.3
+MIRROR_UNIT = "scene.mirror"
+
+
+def _mirror_unit(scene: Scene) -> Unit:
+    """`shade` with one mirror bounce: where a smooth surface's mirror ray meets the scene,
+    what it sees there (shadeDirect: lit, emission included, not reflecting again) takes the
+    place of the environment in its reflection, weighted by Fresnel at N·V (the split sum's
+    weight on a mirror)."""
+    environment = scene.environment is not None and scene.environment.reflection
+    replaced = " - environment(R)" if environment else ""
+    rough = glsl_float(MIRROR_ROUGHNESS)
+    body = f"""// effects.reflections: one mirror bounce through the scene for smooth surfaces.
+vec3 shade(Surface s) {{
+    vec3 color = shadeDirect(s);
+    float mirror = 1.0 - smoothstep(0.0, {rough}, s.roughness);
+    if (mirror > 0.0) {{
+        vec3 R = reflect(-s.V, s.N);
+        vec3 origin = s.P + s.N * ({HIT_LIFT} + 0.02);
+        float t = raymarch(origin, R);
+        if (t > 0.0) {{
+            vec3 Q = origin + t * R;
+            vec3 seen = shadeDirect(surfaceAt(Q, calcNormal(Q), -R));
+            color += mirror * fresnel(s.f0, s.NoV) * (seen{replaced});
+        }}
+    }}
+    return color;
+}}
+"""
+    requires = ["Surface", "shadeDirect", "raymarch", "surfaceAt", "calcNormal", "fresnel"]
+    requires += [HIT_LIFT] + (["env"] if environment else [])
+    why = [("raymarch", "effects.reflections: smooth surfaces trace a mirror ray"),
+           ("fresnel", "effects.reflections weighs what a mirror sees by Fresnel")]  # fmt: skip
+    return generated(MIRROR_UNIT, ["shade"], requires, body, why=why)
+
+
+def shade_unit(
+    scene: Scene,
+    lights: LightCode,
+    translucent: bool,
+    emissive: bool = False,
+    mirrored: bool = False,
+) -> Unit:
+    """`shade(s)`: the light a surface point sends to the eye; `mirrored`: named shadeDirect,
+    under the `shade` that adds a mirror bounce (_mirror_unit)."""
+    name = "shadeDirect" if mirrored else "shade"
+    lines = ["// Light arriving at the eye from a surface point.", f"vec3 {name}(Surface s) {{"]
     requires = ["Surface", *lights.requires]
     why = list(lights.why)
     light_calls = lights.calls
@@ -604,7 +660,7 @@ def shade_unit(scene: Scene, lights: LightCode, translucent: bool, emissive: boo
         material = next(m for m in scene.used_materials() if scene.materials[m].emission)
         why.append(("emissionAt", f"material {material!r} has emission"))
     lines += ["    return color;", "}"]
-    return generated("scene.shade", ["shade"], requires, "\n".join(lines) + "\n", why=why)
+    return generated("scene.shade", [name], requires, "\n".join(lines) + "\n", why=why)
 
 
 def _submerged_unit(level: float) -> Unit:

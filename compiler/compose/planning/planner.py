@@ -46,9 +46,9 @@ def plan(
     most accurate measured variants within it instead of the tier's (see budget.py). The slots
     in use are those the scene's generated `units` reach (generated here when not given).
     `models` (key, {slot: variant}): a mesh material's own models, which replace the rest."""
-    if units is None:
-        units = generate(scene).units
     tier = tier or scene.quality.tier
+    if units is None:
+        units = generate(scene, tier=tier).units
     tiers = tier_table()
     result = Plan(tier=tier)
 
