@@ -142,6 +142,15 @@ def build_parser() -> argparse.ArgumentParser:
         default=60.0,
         help=f"seconds before giving up (default 60, at most {limits.MAX_TIMEOUT_S:g})",
     )
+    render.add_argument(
+        "--channel",
+        type=_picture_channel,
+        action="append",
+        default=[],
+        metavar="N=PICTURE",
+        help="bind a picture file to iChannelN (0-3) as ShaderToy binds one (repeatable), "
+        "e.g. --channel 0=stone.png for a material's albedo_texture = 0",
+    )
     render.add_argument("--json", action="store_true", help="print the report as JSON")
     _add_quality(render)
     render.set_defaults(handler=cmd_render)
@@ -514,6 +523,16 @@ def _progress_bar(label: str, total: int) -> Iterator[Callable[[str], None]]:
         yield tick
 
 
+def _picture_channel(text: str) -> tuple[int, str]:
+    """N=PICTURE for `render --channel`."""
+    unit, sep, path = text.partition("=")
+    if not sep or unit.strip() not in ("0", "1", "2", "3") or not path:
+        raise argparse.ArgumentTypeError(
+            f"{printable(text)}: expected N=PICTURE with N a channel from 0 to 3, e.g. 0=stone.png"
+        )
+    return int(unit), path
+
+
 def _channel(text: str) -> tuple[int, str]:
     try:
         return channel_binding(text)
@@ -575,6 +594,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         frame=args.frame,
         mouse=args.mouse,
         timeout=args.timeout,
+        channels=dict(args.channel) or None,
     )
     to_stdout = args.output == "-"
     if to_stdout:  # the PNG alone on stdout: the report goes to stderr

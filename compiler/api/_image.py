@@ -92,6 +92,7 @@ def render(
     frame: int = 0,
     mouse: Sequence[float] = (0.0, 0.0, 0.0, 0.0),
     timeout: float = 60.0,
+    channels: Mapping[int, str | os.PathLike[str]] | None = None,
 ) -> Image:
     """Draw one frame, as `glint render` does: in a child process killed after `timeout`
     seconds, into a float framebuffer, with the statistics and NaN/Inf counts in `stats`.
@@ -99,7 +100,9 @@ def render(
     `shader` is a `Shader` composed for the shadertoy target, ShaderToy Image-tab code (a str
     holding a line break), the path of such a file, or a scene (the path of a `.toml` file, a
     dict, a Scene) to compose first at its own tier. `size` is (width, height); `time`,
-    `frame` and `mouse` are iTime, iFrame and iMouse. A `MeshShader` or a mesh scene is drawn
+    `frame` and `mouse` are iTime, iFrame and iMouse; `channels` binds pictures (files) to
+    ShaderToy channels, e.g. {0: "stone.png"}, as ShaderToy binds them (mipmapped, repeating,
+    bottom row at v = 0); the rest sample black. A `MeshShader` or a mesh scene is drawn
     by rasterizing its meshes (a mesh scene at its own tier, for mesh-desktop).
 
     Raises InputError when the shader does not compile, does not finish in time or crashes the
@@ -117,11 +120,17 @@ def render(
     # The values (size and the memory it takes, timeout, float32 uniforms) before any work.
     check_request(width, height, time, frame, (x, y, z, w), timeout)
     meshes = _mesh_shader(shader)
+    if meshes is not None and channels:
+        raise UsageError("channels: a mesh shader reads no ShaderToy channel; leave them out")
     if meshes is not None:
         result = draw_mesh_shader(meshes, (width, height), time, (x, y, z, w), timeout)
     else:
-        source = _source(shader)
-        result = render_full(source, width, height, time, frame, (x, y, z, w), timeout=timeout)
+        pictures = _pictures(channels)
+        source = _source(shader, channels)
+        result = render_full(
+            source, width, height, time, frame, (x, y, z, w), timeout=timeout,
+            channels=pictures, pictures=bool(pictures),
+        )  # fmt: skip
     return Image(
         # A view of the RGBA frame, not a copy: a large frame is in memory once.
         pixels=result.image[:, :, :3],
@@ -132,6 +141,40 @@ def render(
         time=time,
         frame=frame,
     )
+
+
+def _check_pictures(shader: Shader, channels: Mapping[int, object] | None) -> None:
+    missing = sorted(shader.scene.bound_channels() - set(channels or {}))
+    if missing:
+        unit = missing[0]
+        material = next(
+            name for name in shader.scene.used_materials()
+            if shader.scene.materials[name].albedo_texture == unit
+        )  # fmt: skip
+        raise UsageError(
+            f"materials.{material}.albedo_texture = {unit}: nothing is bound to iChannel{unit}, "
+            f"which would sample black; give a picture (glint render --channel {unit}=FILE, "
+            f"or channels={{{unit}: FILE}})"
+        )
+
+
+def _pictures(channels: object) -> list[np.ndarray | None]:
+    """The pictures of `channels` ({N: path}) as channel data, None for a channel left black."""
+    from glint.compiler.render.images import channel_picture
+
+    if channels is None:
+        return []
+    if not isinstance(channels, Mapping):
+        raise UsageError(f"channels: a mapping of channel number to picture file, not {channels!r}")
+    data: list[np.ndarray | None] = [None] * 4
+    for unit, path in channels.items():
+        if isinstance(unit, bool) or not isinstance(unit, int) or not 0 <= unit <= 3:
+            raise UsageError(f"channels: {unit!r} is not a ShaderToy channel; they are 0 to 3")
+        where = _args.path(f"channels[{unit}]", path)
+        data[unit] = channel_picture(where, f"channels[{unit}]")
+    while data and data[-1] is None:
+        data.pop()
+    return data
 
 
 def _mesh_shader(shader: object) -> MeshShader | None:
@@ -150,24 +193,31 @@ def _mesh_shader(shader: object) -> MeshShader | None:
     return compose_mesh(scene) if scene.is_mesh else None
 
 
-def _source(shader: object) -> str:
-    """ShaderToy Image-tab code to draw."""
+def _source(shader: object, channels: Mapping[int, object] | None) -> str:
+    """ShaderToy Image-tab code to draw; a composed scene must have a picture on every channel
+    its materials read (unbound, it would sample black: a wrong picture without a word)."""
     if isinstance(shader, Shader):
         if shader.target != "shadertoy":
             raise UsageError(
                 f"render draws ShaderToy Image-tab code; this shader's target is "
                 f"{shader.target}: compose it with target='shadertoy'"
             )
+        _check_pictures(shader, channels)
         return shader.text
     if is_source(shader):
         return str(shader)
     if isinstance(shader, str | os.PathLike):
         path = _args.path("shader", shader)
-        return compose(path).text if path.endswith(".toml") else read_text_file(path)
+        if not path.endswith(".toml"):
+            return read_text_file(path)
+        shader = compose(path)
     from glint.compiler.scene.model import Scene
 
     if isinstance(shader, Mapping | Scene):
-        return compose(shader).text
+        shader = compose(shader)
+    if isinstance(shader, Shader):
+        _check_pictures(shader, channels)
+        return shader.text
     raise UsageError(
         "render takes a Shader, Image-tab code, the path of a shader or a scene, a dict or a "
         f"Scene, not {type(shader).__name__}"

@@ -49,7 +49,10 @@ class Frame:
     date: tuple[float, float, float, float]
     # Float data for iChannel0..3, each H x W x 4; texel (x, y) is array[y, x], no flip, so
     # a probe shader can read its inputs with texelFetch. Unset channels are black.
-    channels: tuple[np.ndarray, ...] = ()
+    channels: tuple[np.ndarray | None, ...] = ()
+    # Sample the channels as ShaderToy samples a picture (mipmaps, linear, repeat) rather than
+    # texel by texel as a probe reads its inputs.
+    pictures: bool = False
 
 
 def create_context() -> Any:
@@ -118,7 +121,10 @@ def set_uniforms(program: Any, frame: Frame) -> None:
     _set(program, "iMouse", frame.mouse)
     _set(program, "iDate", frame.date)
     _set(program, "iChannelTime", [frame.time] * 4)
-    sizes = [(c.shape[1], c.shape[0], 1.0) for c in frame.channels]
+    sizes = [
+        (c.shape[1], c.shape[0], 1.0) if c is not None else (CHANNEL_SIZE, CHANNEL_SIZE, 1.0)
+        for c in frame.channels
+    ]
     sizes += [(CHANNEL_SIZE, CHANNEL_SIZE, 1.0)] * (4 - len(sizes))
     _set(program, "iChannelResolution", sizes)
     _set(program, "iSampleRate", 44100.0)
@@ -137,9 +143,15 @@ def draw(ctx: Any, program: Any, frame: Frame, repeats: int = 1) -> tuple[np.nda
     for unit in range(4):
         black.use(location=unit)
     for unit, data in enumerate(frame.channels):
+        if data is None:
+            continue
         rows, cols = data.shape[:2]
         texture = ctx.texture((cols, rows), 4, np.ascontiguousarray(data, np.float32), dtype="f4")
         texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
+        if frame.pictures:
+            texture.build_mipmaps()
+            texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+            texture.repeat_x = texture.repeat_y = True
         texture.use(location=unit)
     # The array the frame is read into comes first: where memory is short, numpy says so with
     # a MemoryError, where the driver would fail in ways that are harder to tell apart.

@@ -142,6 +142,27 @@ def load_png(path: str) -> np.ndarray:
         raise InputError(f"cannot read image {path}: {exc}") from exc
 
 
+# The largest picture a channel takes (ShaderToy's own are at most 1024 on a side).
+PICTURE_LIMIT = 4096
+
+
+def channel_picture(path: str, key: str) -> np.ndarray:
+    """A picture file (PNG, JPEG, ...) as a channel's data: float32 RGBA in [0, 1], its bottom
+    row first, as ShaderToy binds a picture (flipped, so that v = 0 is the picture's bottom).
+    `key` names the argument in messages."""
+    try:
+        with Image.open(path) as image:
+            if max(image.size) > PICTURE_LIMIT:
+                raise InputError(
+                    f"{key}: {path} is {image.size[0]}x{image.size[1]}; a channel takes a "
+                    f"picture of at most {PICTURE_LIMIT} on a side: scale it down"
+                )
+            rgba = np.asarray(image.convert("RGBA"), dtype=np.float32) / 255.0
+    except (OSError, Image.DecompressionBombError) as exc:
+        raise InputError(f"{key}: cannot read the picture {path}: {exc}") from None
+    return np.ascontiguousarray(rgba[::-1])
+
+
 def png_pixels(data: bytes) -> np.ndarray:
     """A PNG's bytes (png_bytes, a cached picture) as float32 RGB in [0, 1]."""
     with Image.open(io.BytesIO(data)) as image:

@@ -148,12 +148,16 @@ def driver_log(log: str, source: str, version: str) -> str:
     return "\n".join(_DRIVER_LINE.sub(relocate, line) for line in kept) or log
 
 
-def _save_channels(channels: Sequence[np.ndarray], output_dir: str) -> list[str]:
-    """Write channel data where the worker can load it; at most four, each H x W x 4."""
+def _save_channels(channels: Sequence[np.ndarray | None], output_dir: str) -> list[str | None]:
+    """Write channel data where the worker can load it; at most four, each H x W x 4 (None
+    for a channel left black)."""
     if len(channels) > 4:
         raise UsageError(f"ShaderToy has four channels, got {len(channels)}")
-    paths = []
+    paths: list[str | None] = []
     for unit, data in enumerate(channels):
+        if data is None:
+            paths.append(None)
+            continue
         if data.ndim != 3 or data.shape[2] != 4:
             raise UsageError(f"iChannel{unit} data must be H x W x 4, got shape {data.shape}")
         path = os.path.join(output_dir, f"channel{unit}.npy")
@@ -167,7 +171,7 @@ def _input_bytes(job: dict[str, object]) -> int:
     (the loaded array and the driver's copy)."""
     paths = list(job.get("channels", []))  # type: ignore[call-overload]
     paths += [draw["arrays"] for draw in job.get("draws", [])]  # type: ignore[attr-defined]
-    return 2 * sum(os.path.getsize(path) for path in paths)
+    return 2 * sum(os.path.getsize(path) for path in paths if path is not None)
 
 
 def render_full(
@@ -179,11 +183,14 @@ def render_full(
     mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
     timeout: float = DEFAULT_TIMEOUT_S,
     date: tuple[float, float, float, float] = DEFAULT_DATE,
-    channels: Sequence[np.ndarray] = (),
+    channels: Sequence[np.ndarray | None] = (),
     repeats: int = 1,
+    pictures: bool = False,
 ) -> RenderResult:
     """Render one frame of a ShaderToy Image-tab shader; see `render`. With `repeats` > 1 the
-    frame is drawn that many times in one context and every draw is timed (for benchmarks)."""
+    frame is drawn that many times in one context and every draw is timed (for benchmarks).
+    `channels`: data for iChannel0.. (None: black); `pictures`: sample them as ShaderToy
+    samples a picture (mipmapped, linear, repeating) rather than texel by texel (probes)."""
     limits.check_request(width, height, time, frame, mouse, timeout)
     with tempfile.TemporaryDirectory(prefix="glint-render-") as output_dir:
         job = {
@@ -197,6 +204,7 @@ def render_full(
             "output_dir": output_dir,
             "channels": _save_channels(channels, output_dir),
             "repeats": max(1, repeats),
+            "pictures": pictures,
         }
 
         def rejected(message: str, outcome: dict[str, object]) -> str:

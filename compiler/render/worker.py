@@ -29,7 +29,8 @@ def run_job(job: dict[str, Any]) -> dict[str, Any]:
         frame=int(job["frame"]),
         mouse=tuple(job["mouse"]),
         date=tuple(job["date"]),
-        channels=tuple(np.load(path) for path in job.get("channels", [])),
+        channels=tuple(None if path is None else np.load(path) for path in job.get("channels", [])),
+        pictures=bool(job.get("pictures", False)),
     )
     try:
         ctx = gl.create_context()

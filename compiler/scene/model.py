@@ -157,6 +157,12 @@ class Material(Strict):
     subsurface: Color | None = None
     """Light that passes through the body and scatters toward the eye (translucency), per
     channel: the interior's scattering colour. Absent: the material is opaque."""
+    albedo_texture: integer(0, 3) | None = None  # type: ignore[valid-type]
+    """A picture on ShaderToy channel N (0 to 3) wrapped onto the surface by triplanar mapping,
+    its sRGB decoded to linear: the albedo is the picture's colour times `albedo`. Bind the
+    picture in ShaderToy, or render with `glint render --channel N=picture.png`."""
+    texture_scale: Positive = 1.0
+    """The world size of one repeat of the picture."""
     emission: Color | None = None
     """Light the surface gives off itself, linear RGB added after lighting (a lamp's shade, a
     screen, lava): unlit and unshadowed, and seen in reflections."""
@@ -172,6 +178,8 @@ class Material(Strict):
 
     @model_validator(mode="after")
     def _pattern(self) -> Material:
+        if self.pattern != "none" and self.albedo_texture is not None:
+            raise ValueError("give a pattern or an albedo_texture, not both")
         if self.pattern != "none" and self.pattern_albedo is None:
             raise ValueError(f"pattern '{self.pattern}' needs pattern_albedo, a second colour")
         return self
@@ -583,6 +591,11 @@ class Scene(Strict):
         glint cannot know) and no part whose field is only a bound (shapes.exact)."""
         return self.geometry is None and all(exact(obj) for obj in self.objects)
 
+    def bound_channels(self) -> set[int]:
+        """The ShaderToy channels the scene's materials in use read a picture from."""
+        channels = (self.materials[m].albedo_texture for m in self.used_materials())
+        return {c for c in channels if c is not None}
+
     def used_materials(self) -> list[str]:
         """Names of the materials in use, in order of first use (objects, then the user's
         geometry); unused ones emit nothing."""
@@ -659,6 +672,10 @@ class Scene(Strict):
             ("quality.aa", self.quality.aa != 1),
             ("background.color", self.background.color is not None),
             ("background.tonemap", not self.background.tonemap),
+            *(
+                (f"materials.{n}.albedo_texture", m.albedo_texture is not None)
+                for n, m in self.materials.items()
+            ),
             *(
                 (f"materials.{n}.emission", m.emission is not None)
                 for n, m in self.materials.items()

@@ -81,7 +81,7 @@ def generate(
     units.append(span_unit(scene.objects, scene.geometry is not None, field_bounds))
     albedo_by_user = False
     if scene.geometry is not None:
-        user = user_unit(scene.geometry, lights.defines)
+        user = user_unit(scene.geometry, lights.defines, scene.bound_channels())
         units.append(user)
         albedo_by_user = ALBEDO in user.provides
     if len(materials) > 1:
@@ -448,6 +448,10 @@ def _albedo(material: Material, named: str | None = None) -> tuple[str, list[str
     """The material's albedo as an expression (`named`: the constant that holds its colour)
     and what it requires."""
     base = named or _vec3(material.albedo)
+    if material.albedo_texture is not None:
+        channel = f"iChannel{material.albedo_texture}"
+        scale = glsl_float(material.texture_scale)
+        return f"{base} * triplanar({channel}, P, N, {scale})", ["triplanar"]
     if material.pattern == "checker":
         assert material.pattern_albedo is not None  # the scene model checks this
         return f"mix({base}, {_vec3(material.pattern_albedo)}, checker(P))", ["checker"]
@@ -489,7 +493,13 @@ def surface_unit(
         requires += extra
         bodies.append(body)
     branches, lookup = _by_material(bodies)
-    lines = ["// The material at a hit point.", "Surface surfaceAt(vec3 P, vec3 N, vec3 V) {"]
+    lines = ["// The material at a hit point."]
+    for channel in sorted(scene.bound_channels()):
+        users = [m for m in materials if scene.materials[m].albedo_texture == channel]
+        lines.append(
+            f"// iChannel{channel}: bind a picture to it (the albedo of {', '.join(users)})."
+        )
+    lines.append("Surface surfaceAt(vec3 P, vec3 N, vec3 V) {")
     lines += [*branches, "}"]
     return generated("scene.surface", ["surfaceAt"], requires + lookup, "\n".join(lines) + "\n")
 
@@ -515,7 +525,8 @@ def _material_body(
     the metallic path and the diffuse roughness appear only for materials that have them."""
     metal = material.metallic > 0.0
     prelude = []
-    if metal and albedo.startswith(("mix(", ALBEDO)):  # a pattern: evaluate it once for both
+    if metal and (albedo.startswith(("mix(", ALBEDO)) or "triplanar(" in albedo):
+        # a pattern or a picture: evaluate it once for both
         prelude, albedo = [f"vec3 albedo = {albedo};"], "albedo"
     named = named or {}
     roughness = named.get("ROUGHNESS", glsl_float(material.roughness))

@@ -59,17 +59,21 @@ GENERATED_NAMES = frozenset(
 )  # fmt: skip
 
 
-def user_unit(geometry: Geometry, constants: Collection[str] = ()) -> Unit:
+def user_unit(
+    geometry: Geometry, constants: Collection[str] = (), bound: Collection[int] = ()
+) -> Unit:
     """The user's file as a unit of the composition; one clear error for a file that does not
     parse, breaks the contract or takes a name that is not its to take. `constants`: the
-    scene's #define names (SUN_DIR ...), which the file may use."""
+    scene's #define names (SUN_DIR ...), which the file may use; `bound`: the channels the
+    scene's materials bind to pictures, which it may read too."""
     path = geometry.path
     symbols = analyze(geometry.source, path, provided=set(UNIFORM_NAMES) - CHANNELS)
-    _check_channels(symbols.functions, path)
+    pictures = {f"iChannel{c}" for c in bound}
+    _check_channels(symbols.functions, path, pictures)
     functions = {f.name: f for f in symbols.functions}
     _check_contract(functions, path, bool(geometry.materials))
     _check_names(symbols.defined, functions, path)
-    requires = (symbols.calls | symbols.free) - symbols.defined
+    requires = (symbols.calls | symbols.free) - symbols.defined - pictures
     _check_requirements(requires - set(constants), symbols.functions, path)
     return Unit(
         id=f"user:{Path(path).name}",
@@ -109,16 +113,17 @@ def _check_contract(functions: dict[str, FunctionDef], path: str, by_id: bool) -
         )
 
 
-def _check_channels(functions: list[FunctionDef], path: str) -> None:
-    """A read of iChannelN is an error: nothing is bound to it in a composed scene, so ShaderToy
-    and glint's renderer would sample black and light a wrong picture without a word."""
+def _check_channels(functions: list[FunctionDef], path: str, bound: set[str]) -> None:
+    """A read of a channel no material binds (albedo_texture) is an error: ShaderToy and
+    glint's renderer would sample black and light a wrong picture without a word."""
     for function in functions:
-        read = sorted(CHANNELS & (function.uses | function.calls))
+        read = sorted((CHANNELS - bound) & (function.uses | function.calls))
         if read:
             raise InputError(
-                f"{path}:{function.line}: {function.name} reads {read[0]}, but a glint scene "
-                "binds nothing to ShaderToy's channels, so it would sample black; make the "
-                "pattern procedural (a noise or a hash of p)"
+                f"{path}:{function.line}: {function.name} reads {read[0]}, which no material "
+                "of the scene binds to a picture, so it would sample black; bind it (a "
+                f"material's albedo_texture = {read[0][-1]}) or make the pattern procedural "
+                "(a noise or a hash of p)"
             )
 
 
