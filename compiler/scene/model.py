@@ -410,6 +410,16 @@ class Geometry(Strict):
     """Two opposite corners of a box that holds every surface of the field a ray can see, e.g.
     [[-3, -1, -3], [3, 1, 3]]: marches skip the rest of the ray. Without it they march it all."""
 
+    setup: str | None = None
+    """A `void NAME()` function of the file that runs once per pixel before the march: it
+    sets the globals the distance function reads (a rotation from iTime, a precomputed
+    shape), so that they are not recomputed at every step."""
+    detail: str | None = None
+    """A `float NAME(vec3 p)` function of the file: a small height added along the normal for
+    shading only (bumps, grain), never marched; its gradient tilts the normal."""
+    detail_strength: Positive = 1.0
+    """Multiplies the detail height (0.5 halves the bumps)."""
+
     _source: str = PrivateAttr("")
     _path: str = PrivateAttr("")
 

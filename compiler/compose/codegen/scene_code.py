@@ -109,6 +109,8 @@ def generate(
             path = "submerged(ro, rd, t)"
     # a shadow ray (and a mirror ray) starts from the lifted point
     lifted = HIT_LIFT in lights.requires or mirrored
+    if scene.geometry is not None and scene.geometry.detail is not None:
+        units.append(_detail_unit(scene.geometry.detail, scene.geometry.detail_strength))
     if lifted:
         units.append(_hit_lift_unit())
     units.append(_main_unit(scene, normal_in_uniform_flow, path, lifted))
@@ -691,6 +693,26 @@ float submerged(vec3 ro, vec3 rd, float t) {{
     return generated("scene.submerged", ["submerged"], [], body)
 
 
+DETAIL_NORMAL = "detailNormal"
+
+
+def _detail_unit(function: str, strength: float) -> Unit:
+    """`detailNormal(P, N)`: the normal of the surface raised by the user's detail height
+    along N (never marched: only shading sees it). A raised surface tilts against the height's
+    gradient along the surface: N − (g − (g·N) N), g by central differences."""
+    k = glsl_float(strength / 2e-3)
+    body = f"""// [geometry] detail: the normal of the surface raised by {function}(p) along N.
+vec3 {DETAIL_NORMAL}(vec3 P, vec3 N) {{
+    vec2 e = vec2(1e-3, 0.0);
+    vec3 g = vec3({function}(P + e.xyy) - {function}(P - e.xyy),
+                  {function}(P + e.yxy) - {function}(P - e.yxy),
+                  {function}(P + e.yyx) - {function}(P - e.yyx)) * {k};
+    return normalize(N - (g - dot(g, N) * N));
+}}
+"""
+    return generated("scene.detail", [DETAIL_NORMAL], [function], body)
+
+
 def _hit_lift_unit() -> Unit:
     """The global that carries the march's tolerance at the hit to the shadow rays."""
     body = (
@@ -738,10 +760,18 @@ def _main_unit(
     exposed = "tonemap(color * EXPOSURE)"
     if not scene.background.tonemap:
         through += f"        color = {exposed};\n"
+    geometry = scene.geometry
+    normal = "calcNormal(P)"
+    detailed = ""
+    if geometry is not None and geometry.detail is not None:
+        normal = f"{DETAIL_NORMAL}(P, calcNormal(P))"
+        detailed = f"    N = {DETAIL_NORMAL}(P, N);\n"
+        requires.append(DETAIL_NORMAL)
+        why.append((DETAIL_NORMAL, f"geometry.detail = {geometry.detail!r}"))
     if not normal_in_uniform_flow:
         hit = f"""    if (t > 0.0) {{
         vec3 P = ro + t * rd;
-{lift}        color = shade(surfaceAt(P, calcNormal(P), -rd));
+{lift}        color = shade(surfaceAt(P, {normal}, -rd));
 {through}    }}
 """
     else:
@@ -754,11 +784,17 @@ def _main_unit(
         hit = f"""    vec3 P = ro + (t > 0.0 ? t : MARCH_FAR) * rd;
     vec3 N = calcNormal(P);
     N = faceforward(N, rd, N);
-    if (t > 0.0) {{
+{detailed}    if (t > 0.0) {{
 {lift}        color = shade(surfaceAt(P, N, -rd));
 {through}    }}
 """
+    setup = ""
+    if geometry is not None and geometry.setup is not None:
+        setup = f"    {geometry.setup}();\n"
+        requires.append(geometry.setup)
+        why.append((geometry.setup, f"geometry.setup = {geometry.setup!r}"))
     cast = (
+        f"{setup}"
         "    vec3 ro;\n"
         "    vec3 rd;\n"
         "    cameraRay(fragCoord, ro, rd);\n"

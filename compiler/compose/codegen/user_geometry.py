@@ -54,8 +54,8 @@ CHANNELS = frozenset(f"iChannel{i}" for i in range(4))
 
 # The functions glint's generated scene code defines (scene_code.py, field_code.py).
 GENERATED_NAMES = frozenset(
-    {"map", "materialAt", "surfaceAt", "shade", "mainImage", "subsurfaceAt", "submerged",
-     GEOMETRY_MATERIAL}
+    {"map", "materialAt", "surfaceAt", "shade", "shadeDirect", "mainImage", "pixelColor",
+     "subsurfaceAt", "emissionAt", "submerged", "hitLift", "detailNormal", GEOMETRY_MATERIAL}
 )  # fmt: skip
 
 
@@ -72,6 +72,8 @@ def user_unit(
     _check_channels(symbols.functions, path, pictures)
     functions = {f.name: f for f in symbols.functions}
     _check_contract(functions, path, bool(geometry.materials))
+    _check_hook(functions, path, "setup", geometry.setup, "void", ())
+    _check_hook(functions, path, "detail", geometry.detail, "float", ("vec3",))
     _check_names(symbols.defined, functions, path)
     requires = (symbols.calls | symbols.free) - symbols.defined - pictures
     _check_requirements(requires - set(constants), symbols.functions, path)
@@ -85,6 +87,27 @@ def user_unit(
         line=1,
         summary="the scene's own distance function",
     )
+
+
+def _check_hook(
+    functions: dict[str, FunctionDef],
+    path: str,
+    key: str,
+    name: str | None,
+    return_type: str,
+    params: tuple[str, ...],
+) -> None:
+    """[geometry] setup and detail name a function of the file with their own prototype."""
+    if name is None:
+        return
+    wanted = f"{return_type} {name}({', '.join(params)})"
+    found = functions.get(name)
+    if found is None:
+        raise InputError(f"geometry.{key}: {path} defines no `{wanted}`")
+    if found.return_type != return_type or tuple(p.type for p in found.params) != params:
+        raise InputError(
+            f"{path}:{found.line}: {found.prototype}: geometry.{key} calls it as {wanted}"
+        )
 
 
 def _check_contract(functions: dict[str, FunctionDef], path: str, by_id: bool) -> None:
