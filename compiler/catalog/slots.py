@@ -165,6 +165,8 @@ SCENE_FUNCTIONS: dict[str, str] = {
     "sceneNormal": "vec3 sceneNormal(vec3 p)",
     # The part (start, end) of a ray where surfaces can be (compose/codegen/bounds.py).
     "sceneSpan": "vec2 sceneSpan(vec3 ro, vec3 rd)",
+    # A path camera's keyframes as a curve (compose/codegen/camera_path.py).
+    "cameraPath": "void cameraPath(float t, out vec3 eye, out vec3 target)",
 }
 SCENE_CONSTANTS: dict[str, str] = {
     "SUN_DIR": "vec3 direction toward the scene's key (sun) light",

@@ -25,6 +25,7 @@ from glint.compiler.scene.values import (
     Color,
     ConeAngle,
     FieldOfView,
+    NonNegative,
     Number,
     Positive,
     PositiveVec3,
@@ -45,7 +46,7 @@ SCENE_FILE_LIMIT = 4 * MiB
 GEOMETRY_FILE_LIMIT = 4 * MiB
 
 
-def _fov_sets_focal(camera: OrbitCamera | LookAtCamera) -> None:
+def _fov_sets_focal(camera: OrbitCamera | LookAtCamera | PathCamera) -> None:
     """A camera given by its field of view gets the focal length it stands for: everything
     downstream reads `focal`. Given both, they must agree."""
     if camera.fov is None:
@@ -109,6 +110,54 @@ class LookAtCamera(Strict):
             raise ValueError("position and target must differ")
         sight = [t - p for p, t in zip(self.position, self.target, strict=True)]
         _check_line_of_sight(sight, [*self.position, *self.target], "position and target")
+        return self
+
+
+class PathKey(Strict):
+    """Where the camera is at one moment of its path."""
+
+    time: NonNegative
+    """Seconds of iTime."""
+    position: Vec3
+    """Where the eye is."""
+    target: Vec3 = [0.0, 0.0, 0.0]
+    """The point it looks at."""
+
+
+class PathCamera(Strict):
+    """A camera flown through keyframes: a smooth curve (Catmull-Rom) through the keys'
+    positions and targets, at the keys' times."""
+
+    type: Literal["path"]
+    keys: Annotated[list[PathKey], Field(min_length=2, max_length=64)]
+    """The keyframes, at increasing times, as [[camera.keys]] tables."""
+    loop: bool = False
+    """After the last key, start again from the first (the curve closes through it); else the
+    camera holds at the last key."""
+    focal: Positive = 1.5
+    """Distance from the eye to a screen two units tall (1.5 sees 67.4° from the bottom of
+    the picture to its top): larger zooms in. `fov` sets it by the angle instead."""
+    fov: FieldOfView | None = None
+    """Vertical field of view in degrees, bottom to top of the picture; replaces focal
+    (focal = 1 / tan(fov / 2))."""
+    roll: Number = 0.0
+    """Turns the picture about the line of sight, in degrees (positive turns it clockwise)."""
+
+    @model_validator(mode="after")
+    def _keys(self) -> PathCamera:
+        _fov_sets_focal(self)
+        times = [key.time for key in self.keys]
+        for i, (a, b) in enumerate(zip(times, times[1:], strict=False)):
+            if b <= a:
+                raise ValueError(
+                    f"keys[{i + 1}].time: {b:g} is not after keys[{i}].time {a:g}; give the keys "
+                    "in the order the camera passes them, each later than the one before"
+                )
+        for i, key in enumerate(self.keys):
+            if key.position == key.target:
+                raise ValueError(f"keys[{i}]: position and target must differ")
+            sight = [t - p for p, t in zip(key.position, key.target, strict=True)]
+            _check_line_of_sight(sight, [*key.position, *key.target], f"keys[{i}]")
         return self
 
 
@@ -385,7 +434,7 @@ Light = Annotated[
     | EnvironmentLight,
     Field(discriminator="type"),
 ]
-Camera = Annotated[OrbitCamera | LookAtCamera, Field(discriminator="type")]
+Camera = Annotated[OrbitCamera | LookAtCamera | PathCamera, Field(discriminator="type")]
 
 
 class Geometry(Strict):
@@ -566,7 +615,7 @@ class Scene(Strict):
     """Shown in the shader's header."""
     description: str = ""
     camera: Camera = OrbitCamera(type="orbit")
-    """An orbit or a look-at camera."""
+    """An orbit, a look-at or a keyframed path camera."""
     objects: list[Shape] = []
     """The shapes, as [[objects]] tables with a shape key (primitives, or groups of them)."""
     geometry: Geometry | None = None
@@ -679,6 +728,7 @@ class Scene(Strict):
         # what the rasterized programs do not draw yet: refused rather than dropped unseen
         unsupported = [
             ("camera.roll", self.camera.roll != 0.0),
+            ('camera.type = "path"', isinstance(self.camera, PathCamera)),
             ("quality.aa", self.quality.aa != 1),
             ("background.color", self.background.color is not None),
             ("background.tonemap", not self.background.tonemap),
@@ -788,6 +838,7 @@ def describe_error(error: Any) -> str:
 _TAGS: dict[str, type[BaseModel]] = {
     "orbit": OrbitCamera,
     "lookat": LookAtCamera,
+    "path": PathCamera,
     **SHAPE_TAGS,
     "directional": DirectionalLight,
     "point": PointLight,

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 
 from glint.compiler.catalog.loader import glsl_float, glsl_value
 from glint.compiler.compose.codegen.bounds import span_unit
+from glint.compiler.compose.codegen.camera_path import path_unit
 from glint.compiler.compose.codegen.field_code import ObjectCode, object_code
 from glint.compiler.compose.codegen.knobs import UniformParam
 from glint.compiler.compose.codegen.trace_code import trace_unit
@@ -31,6 +32,7 @@ from glint.compiler.scene.model import (
     DiscLight,
     EnvironmentLight,
     Material,
+    PathCamera,
     PointLight,
     RectLight,
     Scene,
@@ -71,6 +73,8 @@ def generate(
     materials = scene.used_materials()
     objects = [object_code(obj, i) for i, obj in enumerate(scene.objects)]
     units = [_map_unit(scene, objects)]
+    if isinstance(scene.camera, PathCamera):
+        units.append(path_unit(scene.camera))
     if any(code.name for code in objects):
         units.append(_objects_unit(objects))
     trace = trace_unit(scene.objects) if scene.geometry is None else None

@@ -127,6 +127,8 @@ def scene_params(scene: Scene) -> dict[str, str]:
         params["CAMERA_POSITION"] = glsl_value(camera.position, "vec3")
         params["CAMERA_TARGET"] = glsl_value(camera.target, "vec3")
         params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
+    else:  # a path: its keys are the scene's code (camera_path.py)
+        params["CAMERA_FOCAL"] = glsl_value(camera.focal, "float")
     if camera.roll:
         turn = (camera.roll + 180.0) % 360.0 - 180.0  # the same roll, within ±180°
         params["CAMERA_ROLL"] = glsl_value(math.radians(turn), "float")
