@@ -115,3 +115,27 @@ def test_a_geometry_file_may_read_a_bound_channel_only(tmp_path: Path) -> None:
         glint.compose(scene_from_dict(scene, where))
     scene["materials"]["rock"]["albedo_texture"] = 0
     assert "texture(iChannel0" in glint.compose(scene_from_dict(scene, where)).text
+
+
+def test_a_scene_names_its_pictures_and_render_binds_them(tmp_path: Path) -> None:
+    """[channels] 0 = "stone.png" beside the scene: `glint render scene.toml` binds it (the
+    picture equals what --channel gives), and the composed shader names the file to bind."""
+    _picture(tmp_path / "stone.png", [(120, 110, 100), (60, 50, 40)])
+    _picture(tmp_path / "other.png", [(20, 200, 20)])
+    scene = tmp_path / "floor.toml"
+    scene.write_text(
+        '[camera]\ntype = "lookat"\nposition = [0, 3, 3]\n'
+        '[[objects]]\nshape = "plane"\nmaterial = "floor"\n'
+        "[materials.floor]\nalbedo = [1, 1, 1]\nalbedo_texture = 0\n"
+        '[[lights]]\ntype = "directional"\ndirection = [0, 1, 0]\n'
+        '[channels]\n0 = "stone.png"\n'
+    )
+    by_scene = glint.render(scene, size=(32, 24)).pixels
+    by_argument = glint.render(scene, size=(32, 24), channels={0: tmp_path / "stone.png"}).pixels
+    replaced = glint.render(scene, size=(32, 24), channels={0: tmp_path / "other.png"}).pixels
+    np.testing.assert_array_equal(by_scene, by_argument)
+    change = replaced - by_scene  # the floor turns green where the other picture lies on it
+    assert (change[..., 1] - change[..., 0]).mean() > 0.05
+    assert "iChannel0: bind a picture to it (stone.png: the albedo of floor)" in (
+        glint.compose(scene).text
+    )

@@ -125,8 +125,9 @@ def render(
     if meshes is not None:
         result = draw_mesh_shader(meshes, (width, height), time, (x, y, z, w), timeout)
     else:
-        pictures = _pictures(channels)
-        source = _source(shader, channels)
+        source, scene = _source(shader, channels)
+        given = {**(scene.channel_files() if scene is not None else {}), **(channels or {})}
+        pictures = _pictures(given)
         result = render_full(
             source, width, height, time, frame, (x, y, z, w), timeout=timeout,
             channels=pictures, pictures=bool(pictures),
@@ -144,7 +145,8 @@ def render(
 
 
 def _check_pictures(shader: Shader, channels: Mapping[int, object] | None) -> None:
-    missing = sorted(shader.scene.bound_channels() - set(channels or {}))
+    given = set(shader.scene.channel_files()) | set(channels or {})
+    missing = sorted(shader.scene.bound_channels() - given)
     if missing:
         unit = missing[0]
         material = next(
@@ -153,8 +155,8 @@ def _check_pictures(shader: Shader, channels: Mapping[int, object] | None) -> No
         )  # fmt: skip
         raise UsageError(
             f"materials.{material}.albedo_texture = {unit}: nothing is bound to iChannel{unit}, "
-            f"which would sample black; give a picture (glint render --channel {unit}=FILE, "
-            f"or channels={{{unit}: FILE}})"
+            f'which would sample black; give a picture ([channels] {unit} = "FILE" in the '
+            f"scene, glint render --channel {unit}=FILE, or channels={{{unit}: FILE}})"
         )
 
 
@@ -193,9 +195,10 @@ def _mesh_shader(shader: object) -> MeshShader | None:
     return compose_mesh(scene) if scene.is_mesh else None
 
 
-def _source(shader: object, channels: Mapping[int, object] | None) -> str:
-    """ShaderToy Image-tab code to draw; a composed scene must have a picture on every channel
-    its materials read (unbound, it would sample black: a wrong picture without a word)."""
+def _source(shader: object, channels: Mapping[int, object] | None) -> tuple[str, Scene | None]:
+    """ShaderToy Image-tab code to draw, and its scene where it was composed from one; a
+    composed scene must have a picture on every channel its materials read (by [channels] or
+    `channels`): unbound, it would sample black, a wrong picture without a word."""
     if isinstance(shader, Shader):
         if shader.target != "shadertoy":
             raise UsageError(
@@ -203,13 +206,13 @@ def _source(shader: object, channels: Mapping[int, object] | None) -> str:
                 f"{shader.target}: compose it with target='shadertoy'"
             )
         _check_pictures(shader, channels)
-        return shader.text
+        return shader.text, shader.scene
     if is_source(shader):
-        return str(shader)
+        return str(shader), None
     if isinstance(shader, str | os.PathLike):
         path = _args.path("shader", shader)
         if not path.endswith(".toml"):
-            return read_text_file(path)
+            return read_text_file(path), None
         shader = compose(path)
     from glint.compiler.scene.model import Scene
 
@@ -217,7 +220,7 @@ def _source(shader: object, channels: Mapping[int, object] | None) -> str:
         shader = compose(shader)
     if isinstance(shader, Shader):
         _check_pictures(shader, channels)
-        return shader.text
+        return shader.text, shader.scene
     raise UsageError(
         "render takes a Shader, Image-tab code, the path of a shader or a scene, a dict or a "
         f"Scene, not {type(shader).__name__}"

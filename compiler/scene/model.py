@@ -634,6 +634,16 @@ class Scene(Strict):
     mesh: MeshSettings = MeshSettings()
     """Mesh scenes only: the default shading mode."""
     quality: Quality = Quality()
+    channels: dict[Literal["0", "1", "2", "3"], str] = {}
+    """Pictures for ShaderToy's channels, by number, e.g. { 0 = "stone.png" } (relative to the
+    scene file): `glint render` binds them (its --channel replaces one), and the composed
+    shader names them for binding in ShaderToy."""
+
+    _base: Path = PrivateAttr(Path("."))
+
+    def channel_files(self) -> dict[int, Path]:
+        """[channels] as paths, relative to the scene file's folder."""
+        return {int(unit): self._base / name for unit, name in self.channels.items()}
 
     @property
     def is_mesh(self) -> bool:
@@ -728,6 +738,7 @@ class Scene(Strict):
         # what the rasterized programs do not draw yet: refused rather than dropped unseen
         unsupported = [
             ("camera.roll", self.camera.roll != 0.0),
+            ("channels", bool(self.channels)),
             ('camera.type = "path"', isinstance(self.camera, PathCamera)),
             ("quality.aa", self.quality.aa != 1),
             ("background.color", self.background.color is not None),
@@ -794,6 +805,7 @@ def scene_from_dict(data: Mapping[str, Any], filename: str = "<scene>") -> Scene
         suffix = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
         raise InputError(f"{filename}: {describe_error(first)}{suffix}") from None
     base = Path(filename).parent if not filename.startswith("<") else Path.cwd()
+    scene._base = base
     try:
         if scene.geometry is not None:
             scene.geometry.read(base)

@@ -40,6 +40,7 @@ from glint.compiler.scene.model import (
     SphereLight,
     SpotLight,
 )
+from glint.compiler.scene.values import comment_text
 
 
 @dataclass
@@ -502,8 +503,11 @@ def surface_unit(
     lines = ["// The material at a hit point."]
     for channel in sorted(scene.bound_channels()):
         users = [m for m in materials if scene.materials[m].albedo_texture == channel]
+        picture = scene.channels.get(str(channel))
+        named = f"{comment_text(picture)}: " if picture else ""
         lines.append(
-            f"// iChannel{channel}: bind a picture to it (the albedo of {', '.join(users)})."
+            f"// iChannel{channel}: bind a picture to it ({named}the albedo of "
+            f"{', '.join(comment_text(u) for u in users)})."
         )
     lines.append("Surface surfaceAt(vec3 P, vec3 N, vec3 V) {")
     lines += [*branches, "}"]
