@@ -381,17 +381,38 @@ def test_a_concave_field_shows_no_hairline_at_any_tier(
 
 def test_every_name_the_file_shares_with_glint_is_reported_at_once(tmp_path: Path) -> None:
     """Issue 28: a port from ShaderToy met its clashes one per run (`map`, then `sdBox`, then
-    `PI` ...). One error now lists them all, each at its line."""
+    `PI` ...). One error now lists them all, each at its line; a helper the distance function
+    never reaches (the port's old `diffuse`) is not one of them."""
     glsl = (
         "float map(vec3 p) { return length(p) - 1.0; }\n"
         "float sdBox(vec3 p, vec3 b) { return 0.0; }\n"
         "#define PI 3.14159\n"
-        "float sceneDistance(vec3 p) { return map(p); }\n"
+        "float diffuse(float x) { return x / PI; }\n"
+        "float sceneDistance(vec3 p) { return map(p) + sdBox(p, vec3(PI)); }\n"
     )
     with pytest.raises(InputError) as raised:
         glint.compose(_user_scene(tmp_path, glsl))
     message = str(raised.value)
     assert "3 names are glint's as well" in message
+    assert "diffuse" not in message
     assert "field.glsl:1: `map` is also a function of glint's generated scene code" in message
     assert "field.glsl:2: `sdBox` is also defined by the catalog's sdf.box" in message
     assert "`PI` is also defined by the catalog's core.constants" in message
+
+
+def test_a_helper_nothing_reaches_neither_clashes_nor_is_emitted(tmp_path: Path) -> None:
+    """Left-overs of a port (its own `diffuse`, `PI`, `calcNormal`) that sceneDistance never
+    calls: the scene composes, the shader compiles (glslang, as compose runs it) with the
+    catalog's `diffuse` and `PI`, and none of the left-overs is in it."""
+    glsl = (
+        "const float PI = 3.0;\n"
+        "float diffuse(float x) { return x / PI; }\n"
+        "vec3 calcNormal(vec3 p) { return vec3(0.0, 1.0, 0.0); }\n"
+        "float blob(vec3 p) { return length(p) - 1.0; }\n"
+        "float sceneDistance(vec3 p) { return blob(p); }\n"
+    )
+    shader = glint.compose(_user_scene(tmp_path, glsl))
+    assert shader.validate() == []
+    assert "float blob(vec3 p)" in shader.text
+    assert "x / PI" not in shader.text and "const float PI = 3.0" not in shader.text
+    assert "return vec3(0.0, 1.0, 0.0)" not in shader.text

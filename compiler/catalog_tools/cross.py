@@ -9,6 +9,8 @@ the functions keep their GLSL names and parameters.
 
 from __future__ import annotations
 
+import re
+
 from glint.compiler.catalog.loader import Catalog, load_catalog
 from glint.compiler.catalog.slots import SCENE_FUNCTIONS
 from glint.compiler.catalog_tools.show import show_source
@@ -58,6 +60,9 @@ def entry_main(functions: list[FunctionDef]) -> str:
         for index, param in enumerate(function.params):
             name = f"arg{index}"
             writes = "out" in param.qualifier.split()
+            if param.type.startswith("sampler"):  # a picture: ShaderToy's channel 0
+                args.append("iChannel0")
+                continue
             if is_scalar_constructible(param.type) and not writes:
                 lines.append(f"        {param.type} {name} = {param.type}(x);")
             else:
@@ -87,7 +92,12 @@ def _stand_ins(names: list[str]) -> str:
     for name in names:
         proto = SCENE_FUNCTIONS[name]
         result = proto.split()[0]
-        lines.append(f"{proto} {{ return {result}(0); }}")
+        if result != "void":
+            lines.append(f"{proto} {{ return {result}(0); }}")
+            continue
+        # a function that answers through out parameters: each set to 0
+        outs = re.findall(r"\bout\s+(\w+)\s+(\w+)", proto)
+        lines.append(f"{proto} {{ {' '.join(f'{n} = {t}(0);' for t, n in outs)} }}")
     return "\n".join(lines) + "\n"
 
 

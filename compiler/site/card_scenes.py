@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from glint.compiler.catalog.loader import snippets_root
+
 # The object each shape snippet draws, centred above the floor.
 _SHAPES: dict[str, dict[str, Any]] = {
     "sphere": {"shape": "sphere", "center": [0.0, 0.0, 0.0], "radius": 0.8},
@@ -34,6 +36,8 @@ _SHAPES: dict[str, dict[str, Any]] = {
 _TRACED = {"sphere": "sphere", "box": "box", "plane": "sphere"}  # the floor is the traced plane
 _SUN = {"type": "directional", "direction": [0.5, 0.8, 0.4], "intensity": 2.5}
 _SKY = {"type": "sky", "color": [0.25, 0.45, 0.8], "intensity": 0.5}
+_SPOT = {"type": "spot", "position": [1.0, 1.6, 1.0], "target": [0.0, -1.0, 0.0],
+         "inner": 18.0, "outer": 28.0, "intensity": 12.0}  # fmt: skip
 _LIGHTS: dict[str, list[dict[str, Any]]] = {
     "directional": [_SUN],
     "response": [_SUN],  # the BRDF response every directional light goes through
@@ -58,6 +62,18 @@ _LIGHTS: dict[str, list[dict[str, Any]]] = {
         {**_SKY, "intensity": 0.15},
     ],  # fmt: skip
     "irradiance": [{"type": "environment", "intensity": 1.0}],
+    "spot": [_SPOT],
+    "spot_cone": [_SPOT],  # the spot's falloff with angle: the rim of its pool of light
+    "area_shadow": [
+        {
+            "type": "disc",
+            "position": [0.6, 2.0, 0.8],
+            "direction": [-0.3, -1.0, -0.4],
+            "radius": 0.8,
+            "intensity": 9.0,
+        },
+        {**_SKY, "intensity": 0.15},
+    ],  # fmt: skip
 }
 
 
@@ -72,10 +88,16 @@ def card_scene(snippet_id: str) -> dict[str, Any] | None:
         objects = [_SHAPES[_TRACED[name]]]
     elif family == "light" and name in _LIGHTS:
         objects, lights = [_SHAPES["sphere"]], _LIGHTS[name]
-    elif snippet_id == "pattern.checker":
+    elif snippet_id in ("pattern.checker", "pattern.triplanar"):
         objects = [_SHAPES["sphere"]]
     else:
         return None
+    clay: dict[str, Any] = {"albedo": [0.75, 0.55, 0.4], "roughness": 0.45}
+    channels = {}
+    if snippet_id == "pattern.triplanar":  # the example scenes' tiles, wrapped on the ball
+        clay = {"albedo": [1.0, 1.0, 1.0], "roughness": 0.45, "albedo_texture": 0,
+                "texture_scale": 0.8}  # fmt: skip
+        channels = {"0": str(snippets_root() / "scenes" / "pictures" / "tiles.png")}
     floor = {"shape": "plane", "normal": [0.0, 1.0, 0.0], "offset": 1.0, "material": "floor"}
     return {
         "name": f"card_{family}_{name}",
@@ -87,7 +109,7 @@ def card_scene(snippet_id: str) -> dict[str, Any] | None:
         },  # fmt: skip
         "objects": [{**o, "material": "clay"} for o in objects] + [floor],
         "materials": {
-            "clay": {"albedo": [0.75, 0.55, 0.4], "roughness": 0.45},
+            "clay": clay,
             "floor": {
                 "albedo": [0.35, 0.35, 0.35],
                 "pattern": "checker",
@@ -98,4 +120,5 @@ def card_scene(snippet_id: str) -> dict[str, Any] | None:
         "lights": lights,
         "environment": {"top": [0.3, 0.45, 0.7], "bottom": [0.6, 0.62, 0.65]},
         "post": {"tonemap": "aces", "output": "srgb"},
+        "channels": channels,
     }

@@ -189,6 +189,8 @@ def survey(points: int = 4096) -> dict[str, dict[str, dict[str, Any]]]:
             params = entry_params(snippet.id)
         except ValueError:
             continue  # a library slot: no entry
+        except UnsupportedError:
+            continue  # a type the evaluator does not run (a picture's sampler2D)
         if all(q == "in" and t in SIMPLE_TYPES for q, t, _ in params):
             try:
                 out[snippet.id] = precision_report(snippet.id, default_grid(snippet.id, points))

@@ -10,8 +10,10 @@ is what it requires, and the resolver finds it like any other requirement. The c
 - `vec3 sceneAlbedo(vec3 p, int id, vec3 albedo)`: optional, a procedural albedo made from the
   material's own (id: the material's id, 0 for [geometry] material).
 
-Its names must not be the catalog's or those of glint's generated scene code: each such
-collision is an error naming both. It may not read ShaderToy's channels: a scene binds nothing
+Only what glint calls (the contract's functions, [geometry] setup and detail) and what they
+reach joins the shader; of that, a name that is the catalog's or glint's generated scene code's
+is an error naming both, every such name in one message. A helper nothing reaches is left out,
+whatever its name. It may not read ShaderToy's channels: a scene binds nothing
 to them, and a read would sample black. The unit keeps the file as its origin, so `glint validate`
 reports a compile error at the user's file and line.
 """
@@ -23,9 +25,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from glint.compiler.catalog.loader import load_catalog
+from glint.compiler.compose.linking.reachability import prune_unreachable
 from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
-from glint.compiler.glsl import FunctionDef, analyze
+from glint.compiler.glsl import FunctionDef, ModuleSymbols, analyze, reachable
 from glint.compiler.scene.model import Geometry
 from glint.compiler.scene.values import marker_path
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
@@ -68,25 +71,40 @@ def user_unit(
     scene's materials bind to pictures, which it may read too."""
     path = geometry.path
     symbols = analyze(geometry.source, path, provided=set(UNIFORM_NAMES) - CHANNELS)
-    pictures = {f"iChannel{c}" for c in bound}
-    _check_channels(symbols.functions, path, pictures)
     functions = {f.name: f for f in symbols.functions}
     _check_contract(functions, path, bool(geometry.materials))
     _check_hook(functions, path, "setup", geometry.setup, "void", ())
     _check_hook(functions, path, "detail", geometry.detail, "float", ("vec3",))
-    _check_names(symbols.defined, functions, path)
-    requires = (symbols.calls | symbols.free) - symbols.defined - pictures
-    _check_requirements(requires - set(constants), symbols.functions, path)
-    return Unit(
+    # Only what glint calls, and what that reaches, joins the shader: a helper the port left
+    # behind (its old `diffuse`, its own `PI`) neither clashes nor is emitted.
+    roots = {name for name in CONTRACT if name in functions}
+    roots |= {hook for hook in (geometry.setup, geometry.detail) if hook is not None}
+    reached = reachable(symbols, roots) & symbols.defined
+    used = [f for f in symbols.functions if f.name in reached]
+    pictures = {f"iChannel{c}" for c in bound}
+    _check_channels(used, path, pictures)
+    _check_names(reached, functions, path)
+    calls = set().union(*(f.calls | f.uses for f in used)) | _global_uses(symbols, reached)
+    requires = {name for name in calls if name in symbols.calls | symbols.free}
+    requires -= symbols.defined | pictures
+    _check_requirements(requires - set(constants), used, path)
+    whole = Unit(
         id=f"user:{Path(path).name}",
         slot="scene",
-        provides=tuple(sorted(symbols.defined)),
+        provides=tuple(sorted(reached)),
         requires=tuple(sorted(requires)),
         body=geometry.source,
         origin=marker_path(path),  # one word: a space is %20, a line break %0A
         line=1,
         summary="the scene's own distance function",
     )
+    return prune_unreachable([whole], frozenset(roots))[0]
+
+
+def _global_uses(symbols: ModuleSymbols, reached: set[str]) -> set[str]:
+    """What the reached globals and macros name (a constant's initialiser, a macro's body)."""
+    functions = {f.name for f in symbols.functions}
+    return {dep for name in reached - functions for dep in symbols.deps.get(name, ())}
 
 
 def _check_hook(
