@@ -59,14 +59,32 @@ def wgpu_missing() -> str | None:
     return None
 
 
+Pictures = dict[int, np.ndarray]  # channel -> the picture file's RGBA8, top row first
+
+
 def render_wgpu(
-    shaders: Sequence[str], width: int, height: int, time: float, timeout: float = 120.0
+    shaders: Sequence[str],
+    width: int,
+    height: int,
+    time: float,
+    timeout: float = 120.0,
+    pictures: Sequence[Pictures] | None = None,
 ) -> list[np.ndarray | RunnerFailure]:
     """Render each Image-tab shader with wgpu-shadertoy offscreen, in one child process: for each
     shader its float32 H x W x 3 image in [0, 1] (row 0 at the top) or why it failed. Raises
-    RunnerFailure when the child process itself fails (no Vulkan adapter, an import error)."""
+    RunnerFailure when the child process itself fails (no Vulkan adapter, an import error).
+    `pictures`: per shader, the pictures bound to its channels (repeating, as ShaderToy)."""
     with tempfile.TemporaryDirectory(prefix="glint-wgpu-") as folder:
-        job = {"shaders": list(shaders), "width": width, "height": height, "time": time}
+        bound = []
+        for index, channels in enumerate(pictures or [{}] * len(shaders)):
+            files = {}
+            for unit, data in channels.items():
+                path = Path(folder) / f"picture-{index}-{unit}.npy"
+                np.save(path, data)
+                files[str(unit)] = str(path)
+            bound.append(files)
+        job = {"shaders": list(shaders), "width": width, "height": height, "time": time,
+               "pictures": bound}  # fmt: skip
         job_path = Path(folder) / "job.json"
         job_path.write_text(json.dumps({**job, "output": folder}))
         process = subprocess.Popen(
@@ -111,11 +129,22 @@ def _wgpu_worker(job_path: str) -> int:
     job = json.loads(Path(job_path).read_text())
     output = Path(job["output"])
     from wgpu_shadertoy import Shadertoy
+    from wgpu_shadertoy.inputs import ShadertoyChannelTexture
 
     size = (job["width"], job["height"])
     for index, code in enumerate(job["shaders"]):
+        files = job.get("pictures", [{}] * len(job["shaders"]))[index]
+        # channel by channel, black where nothing is bound; flipped (vflip) as ShaderToy does
+        inputs = [
+            ShadertoyChannelTexture(np.load(files[str(unit)]), wrap="repeat", vflip=True)
+            if str(unit) in files
+            else ShadertoyChannelTexture()
+            for unit in range(4)
+        ] if files else []  # fmt: skip
         try:
-            shadertoy = Shadertoy(code, resolution=size, shader_type="glsl", offscreen=True)
+            shadertoy = Shadertoy(
+                code, resolution=size, shader_type="glsl", offscreen=True, inputs=inputs
+            )
             frame = shadertoy.snapshot(
                 time_float=job["time"],
                 time_delta=TIME_DELTA,
@@ -139,7 +168,7 @@ def _wgpu_worker(job_path: str) -> int:
 # --- WebGL2 in Chromium ---------------------------------------------------------------------
 
 _PAGE = """<!doctype html><html><body><canvas id="c"></canvas><script>
-function renderAll(shaders, width, height, time, date) {
+function renderAll(shaders, width, height, time, date, pictures) {
   const canvas = document.getElementById("c");
   canvas.width = width; canvas.height = height;
   const gl = canvas.getContext("webgl2", {antialias: false});
@@ -166,7 +195,29 @@ function renderAll(shaders, width, height, time, date) {
     "  gl_Position = vec4(p, 0.0, 1.0);\\n}\\n");
   gl.compileShader(vertex);
   const results = [];
-  for (const source of shaders) {
+  for (let index = 0; index < shaders.length; index++) {
+    const source = shaders[index];
+    // the shader's pictures, as ShaderToy binds one: bottom row at v = 0 (the rows come
+    // bottom first), mipmapped, repeating; black elsewhere
+    const sizes = new Float32Array(12).fill(1);
+    const made = [];
+    for (let unit = 0; unit < 4; unit++) {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      const picture = pictures[index][unit];
+      if (!picture) { gl.bindTexture(gl.TEXTURE_2D, black); continue; }
+      const texture = gl.createTexture();
+      made.push(texture);
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      const bytes = Uint8Array.from(atob(picture.data), (c) => c.charCodeAt(0));
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, picture.width, picture.height, 0, gl.RGBA,
+                    gl.UNSIGNED_BYTE, bytes);
+      gl.generateMipmap(gl.TEXTURE_2D);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+      sizes.set([picture.width, picture.height, 1], unit * 3);
+    }
     const fragment = gl.createShader(gl.FRAGMENT_SHADER);
     gl.shaderSource(fragment, source);
     gl.compileShader(fragment);
@@ -192,7 +243,7 @@ function renderAll(shaders, width, height, time, date) {
     gl.uniform4f(u("iMouse"), 0, 0, 0, 0);
     gl.uniform4f(u("iDate"), date[0], date[1], date[2], date[3]);
     gl.uniform1fv(u("iChannelTime"), [time, time, time, time]);
-    gl.uniform3fv(u("iChannelResolution"), new Float32Array(12).fill(1));
+    gl.uniform3fv(u("iChannelResolution"), sizes);
     gl.uniform1f(u("iSampleRate"), 44100);
     for (let unit = 0; unit < 4; unit++) gl.uniform1i(u("iChannel" + unit), unit);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
@@ -206,6 +257,7 @@ function renderAll(shaders, width, height, time, date) {
     }
     results.push({float: float, data: btoa(text)});
     gl.deleteProgram(program); gl.deleteShader(fragment);
+    made.forEach((texture) => gl.deleteTexture(texture));
   }
   return {results: results, renderer: gl.getParameter(gl.RENDERER)};
 }
@@ -213,18 +265,34 @@ function renderAll(shaders, width, height, time, date) {
 
 
 def render_webgl2(
-    browser: Browser, shaders: Sequence[str], width: int, height: int, time: float
+    browser: Browser,
+    shaders: Sequence[str],
+    width: int,
+    height: int,
+    time: float,
+    pictures: Sequence[Pictures] | None = None,
 ) -> list[np.ndarray | RunnerFailure]:
     """Draw each complete WebGL2 fragment shader (ES 3.00 with ShaderToy's uniforms and a main,
     the webgl2 target) in one page of `browser`: for each its float32 H x W x 3 image, row 0 at
-    the top, or why it failed."""
+    the top, or why it failed. `pictures`: per shader, the pictures bound to its channels."""
+    sent = [
+        {
+            str(unit): {
+                "width": data.shape[1],
+                "height": data.shape[0],
+                "data": base64.b64encode(np.ascontiguousarray(data[::-1]).tobytes()).decode(),
+            }
+            for unit, data in channels.items()
+        }
+        for channels in (pictures or [{}] * len(shaders))
+    ]
     context = browser.new_context()
     try:
         page = context.new_page()
         page.set_content(_PAGE)
         answer: dict[str, Any] = page.evaluate(
-            "([s, w, h, t, d]) => renderAll(s, w, h, t, d)",
-            [list(shaders), width, height, time, list(DATE)],
+            "([s, w, h, t, d, p]) => renderAll(s, w, h, t, d, p)",
+            [list(shaders), width, height, time, list(DATE), sent],
         )
     finally:
         context.close()

@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import pytest
-from runners import RunnerFailure, render_webgl2, render_wgpu, wgpu_missing
+from PIL import Image
+from runners import Pictures, RunnerFailure, render_webgl2, render_wgpu, wgpu_missing
 from site_browser import MAKE_TEST
 
 from glint.compiler.bench.scenes import example_scenes
@@ -63,26 +64,62 @@ def shaders() -> dict[tuple[str, str], tuple[str, str]]:
 
 
 @pytest.fixture(scope="module")
-def moderngl_images(shaders: dict[tuple[str, str], tuple[str, str]]) -> Images:
-    """glint's own render of each Image tab (moderngl, EGL): the reference of the comparisons."""
-    return {
-        case: render_full(image_tab, WIDTH, HEIGHT, time=TIME).image
-        for case, (image_tab, _) in shaders.items()
-    }
+def pictures() -> dict[str, Pictures]:
+    """Each scene's pictures ([channels] of the channels its materials read), as the files hold
+    them: RGBA8, top row first. Every runner binds them as ShaderToy binds a picture."""
+    folder = default_scene_path().parent
+    out = {}
+    for scene_name in SCENES:
+        scene = load_scene(folder / f"{scene_name}.toml")
+        files = scene.channel_files()
+        out[scene_name] = {
+            unit: np.asarray(Image.open(files[unit]).convert("RGBA"))
+            for unit in sorted(scene.bound_channels())
+        }
+    return out
 
 
 @pytest.fixture(scope="module")
-def webgl2_images(browser: Browser, shaders: dict[tuple[str, str], tuple[str, str]]) -> Images:
-    images = render_webgl2(browser, [webgl2 for _, webgl2 in shaders.values()], WIDTH, HEIGHT, TIME)
+def moderngl_images(
+    shaders: dict[tuple[str, str], tuple[str, str]], pictures: dict[str, Pictures]
+) -> Images:
+    """glint's own render of each Image tab (moderngl, EGL): the reference of the comparisons."""
+    images = {}
+    for case, (image_tab, _) in shaders.items():
+        channels = pictures[case[0]]
+        data = [None] * (max(channels) + 1 if channels else 0)
+        for unit, picture in channels.items():
+            data[unit] = np.ascontiguousarray(picture[::-1], np.float32) / 255.0
+        images[case] = render_full(
+            image_tab, WIDTH, HEIGHT, time=TIME, channels=data, pictures=True
+        ).image
+    return images
+
+
+@pytest.fixture(scope="module")
+def webgl2_images(
+    browser: Browser,
+    shaders: dict[tuple[str, str], tuple[str, str]],
+    pictures: dict[str, Pictures],
+) -> Images:
+    images = render_webgl2(
+        browser, [webgl2 for _, webgl2 in shaders.values()], WIDTH, HEIGHT, TIME,
+        pictures=[pictures[scene] for scene, _ in shaders],
+    )  # fmt: skip
     return dict(zip(shaders, images, strict=True))
 
 
 @pytest.fixture(scope="module")
-def wgpu_images(shaders: dict[tuple[str, str], tuple[str, str]]) -> Images:
+def wgpu_images(
+    shaders: dict[tuple[str, str], tuple[str, str]], pictures: dict[str, Pictures]
+) -> Images:
     missing = wgpu_missing()
     if missing:
         pytest.skip(f"{missing}: {MAKE_TEST}")
-    images = render_wgpu([image_tab for image_tab, _ in shaders.values()], WIDTH, HEIGHT, TIME)
+    images = render_wgpu(
+        [image_tab for image_tab, _ in shaders.values()], WIDTH, HEIGHT, TIME,
+        pictures=[pictures[scene] for scene, _ in shaders],
+    )  # fmt: skip
     return dict(zip(shaders, images, strict=True))
 
 

@@ -132,6 +132,19 @@
     }
   }
 
+  // The pictures a scene binds to ShaderToy's channels ({"0": "img/live/pictures/x.png"}),
+  // written after the shader by the site (compiler/site/channels.py).
+  function channelManifest(text) {
+    var start = text.indexOf("/* glint-channels\n");
+    if (start < 0) return {};
+    var body = text.slice(start + 18);
+    try {
+      return JSON.parse(body.slice(0, body.indexOf("*/")));
+    } catch (error) {
+      return {}; // a broken manifest costs the pictures (black, as unbound), not the canvas
+    }
+  }
+
   function element(tag, className, text) {
     var node = document.createElement(tag);
     if (className) node.className = className;
@@ -359,6 +372,7 @@
     }
     this.program = program;
     this.params = manifest(text);
+    this.loadPictures(channelManifest(text));
     for (var i = 0; i < this.params.length; i++) {
       var name = this.params[i].name;
       this.values[name] = name in kept ? kept[name] : this.params[i].default;
@@ -369,6 +383,42 @@
     this.canvas.dataset.state = "ready";
     if (this.leader && this.leader.program) this.follow(this.leader);
     else this.draw();
+  };
+
+  // Bind each picture of the manifest to its channel as ShaderToy binds one: its bottom row at
+  // v = 0, mipmapped, repeating. Until it arrives the channel samples black; it draws again then.
+  Live.prototype.loadPictures = function (channels) {
+    var gl = this.gl;
+    var self = this;
+    this.textures = [];
+    this.sizes = new Float32Array(12).fill(1);
+    Object.keys(channels).forEach(function (key) {
+      var unit = Number(key);
+      if (!(unit >= 0 && unit < 4)) return;
+      var texture = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE,
+                    new Uint8Array([0, 0, 0, 255]));
+      self.textures[unit] = texture;
+      var image = new Image();
+      image.onload = function () {
+        if (self.gl !== gl || self.contextLost || self.textures[unit] !== texture) return;
+        gl.bindTexture(gl.TEXTURE_2D, texture);
+        gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, true);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, image);
+        gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+        gl.generateMipmap(gl.TEXTURE_2D);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+        self.sizes.set([image.width, image.height, 1], unit * 3);
+        self.pictures = (self.pictures || 0) + 1;
+        self.canvas.dataset.pictures = String(self.pictures);
+        self.draw();
+      };
+      image.src = new URL(channels[key], ROOT).href;
+    });
   };
 
   // Forget the shader before this one: its program, its parameters and their controls.
@@ -621,6 +671,13 @@
       now.getHours() * 3600 + now.getMinutes() * 60 + now.getSeconds()
     );
     gl.uniform1f(this.uniform("iSampleRate"), 44100);
+    var textures = this.textures || [];
+    for (var unit = 0; unit < 4; unit++) {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, textures[unit] || null); // none: samples black
+      gl.uniform1i(this.uniform("iChannel" + unit), unit);
+    }
+    if (this.sizes) gl.uniform3fv(this.uniform("iChannelResolution"), this.sizes);
     for (var i = 0; i < this.params.length; i++) {
       var param = this.params[i];
       var value = this.values[param.name];

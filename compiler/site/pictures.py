@@ -31,6 +31,8 @@ from glint.compiler.files import write_atomic
 from glint.compiler.markdown import md_code
 from glint.compiler.scene.model import load_scene
 
+from .channels import live_shader
+
 log = logging.getLogger(__name__)
 
 PICTURE_DIR = PurePosixPath("img") / "variants"
@@ -167,7 +169,8 @@ def _picture(slot: str, variant: str, cache_dir: Path, result: Pictures) -> Pict
         label = Picture(scene_file=scene_file).scene
         return Picture(scene_file=scene_file, note=f"No picture: {label} fails to render.")
     result.rendered += rendered
-    live = shader.retarget("webgl2", params_as_uniforms=True).text  # emitted again, not composed
+    live, channel_files = live_shader(shader)  # emitted again, not composed
+    result.files.update(channel_files)
     picture = Picture(
         path=picture_path(snippet_id),
         scene_file=scene_file,

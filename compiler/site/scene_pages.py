@@ -36,6 +36,7 @@ from glint.compiler.markdown import (
 from glint.compiler.render.images import flip_error, png_pixels
 from glint.compiler.scene.model import Scene, load_scene
 
+from .channels import live_shader
 from .live_canvas import LIVE_DIR, VARIANT_SIZE, canvas_html
 from .measured import load_bench
 from .pictures import SIZE, TIME, render_cached
@@ -101,8 +102,9 @@ def scene_pages(
                         out.files[large[scene.stem]] = png
                 continue
             path = LIVE_DIR / f"scene-{scene.stem}-{tier}.glsl"
-            live_text = shader.retarget("webgl2", params_as_uniforms=True).text
+            live_text, channel_files = live_shader(shader)
             out.files[path] = live_text.encode("utf-8")
+            out.files.update(channel_files)
             live_tiers[(scene.stem, tier)] = path
             png = _render(shader, scene, tier, cache_dir) if pictures and cache_dir else None
             if png is not None:

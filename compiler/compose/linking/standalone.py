@@ -29,6 +29,11 @@ TRACE_STUB = trace_glsl(
 )
 # A bounded marcher's span where the stand-in scene gives none: the whole ray.
 WHOLE_SPAN = "vec2 sceneSpan(vec3 ro, vec3 rd) { return vec2(0.0, 1e30); }\n"
+# A path camera's keyframes where the stand-in scene has none: the look-at camera's default.
+STILL_PATH = (
+    "void cameraPath(float t, out vec3 eye, out vec3 target) "
+    "{ eye = vec3(0.0, 1.0, 4.0); target = vec3(0.0); }\n"
+)
 SCENE_DEFINES = {"SUN_DIR": "normalize(vec3(0.6, 0.8, -0.5))", "SUN_COLOR": "vec3(2.0)"}
 # Choices for the slots a scene's content decides, when a snippet needs one of them.
 CONTENT_CHOICES = {
@@ -60,6 +65,8 @@ def standalone_source(
         scene_stub += TRACE_STUB  # the default scene's queries, where the stub has none
     if "sceneSpan" in snippet.requires and "sceneSpan" not in defined:
         scene_stub += WHOLE_SPAN
+    if "cameraPath" in snippet.requires and "cameraPath" not in defined:
+        scene_stub += STILL_PATH
     scene = stub_unit(scene_stub, catalog)
     entry = generated("scene.main", ["mainImage"], list(snippet.provides), main)
     units = resolve([scene, entry], catalog, choices, constants=SCENE_DEFINES)
