@@ -309,6 +309,38 @@ def test_every_example_scene_runs_live_in_the_gallery(
     _no_problems(log)
 
 
+def test_a_scenes_picture_is_bound_on_its_live_canvas(
+    live_site: LiveSite, browser_page: tuple[Page, PageLog]
+) -> None:
+    """The studio's tiled floor (a picture on channel 0): its canvas loads the picture the live
+    shader's manifest names and draws what glint renders with that picture bound, not the
+    black floor of an unbound channel."""
+    import json
+
+    page, log = browser_page
+    page.goto(live_site.url + "gallery/")
+    shader = "img/live/scene-studio-fast.glsl"
+    selector = f'canvas[data-shader="{shader}"]'
+    _drawn(page, selector)
+    page.wait_for_function(
+        "(sel) => document.querySelector(sel).dataset.pictures === '1'", arg=selector,
+        timeout=60_000,
+    )  # fmt: skip
+    seen = _pixels(page, selector)
+    text = (live_site.docs / shader).read_text()
+    manifest = text[text.index("/* glint-channels\n") + 18 :]
+    picture = live_site.docs / json.loads(manifest[: manifest.index("*/")])["0"]
+    height, width = seen.shape[:2]
+    source = _with_defaults(text)
+    bound = glint.render(source, size=(width, height), time=1.0, channels={0: picture})
+    black = glint.render(source, size=(width, height), time=1.0)
+    error = flip_error(bound.pixels, seen)
+    print(f"{shader}: mean FLIP {error:.5f} against glint with the picture bound")
+    assert error < FLIP_LIMIT
+    assert flip_error(black.pixels, seen) > 2 * error
+    _no_problems(log)
+
+
 def test_a_slot_pages_selector_swaps_the_variant_on_its_canvas(
     live_site: LiveSite, browser_page: tuple[Page, PageLog]
 ) -> None:

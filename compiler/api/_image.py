@@ -162,21 +162,18 @@ def _check_pictures(shader: Shader, channels: Mapping[int, object] | None) -> No
 
 def _pictures(channels: object) -> list[np.ndarray | None]:
     """The pictures of `channels` ({N: path}) as channel data, None for a channel left black."""
-    from glint.compiler.render.images import channel_picture
+    from glint.compiler.render.images import channel_pictures
 
     if channels is None:
         return []
     if not isinstance(channels, Mapping):
         raise UsageError(f"channels: a mapping of channel number to picture file, not {channels!r}")
-    data: list[np.ndarray | None] = [None] * 4
+    files = {}
     for unit, path in channels.items():
         if isinstance(unit, bool) or not isinstance(unit, int) or not 0 <= unit <= 3:
             raise UsageError(f"channels: {unit!r} is not a ShaderToy channel; they are 0 to 3")
-        where = _args.path(f"channels[{unit}]", path)
-        data[unit] = channel_picture(where, f"channels[{unit}]")
-    while data and data[-1] is None:
-        data.pop()
-    return data
+        files[unit] = _args.path(f"channels[{unit}]", path)
+    return channel_pictures(files)
 
 
 def _mesh_shader(shader: object) -> MeshShader | None:

@@ -62,7 +62,13 @@ from glint.compiler.catalog.tiers import TIERS
 from glint.compiler.compose.pipeline import compose_scene
 from glint.compiler.errors import EnvironmentProblem, InputError
 from glint.compiler.render import render_full
-from glint.compiler.render.images import flip_error, flip_map, flip_summary, outlier_mask
+from glint.compiler.render.images import (
+    channel_pictures,
+    flip_error,
+    flip_map,
+    flip_summary,
+    outlier_mask,
+)
 from glint.compiler.scene.model import load_scene
 from glint.compiler.target.glslang import spirv_instruction_count
 
@@ -294,6 +300,8 @@ def _spirv(source: str, what: str) -> int:
 class _Shader:
     label: str  # tier name, or "template"
     source: str
+    # the scene's pictures on its channels ([channels]), bound as glint render binds them
+    channels: list[np.ndarray | None] = field(default_factory=list)
     # Per round, the median draw time (s) of its context, first draw dropped.
     medians: list[float] = field(default_factory=list)
     images: list[np.ndarray] = field(default_factory=list)  # one per iTime, from the first pass
@@ -322,7 +330,10 @@ def _render_rounds(
     for number in range(passes * len(times)):
         view = number % len(times)
         for shader in shaders if number % 2 == 0 else shaders[::-1]:
-            result = render_full(shader.source, *size, time=times[view], repeats=repeats)
+            result = render_full(
+                shader.source, *size, time=times[view], repeats=repeats,
+                channels=shader.channels, pictures=bool(shader.channels),
+            )  # fmt: skip
             shader.medians.append(statistics.median(result.draw_times[1:]))
             if number < len(times):
                 shader.images.append(result.image)
@@ -363,8 +374,14 @@ def _measure_scene(
         )
     # The reference tier is always drawn: it is the yardstick of the others.
     measured = list(dict.fromkeys([REFERENCE_TIER, *tiers]))
+    files = scene.channel_files()
+    pictures = channel_pictures({unit: files[unit] for unit in scene.bound_channels()})
     shaders = [
-        _Shader(tier, compose_scene(scene, tier=tier, variants=dict(variants.get(tier, {}))).text)
+        _Shader(
+            tier,
+            compose_scene(scene, tier=tier, variants=dict(variants.get(tier, {}))).text,
+            pictures,
+        )
         for tier in measured
     ]
     template = with_template and scene.name == TEMPLATE_SCENE

@@ -8,7 +8,8 @@ shows and what a PNG stores: RGB clamped to [0, 1] and quantised to 8 bits, NaN 
 from __future__ import annotations
 
 import io
-from collections.abc import Sequence
+import os
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -161,6 +162,15 @@ def channel_picture(path: str, key: str) -> np.ndarray:
     except (OSError, Image.DecompressionBombError) as exc:
         raise InputError(f"{key}: cannot read the picture {path}: {exc}") from None
     return np.ascontiguousarray(rgba[::-1])
+
+
+def channel_pictures(files: Mapping[int, str | os.PathLike[str]]) -> list[np.ndarray | None]:
+    """The pictures of `files` ({channel: file}) as render_full's channel data, None where a
+    channel below the last one has no picture (it samples black)."""
+    data: list[np.ndarray | None] = [None] * (max(files) + 1 if files else 0)
+    for unit, path in files.items():
+        data[unit] = channel_picture(os.fspath(path), f"channels[{unit}]")
+    return data
 
 
 def png_pixels(data: bytes) -> np.ndarray:
