@@ -15,10 +15,10 @@ BUILD := build
 SYSTEM_PACKAGES := glslang-tools spirv-tools spirv-cross libegl1 libegl-mesa0 libgl1-mesa-dri
 # Only the docs site needs these (KaTeX and its fonts, served by the site itself).
 SITE_PACKAGES := libjs-katex fonts-katex
-# The browser tests (tests/test_site_browser.py) drive Debian's Chromium through Playwright: no
+# The browser tests (tests/e2e/test_site_browser.py) drive Debian's Chromium through Playwright: no
 # browser download, which `playwright install` would need the network for.
 BROWSER_PACKAGES := chromium
-# The portability test (tests/test_portability.py) also draws every example in wgpu-shadertoy
+# The portability test (tests/e2e/test_portability.py) also draws every example in wgpu-shadertoy
 # (the dev extra), on lavapipe, Mesa's Vulkan driver on the CPU.
 VULKAN_PACKAGES := mesa-vulkan-drivers
 

@@ -1,6 +1,6 @@
-"""ShaderToy runners other than glint's own, for the portability test (tests/test_portability.py):
-each renders Image-tab shaders (what `glint compose` writes for the shadertoy target) to float RGB
-images, row 0 at the top, as `glint render` gives them.
+"""ShaderToy runners other than glint's own, for the portability test
+(tests/e2e/test_portability.py): each renders Image-tab shaders (what `glint compose` writes for
+the shadertoy target) to float RGB images, row 0 at the top, as `glint render` gives them.
 
 - WebGL2 in Debian's Chromium (SwiftShader), through Playwright: one page draws every shader
   (its complete webgl2 fragment shader, `glint compose --target webgl2`) into a float

@@ -2,7 +2,7 @@
 probed point by point. A camera looks at a rotated box over a ground plane, each pixel writes
 its normal, and the pixels well inside a flat face are compared with that face's normal.
 
-The probe test (tests/test_normal_probes.py) and the benchmark both measure it here.
+The probe test (tests/verify/test_normal_probes.py) and the benchmark both measure it here.
 """
 
 from __future__ import annotations

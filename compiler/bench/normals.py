@@ -3,7 +3,7 @@
 
 Gradient-based variants (they tap `map`) are probed point by point with the scene's GLSL as
 `map`, at points on each surface and near the box's edges. The probe tests
-(tests/test_normal_probes.py) and the benchmark both take their points from here.
+(tests/verify/test_normal_probes.py) and the benchmark both take their points from here.
 """
 
 from __future__ import annotations

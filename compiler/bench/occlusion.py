@@ -2,7 +2,7 @@
 (references/occlusion.py) at the points of references/occlusion_cases.py.
 
 One probe pass per scene: its `map` is the scene's GLSL, and the cases of its lights share it.
-The probe tests (tests/test_occlusion_probes.py) and the benchmark both measure from here.
+The probe tests (tests/verify/test_occlusion_probes.py) and the benchmark both measure from here.
 """
 
 from __future__ import annotations

@@ -3,8 +3,8 @@ float64 reference says the output should be.
 
 A variant whose entry is a function of its arguments alone is sampled on a grid over the
 `domain` of its front matter; its reference is evaluated at the same (float32-rounded) points.
-The probe tests (tests/test_probe_references.py) and the benchmark (bench/variants.py) both take
-their samples from here, so that they measure the same thing.
+The probe tests (tests/verify/test_probe_references.py) and the benchmark (bench/variants.py)
+both take their samples from here, so that they measure the same thing.
 """
 
 from __future__ import annotations

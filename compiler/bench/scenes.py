@@ -31,7 +31,7 @@ The rest (camera, normals, SDF AO, specular occlusion, the fill lights, the BRDF
 sun at the disc's centre) is the template's own code, the same as the tiers', so its error is not
 what the comparison measures. Both exact terms are checked against the float64 references
 (`shadow_disc_light`: mean 0.0002, max 0.02 on the ground; `dfg_split_sum`: 0.0004 for the
-scene's dielectrics, 0.009 for metals at grazing angles) in tests/test_bench_scenes.py.
+scene's dielectrics, 0.009 for metals at grazing angles) in tests/bench/test_bench_scenes.py.
 "Measurably more accurate" means a mean FLIP against the ground truth lower by more than
 MEASURABLE_FLIP.
 

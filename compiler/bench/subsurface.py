@@ -1,6 +1,6 @@
 """Subsurface variants on reference spheres: the probe at points on a sphere of radius r toward
 random light directions, against the exact transmittance through it, exp(−σ·chord)
-(references/scattering.subsurface_sphere). The probe test (tests/test_scattering.py) and the
+(references/scattering.subsurface_sphere). The probe test (tests/verify/test_scattering.py) and the
 benchmark both take their samples from here.
 """
 

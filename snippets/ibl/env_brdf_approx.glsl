@@ -21,7 +21,7 @@ formula = 'L_{\text{spec}} = (F_0 A + B)\, L_{\text{env}}(\mathbf{r})\, \text{SO
 //
 // Error of (A, B) against the float64 split sum with GGX, height-correlated Smith and Schlick
 // (compiler/verify/references/environment.dfg_split_sum), roughness and NoV in [0, 1]: see
-// tests/test_environment_light.py. The fit was made for a table with a different masking
+// tests/verify/test_environment_light.py. The fit was made for a table with a different masking
 // term, so it is close at normal incidence and far off at grazing angles on rough surfaces,
 // where height-correlated Smith keeps much more energy: f0·A + B off by up to 0.55 (metals,
 // NoV → 0, roughness 1), 0.08 for f0 = 0.04. The GPU gives the same (A, B) as the float32

@@ -16,7 +16,7 @@ sources = [
 formula = '\frac{E(\mathbf{n})}{\pi} = \max\left( 0,\ \sum_{l=0}^{2} \sum_{m=-l}^{l} \frac{\hat{A}_l}{\pi} L_{lm} Y_{lm}(\mathbf{n}) \right), \quad \frac{\hat{A}_0}{\pi} = 1, \quad \frac{\hat{A}_1}{\pi} = \frac{2}{3}, \quad \frac{\hat{A}_2}{\pi} = \frac{1}{4}'
 # SH_C0..SH_C8: radiance coefficients L00, L1-1 (y), L10 (z), L11 (x), L2-2 (xy), L2-1 (yz),
 # L20 (3z²−1), L21 (xz), L22 (x²−y²), from compiler/compose/spherical_harmonics.project_sh9. The
-# defaults are env.gradient's default sky; tests/test_environment_light.py re-projects it.
+# defaults are env.gradient's default sky; tests/verify/test_environment_light.py re-projects it.
 [params.SH_C0]
 type = "vec3"
 default = [2.30419, 2.7473035, 3.3676623]

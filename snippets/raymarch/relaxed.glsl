@@ -20,7 +20,7 @@ formula = 't_{i+1} = t_i + \omega\, d_i \text{ while } |d_{i-1}| + |d_i| \ge t_i
 // goes back to the previous sample and takes the plain step d_prev from it, which is safe,
 // then sphere-traces on (ω = 1). A failed step costs one map() call; along a grazing ray, or
 // a surface met head on, the steps of ω·d save more than that. Mean map() calls per ray on the
-// probe scene (a unit sphere on the plane y = −1, 4096 camera rays, tests/test_relaxed_march.py):
+// probe scene (a unit sphere on the plane y = −1, 4096 camera rays, tests/compose/test_relaxed_march.py):
 // raymarch.sphere_tracing 20.8, raymarch.cone 15.9, this 13.6 at ω = 1.3 (13.8 at 1.2, 14.0 at
 // 1.4, 15.6 at 1.6: larger steps fail more often, and each failure ends the relaxation).
 // With ω = 1 it is raymarch.cone, step for step.

@@ -2,7 +2,7 @@
 
 Each is estimated on a reference scene (`scenes.py`) with many rays, every ray intersected with
 the scene in closed form in float64, so the only error is sampling, which stratification keeps
-small (see `tests/references/test_occlusion.py` for the measured standard error).
+small (see `tests/verify/references/test_occlusion.py` for the measured standard error).
 
 - Shadow: the fraction of a disc light of angular radius α that a point sees. The penumbra
   estimators of the shadow slot call the light fully visible once every miss h at distance t

@@ -8,7 +8,7 @@
   extinction with constant in-scatter, color·T + inscatter·(1 − T), T = exp(−σ·dist).
 
 Parameters named in capitals are the snippets' own `#define` knobs; their defaults here are
-the snippets' defaults (tests/test_scattering.py holds them equal).
+the snippets' defaults (tests/verify/test_scattering.py holds them equal).
 """
 
 from __future__ import annotations

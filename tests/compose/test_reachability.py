@@ -23,7 +23,7 @@ from glint.compiler.scene.model import default_scene_path, parse_scene
 from glint.compiler.target.glslang import validate
 from glint.compiler.target.sourcemap import build_line_map
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 SCENES = RAYMARCHED_EXAMPLES  # the ShaderToy shaders; the mesh examples are tested below
 assert SCENES[0] == default_scene_path()
 TIERS = ["fast", "balanced", "reference"]

@@ -26,7 +26,7 @@ from glint.compiler.site.katex_assets import KATEX_DIR
 from glint.compiler.site.measured import Accuracy, accuracy_section
 from glint.compiler.site.pictures import selection_from_env, variant_pictures
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 NEEDS_MKDOCS = "mkdocs is not installed: pip install -e '.[dev]' (make test and make site do)"
 
 

@@ -20,7 +20,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.scene.model import parse_scene, scene_from_dict
 from glint.compiler.scene.values import MAX_GROUP_DEPTH
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _with_sphere(**keys: Any) -> dict[str, Any]:

@@ -1,4 +1,5 @@
-"""The live canvases' pages and files, without a browser (tests/test_site_canvas.py runs them)."""
+"""The live canvases' pages and files, without a browser (tests/e2e/test_site_canvas.py runs
+them)."""
 
 from __future__ import annotations
 

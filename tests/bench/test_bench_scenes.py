@@ -94,7 +94,7 @@ def test_the_template_row(default_rows: list[TierMeasure]) -> None:
     # The balanced row is composed with the template's own models: the same picture but where
     # the template's 128 steps run out before grazing ground that the catalog's 512 reach, as
     # the reference's do (measured: 0.0031 closer to the reference; the exact same picture, with
-    # the template's step budget, is tests/test_default_scene.py).
+    # the template's step budget, is tests/compose/test_default_scene.py).
     balanced = _by_tier(default_rows)["balanced"]
     assert template.flip - 0.006 < balanced.flip <= template.flip + 1e-3
 

@@ -144,7 +144,7 @@ def test_the_scenes_lights_materials_and_exposure_are_knobs_too() -> None:
     """Issue 27: a page sets a light's intensity and direction, a material's albedo, roughness
     and metallic, the dielectric F0 and the exposure live; ShaderToy code names the same values
     as #defines a reader can change."""
-    scene = Path(__file__).parents[1] / "snippets" / "scenes" / "metal_spheres.toml"
+    scene = Path(__file__).resolve().parents[2] / "snippets" / "scenes" / "metal_spheres.toml"
     shader = compose(scene, target="webgl2", params_as_uniforms=True)
     by_name = {p.name: p for p in read_manifest(shader.text)}
     copper = by_name["MAT_COPPER_ROUGHNESS"]
@@ -172,7 +172,9 @@ def test_the_scenes_lights_materials_and_exposure_are_knobs_too() -> None:
 def test_post_exposure_scales_the_light_before_the_tone_map(tmp_path: Path) -> None:
     import glint
 
-    text = (Path(__file__).parents[1] / "snippets" / "scenes" / "default.toml").read_text()
+    text = (
+        Path(__file__).resolve().parents[2] / "snippets" / "scenes" / "default.toml"
+    ).read_text()
     brighter = tmp_path / "brighter.toml"
     brighter.write_text(text.replace("[post]\n", "[post]\nexposure = 2.0\n"))
     assert "exposure = 2.0" in brighter.read_text()

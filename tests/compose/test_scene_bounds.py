@@ -18,7 +18,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.render import render_full
 from glint.compiler.scene.model import load_scene, parse_scene
 
-EXAMPLES = Path(__file__).parent.parent / "snippets" / "scenes"
+EXAMPLES = Path(__file__).resolve().parents[2] / "snippets" / "scenes"
 WHOLE_RAY = "vec2 sceneSpan(vec3 ro, vec3 rd) {\n    return vec2(0.0, 1e30);\n}\n"
 SPAN = re.compile(r"vec2 sceneSpan\(vec3 ro, vec3 rd\) \{\n.*?\n\}\n", re.S)
 

@@ -20,7 +20,7 @@ from glint.compiler.errors import InputError
 from glint.compiler.render import render as render_rgba
 from glint.compiler.scene.model import load_scene
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 DEFAULT = ROOT / "snippets" / "scenes" / "default.toml"
 MISTAKE = ROOT / "tests" / "corpus" / "lint_mistakes" / "iglobaltime.glsl"
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"

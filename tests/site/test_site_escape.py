@@ -41,7 +41,7 @@ from glint.compiler.site.pictures import Picture
 from glint.compiler.site.scene_pages import gallery_page, tiers_page
 from glint.compiler.site.slot_comparison import slot_comparisons
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 NEEDS_MKDOCS = "mkdocs is not installed: pip install -e '.[dev]' (make test and make site do)"
 
 IMG = "<img src=x onerror=alert(1)>"

@@ -1,6 +1,6 @@
 """Point-light attenuation variants on the GPU at the inputs that break falloffs: the light's own
 position, a range of zero, distances up to float32's largest and infinity. (Their error against
-the float64 references over the domain is held by tests/test_probe_references.py.)"""
+the float64 references over the domain is held by tests/verify/test_probe_references.py.)"""
 
 from __future__ import annotations
 

@@ -122,7 +122,7 @@ def test_ggx_reads_like_its_glsl(hlsl_of: dict[str, str]) -> None:
 
 
 def test_the_readme_unity_example_compiles(hlsl_of: dict[str, str]) -> None:
-    readme = (Path(__file__).parent.parent / "README.md").read_text()
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
     example = re.search(r"```hlsl\n(.*?)```", readme, re.S)
     assert example is not None
     body = example.group(1).split('#include "ggx.hlsl"\n', 1)[1].split("ENDHLSL")[0]

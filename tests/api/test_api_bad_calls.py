@@ -21,7 +21,7 @@ import glint
 from glint.compiler.render import runner
 from glint.compiler.render.images import image_stats
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 DEFAULT = ROOT / "snippets" / "scenes" / "default.toml"
 MESH_SCENE = ROOT / "snippets" / "scenes" / "eight_models.toml"
 CODE = "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n}\n"
