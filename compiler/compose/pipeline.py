@@ -1,4 +1,4 @@
-"""Scene to shader: plan, generate the scene's own code, resolve, prune, emit."""
+"""Scene to shader: generate the scene's own code, plan, bake, resolve, prune, emit."""
 
 from __future__ import annotations
 
