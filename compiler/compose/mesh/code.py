@@ -19,7 +19,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from glint.compiler.catalog.loader import glsl_float
-from glint.compiler.compose.codegen.scene_code import EXPOSURE, light_code, shade_unit, surface_unit
+from glint.compiler.compose.codegen.light_code import light_code
+from glint.compiler.compose.codegen.scene_code import EXPOSURE, shade_unit, surface_unit
 from glint.compiler.compose.units import Unit, generated
 from glint.compiler.scene.model import Scene
 from glint.compiler.target.mesh import ATTRIBUTES, UNIFORMS
