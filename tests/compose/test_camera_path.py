@@ -58,3 +58,24 @@ def test_keys_out_of_order_are_refused() -> None:
     keys = [KEYS[0], {**KEYS[1], "time": 0.0}]
     with pytest.raises(InputError, match=r"camera: keys\[1\].time: 0 is not after"):
         scene_from_dict(_scene({"type": "path", "keys": keys}))
+
+
+def test_a_far_camera_still_reaches_its_scene() -> None:
+    """A look-at camera 80 units from a large sphere: the march's far limit grows with the
+    eye's distance (its default, 50, would stop short and draw only the background)."""
+    scene = {
+        "camera": {"type": "lookat", "position": [0.0, 10.0, 80.0], "target": [0.0, 0.0, 0.0],
+                   "focal": 6.0},  # fmt: skip
+        "objects": [{"shape": "sphere", "radius": 5.0, "material": "m"}],
+        "materials": {"m": {"albedo": [0.9, 0.2, 0.1]}},
+        "lights": [{"type": "directional", "direction": [0.3, 1.0, 0.5]}],
+        "background": {"color": [0.0, 0.0, 0.0], "tonemap": False},
+    }
+    def red(scene: dict[str, Any], tier: str) -> float:
+        pixels = np.asarray(glint.render(glint.compose(scene, tier=tier), size=SIZE).pixels)
+        return float((pixels[..., 0] > 0.3).mean())
+
+    for tier in ("fast", "balanced", "reference"):
+        assert red(scene, tier) > 0.03, tier  # the red sphere in the middle
+    # the old limit, given back by hand, draws nothing: what a far camera used to get
+    assert red({**scene, "quality": {"params": {"MARCH_FAR": 50.0}}}, "balanced") == 0.0

@@ -27,6 +27,7 @@ def bake(scene: Scene, plan: Plan) -> dict[str, str]:
     if plan.choices.get("irradiance") == "irradiance.sh9" and lit_by_environment:
         params |= _sh9_params(plan.choices["env"], params)
     params |= _march_pixel(scene, plan)
+    params |= _march_far(scene, plan)
     if plan.choices.get("area") is not None:
         params |= _area_shadow_rays(plan)
     params |= given_params(scene, plan)
@@ -102,6 +103,36 @@ def _march_pixel(scene: Scene, plan: Plan) -> dict[str, str]:
         return {}
     pixel = float(param.default) * DEFAULT_FOCAL / scene.camera.focal
     return {"MARCH_PIXEL": glsl_value(pixel, "float")}
+
+
+# How far past the camera's target a march goes, in multiples of the eye's distance to it: the
+# scene around the target, and the ground behind it, stay in reach.
+FAR_REACH = 3.0
+
+
+def _march_far(scene: Scene, plan: Plan) -> dict[str, str]:
+    """MARCH_FAR for the camera's distance: the default (50) cut off the whole scene for a camera
+    80 units from its target, and the picture was the background without a word. At least the
+    default; FAR_REACH times the farthest the eye gets from what it looks at."""
+    march = plan.choices.get("raymarch")
+    param = load_catalog().get(march).params.get("MARCH_FAR") if march else None
+    if param is None:
+        return {}
+    far = FAR_REACH * max(_eye_distances(scene))
+    if far <= float(param.default):
+        return {}
+    high = param.range[1] if param.range is not None else far
+    return {"MARCH_FAR": glsl_value(min(far, high), "float")}
+
+
+def _eye_distances(scene: Scene) -> list[float]:
+    """How far the eye is from the point it looks at (for each key of a path)."""
+    camera = scene.camera
+    if isinstance(camera, OrbitCamera):
+        return [math.hypot(camera.radius, camera.height)]
+    if isinstance(camera, LookAtCamera):
+        return [math.dist(camera.position, camera.target)]
+    return [math.dist(key.position, key.target) for key in camera.keys]
 
 
 def _sh9_params(env_id: str, params: dict[str, str]) -> dict[str, str]:
