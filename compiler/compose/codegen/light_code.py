@@ -151,6 +151,7 @@ def light_code(scene: Scene) -> LightCode:
             # spread over its area (projected, for a sphere)
             defines[f"{ident}_RADIANCE"] = f"({ident}_COLOR / {glsl_float(area)})"
             args = f"{ident}_POS, {ident}_RIGHT, {ident}_UP, {shape}"
+            why.append(("areaLight", f"{labels[i]} is an area light"))
             visibility = ""
             if light.shadow:
                 visibility = f" * areaShadow({LIFTED}, {args})"
@@ -158,7 +159,6 @@ def light_code(scene: Scene) -> LightCode:
                 why.append(("areaShadow", f"{labels[i]} casts shadows"))
             calls.append(f"areaLight(s, {args}, {ident}_RADIANCE){visibility}")
             requires += ["areaLight", shape]
-            why.append(("areaLight", f"{labels[i]} is an area light"))
         elif isinstance(light, SkyLight):
             ident = name("SKY")
             colour(ident, light.color, light.intensity)
