@@ -18,6 +18,7 @@ from glint.compiler.glsl.symbols import (
     ModuleSymbols,
     Param,
     analyze,
+    reach,
     reachable,
     symbols_of,
 )
@@ -35,6 +36,7 @@ __all__ = [
     "parse",
     "parse_source",
     "preprocess",
+    "reach",
     "reachable",
     "symbols_of",
 ]

@@ -8,7 +8,7 @@ while a macro defined in *another* snippet stays an identifier and so becomes `f
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 from lark import Token, Tree
@@ -70,13 +70,19 @@ def symbols_of(tree: Tree, pre: Preprocessed, provided: Collection[str] = ()) ->
 
 def reachable(symbols: ModuleSymbols, roots: set[str]) -> set[str]:
     """Every name reached from `roots` through function, global and macro dependencies."""
+    return reach(symbols.deps, roots)
+
+
+def reach(deps: Mapping[str, Collection[str]], roots: set[str]) -> set[str]:
+    """Every name reached from `roots` through `deps` (what each name names): one module's
+    graph, or the graphs of several read apart and joined by name."""
     seen: set[str] = set()
     todo = list(roots)
     while todo:
         name = todo.pop()
         if name not in seen:
             seen.add(name)
-            todo.extend(symbols.deps.get(name, ()))
+            todo.extend(deps.get(name, ()))
     return seen
 
 

@@ -46,6 +46,30 @@ SCENE_FILE_LIMIT = 4 * MiB
 GEOMETRY_FILE_LIMIT = 4 * MiB
 
 
+# The lens of every camera, with the meaning the site's scene reference shows.
+Focal = Annotated[
+    Positive,
+    Field(
+        description="Distance from the eye to a screen two units tall (1.5 sees 67.4° from the "
+        "bottom of the picture to its top): larger zooms in. `fov` sets it by the angle instead."
+    ),
+]
+FieldOfViewKey = Annotated[
+    FieldOfView | None,
+    Field(
+        description="Vertical field of view in degrees, bottom to top of the picture; replaces "
+        "focal (focal = 1 / tan(fov / 2))."
+    ),
+]
+Roll = Annotated[
+    Number,
+    Field(
+        description="Turns the picture about the line of sight, in degrees (positive turns it "
+        "clockwise)."
+    ),
+]
+
+
 def _fov_sets_focal(camera: OrbitCamera | LookAtCamera | PathCamera) -> None:
     """A camera given by its field of view gets the focal length it stands for: everything
     downstream reads `focal`. Given both, they must agree."""
@@ -72,14 +96,9 @@ class OrbitCamera(Strict):
     """Radians per second of the orbit (0 holds still)."""
     start: Number = 0.0
     """The orbit's angle at iTime = 0, in degrees: 0 puts the eye on +x, 90 on +z."""
-    focal: Positive = 1.5
-    """Distance from the eye to a screen two units tall (1.5 sees 67.4° from the bottom of
-    the picture to its top): larger zooms in. `fov` sets it by the angle instead."""
-    fov: FieldOfView | None = None
-    """Vertical field of view in degrees, bottom to top of the picture; replaces focal
-    (focal = 1 / tan(fov / 2))."""
-    roll: Number = 0.0
-    """Turns the picture about the line of sight, in degrees (positive turns it clockwise)."""
+    focal: Focal = 1.5
+    fov: FieldOfViewKey = None
+    roll: Roll = 0.0
 
     @model_validator(mode="after")
     def _eye_apart(self) -> OrbitCamera:
@@ -94,14 +113,9 @@ class LookAtCamera(Strict):
     """Where the camera stands."""
     target: Vec3 = [0.0, 0.0, 0.0]
     """The point it looks at."""
-    focal: Positive = 1.5
-    """Distance from the eye to a screen two units tall (1.5 sees 67.4° from the bottom of
-    the picture to its top): larger zooms in. `fov` sets it by the angle instead."""
-    fov: FieldOfView | None = None
-    """Vertical field of view in degrees, bottom to top of the picture; replaces focal
-    (focal = 1 / tan(fov / 2))."""
-    roll: Number = 0.0
-    """Turns the picture about the line of sight, in degrees (positive turns it clockwise)."""
+    focal: Focal = 1.5
+    fov: FieldOfViewKey = None
+    roll: Roll = 0.0
 
     @model_validator(mode="after")
     def _distinct(self) -> LookAtCamera:
@@ -134,14 +148,9 @@ class PathCamera(Strict):
     loop: bool = False
     """After the last key, start again from the first (the curve closes through it); else the
     camera holds at the last key."""
-    focal: Positive = 1.5
-    """Distance from the eye to a screen two units tall (1.5 sees 67.4° from the bottom of
-    the picture to its top): larger zooms in. `fov` sets it by the angle instead."""
-    fov: FieldOfView | None = None
-    """Vertical field of view in degrees, bottom to top of the picture; replaces focal
-    (focal = 1 / tan(fov / 2))."""
-    roll: Number = 0.0
-    """Turns the picture about the line of sight, in degrees (positive turns it clockwise)."""
+    focal: Focal = 1.5
+    fov: FieldOfViewKey = None
+    roll: Roll = 0.0
 
     @model_validator(mode="after")
     def _keys(self) -> PathCamera:

@@ -83,6 +83,14 @@ def light_code(scene: Scene) -> LightCode:
         defines[f"{ident}_COLOR"] = f"({_vec3(color)} * {ident}_INTENSITY)"
         knobs[f"{ident}_INTENSITY"] = _intensity_knob(f"{ident}_INTENSITY", intensity)
 
+    def positioned_visibility(ident: str, shadow: bool) -> str:
+        """A point or spot light's visibility: a shadow ray that stops at the light."""
+        if not shadow:
+            return "vec3(1.0)"
+        requires.extend(["shadow", HIT_LIFT])
+        toward = f"normalize({ident}_POS - s.P)"
+        return f"vec3(shadow({LIFTED}, {toward}, 0.02, distance({ident}_POS, s.P)))"
+
     def shaded_through_brdf(i: int, function: str, shadow: bool) -> None:
         why.append((function, f"{labels[i]} is shaded through the BRDF"))
         if shadow:
@@ -112,11 +120,7 @@ def light_code(scene: Scene) -> LightCode:
             defines[f"{ident}_POS"] = _vec3(light.position)
             colour(ident, light.color, light.intensity)
             defines[f"{ident}_RANGE"] = glsl_float(light.range)
-            visibility = "vec3(1.0)"
-            if light.shadow:
-                toward = f"normalize({ident}_POS - s.P)"
-                visibility = f"vec3(shadow({LIFTED}, {toward}, 0.02, distance({ident}_POS, s.P)))"
-                requires += ["shadow", HIT_LIFT]
+            visibility = positioned_visibility(ident, light.shadow)
             calls.append(f"pointLight(s, {ident}_POS, {ident}_COLOR, {ident}_RANGE, {visibility})")
             requires.append("pointLight")
             shaded_through_brdf(i, "pointLight", light.shadow)
@@ -129,11 +133,7 @@ def light_code(scene: Scene) -> LightCode:
             defines[f"{ident}_CONE"] = glsl_value(cones, "vec2")
             colour(ident, light.color, light.intensity)
             defines[f"{ident}_RANGE"] = glsl_float(light.range)
-            visibility = "vec3(1.0)"
-            if light.shadow:
-                toward = f"normalize({ident}_POS - s.P)"
-                visibility = f"vec3(shadow({LIFTED}, {toward}, 0.02, distance({ident}_POS, s.P)))"
-                requires += ["shadow", HIT_LIFT]
+            visibility = positioned_visibility(ident, light.shadow)
             calls.append(
                 f"spotLight(s, {ident}_POS, {ident}_DIR, {ident}_CONE, {ident}_COLOR, "
                 f"{ident}_RANGE, {visibility})"

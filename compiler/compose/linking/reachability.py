@@ -25,7 +25,7 @@ from functools import lru_cache
 from lark import Tree
 
 from glint.compiler.compose.units import GENERATED, Unit
-from glint.compiler.glsl import parse_source, symbols_of
+from glint.compiler.glsl import parse_source, reach, symbols_of
 from glint.compiler.glsl.ast import FunctionDefinition, FunctionPrototype, VariableDeclaration
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
 from glint.compiler.target.sourcemap import source_marker
@@ -72,7 +72,7 @@ def prune_unreachable(units: list[Unit], roots: frozenset[str] = ROOTS) -> list[
         for name, names in analysis.deps.items():
             deps.setdefault(name, set()).update(names)
         tested |= analysis.tested
-    keep = _reached(deps, set(roots) | tested)
+    keep = reach(deps, set(roots) | tested)
     removed = _removed_lines(items, keep, comments)
     cut = (
         _cut(unit, start, lines, removed, comments)
@@ -107,18 +107,6 @@ def _analysis(body: str) -> _Analysis:
     return _Analysis(
         tuple(_items(tree, lines)), deps, frozenset(comments), frozenset(_conditional_names(lines))
     )
-
-
-def _reached(deps: dict[str, set[str]], roots: set[str]) -> set[str]:
-    """Every name reached from `roots` through what each name names."""
-    seen: set[str] = set()
-    todo = list(roots)
-    while todo:
-        name = todo.pop()
-        if name not in seen:
-            seen.add(name)
-            todo.extend(deps.get(name, ()))
-    return seen
 
 
 def _conditional_names(lines: list[str]) -> set[str]:
