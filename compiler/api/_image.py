@@ -130,7 +130,7 @@ def render(
         pictures = _pictures(given)
         result = render_full(
             source, width, height, time, frame, (x, y, z, w), timeout=timeout,
-            channels=pictures, pictures=bool(pictures),
+            channels=pictures, pictures="mipmap" if pictures else None,
         )  # fmt: skip
     return Image(
         # A view of the RGBA frame, not a copy: a large frame is in memory once.

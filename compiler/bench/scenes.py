@@ -332,7 +332,7 @@ def _render_rounds(
         for shader in shaders if number % 2 == 0 else shaders[::-1]:
             result = render_full(
                 shader.source, *size, time=times[view], repeats=repeats,
-                channels=shader.channels, pictures=bool(shader.channels),
+                channels=shader.channels, pictures="mipmap" if shader.channels else None,
             )  # fmt: skip
             shader.medians.append(statistics.median(result.draw_times[1:]))
             if number < len(times):

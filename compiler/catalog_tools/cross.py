@@ -60,9 +60,6 @@ def entry_main(functions: list[FunctionDef]) -> str:
         for index, param in enumerate(function.params):
             name = f"arg{index}"
             writes = "out" in param.qualifier.split()
-            if param.type.startswith("sampler"):  # a picture: ShaderToy's channel 0
-                args.append("iChannel0")
-                continue
             if is_scalar_constructible(param.type) and not writes:
                 lines.append(f"        {param.type} {name} = {param.type}(x);")
             else:

@@ -50,9 +50,9 @@ class Frame:
     # Float data for iChannel0..3, each H x W x 4; texel (x, y) is array[y, x], no flip, so
     # a probe shader can read its inputs with texelFetch. Unset channels are black.
     channels: tuple[np.ndarray | None, ...] = ()
-    # Sample the channels as ShaderToy samples a picture (mipmaps, linear, repeat) rather than
-    # texel by texel as a probe reads its inputs.
-    pictures: bool = False
+    # Sample the channels as a picture, repeating: "mipmap" (ShaderToy's default) or "linear"
+    # (no mipmaps); None: texel by texel, as a probe reads its inputs.
+    pictures: str | None = None
 
 
 def create_context() -> Any:
@@ -148,9 +148,12 @@ def draw(ctx: Any, program: Any, frame: Frame, repeats: int = 1) -> tuple[np.nda
         rows, cols = data.shape[:2]
         texture = ctx.texture((cols, rows), 4, np.ascontiguousarray(data, np.float32), dtype="f4")
         texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
-        if frame.pictures:
+        if frame.pictures == "mipmap":
             texture.build_mipmaps()
             texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+        elif frame.pictures == "linear":
+            texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+        if frame.pictures is not None:
             texture.repeat_x = texture.repeat_y = True
         texture.use(location=unit)
     # The array the frame is read into comes first: where memory is short, numpy says so with

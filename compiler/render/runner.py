@@ -185,12 +185,13 @@ def render_full(
     date: tuple[float, float, float, float] = DEFAULT_DATE,
     channels: Sequence[np.ndarray | None] = (),
     repeats: int = 1,
-    pictures: bool = False,
+    pictures: str | None = None,
 ) -> RenderResult:
     """Render one frame of a ShaderToy Image-tab shader; see `render`. With `repeats` > 1 the
     frame is drawn that many times in one context and every draw is timed (for benchmarks).
-    `channels`: data for iChannel0.. (None: black); `pictures`: sample them as ShaderToy
-    samples a picture (mipmapped, linear, repeating) rather than texel by texel (probes)."""
+    `channels`: data for iChannel0.. (None: black); `pictures`: sample them as a picture,
+    repeating, "mipmap" (ShaderToy's default) or "linear" (no mipmaps, as wgpu-shadertoy
+    does), rather than texel by texel (None: probes' data)."""
     limits.check_request(width, height, time, frame, mouse, timeout)
     with tempfile.TemporaryDirectory(prefix="glint-render-") as output_dir:
         job = {

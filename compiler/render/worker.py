@@ -30,7 +30,7 @@ def run_job(job: dict[str, Any]) -> dict[str, Any]:
         mouse=tuple(job["mouse"]),
         date=tuple(job["date"]),
         channels=tuple(None if path is None else np.load(path) for path in job.get("channels", [])),
-        pictures=bool(job.get("pictures", False)),
+        pictures=job.get("pictures"),
     )
     try:
         ctx = gl.create_context()

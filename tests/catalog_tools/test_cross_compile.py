@@ -58,15 +58,10 @@ def test_every_snippet_compiles_back_from_hlsl(hlsl_of: dict[str, str]) -> None:
 
 
 def provided_functions(snippet_id: str) -> dict[str, int]:
-    """The functions a snippet provides (not its #defines) and their parameter counts in HLSL,
-    where a GLSL sampler (a picture) is two parameters: the texture and its sampler state."""
+    """The functions a snippet provides (not its #defines) and their parameter counts."""
     snippet = CATALOG.get(snippet_id)
     glsl = analyze(snippet.body, snippet.relpath, provided=UNIFORM_NAMES).functions
-    return {
-        f.name: len(f.params) + sum(p.type.startswith("sampler") for p in f.params)
-        for f in glsl
-        if f.name in snippet.provides
-    }
+    return {f.name: len(f.params) for f in glsl if f.name in snippet.provides}
 
 
 def test_every_snippet_keeps_its_function_names_and_arities(hlsl_of: dict[str, str]) -> None:

@@ -64,13 +64,18 @@ def test_a_far_camera_still_reaches_its_scene() -> None:
     """A look-at camera 80 units from a large sphere: the march's far limit grows with the
     eye's distance (its default, 50, would stop short and draw only the background)."""
     scene = {
-        "camera": {"type": "lookat", "position": [0.0, 10.0, 80.0], "target": [0.0, 0.0, 0.0],
-                   "focal": 6.0},  # fmt: skip
+        "camera": {
+            "type": "lookat",
+            "position": [0.0, 10.0, 80.0],
+            "target": [0.0, 0.0, 0.0],
+            "focal": 6.0,
+        },  # fmt: skip
         "objects": [{"shape": "sphere", "radius": 5.0, "material": "m"}],
         "materials": {"m": {"albedo": [0.9, 0.2, 0.1]}},
         "lights": [{"type": "directional", "direction": [0.3, 1.0, 0.5]}],
         "background": {"color": [0.0, 0.0, 0.0], "tonemap": False},
     }
+
     def red(scene: dict[str, Any], tier: str) -> float:
         pixels = np.asarray(glint.render(glint.compose(scene, tier=tier), size=SIZE).pixels)
         return float((pixels[..., 0] > 0.3).mean())

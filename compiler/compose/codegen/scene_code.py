@@ -67,6 +67,8 @@ def generate(
         user = user_unit(scene.geometry, lights.defines, scene.bound_channels())
         units.append(user)
         albedo_by_user = ALBEDO in user.provides
+    if scene.bound_channels():
+        units.append(_pictures_unit(sorted(scene.bound_channels())))
     if len(materials) > 1:
         units.append(_material_index_unit(scene, materials, objects))
     values = material_values(scene, materials)
@@ -242,13 +244,32 @@ def _albedo(material: Material, named: str | None = None) -> tuple[str, list[str
     and what it requires."""
     base = named or _vec3(material.albedo)
     if material.albedo_texture is not None:
-        channel = f"iChannel{material.albedo_texture}"
         scale = glsl_float(material.texture_scale)
-        return f"{base} * triplanar({channel}, P, N, {scale})", ["triplanar"]
+        return f"{base} * picture{material.albedo_texture}(P, N, {scale})", [
+            f"picture{material.albedo_texture}"
+        ]
     if material.pattern == "checker":
         assert material.pattern_albedo is not None  # the scene model checks this
         return f"mix({base}, {_vec3(material.pattern_albedo)}, checker(P))", ["checker"]
     return base, []
+
+
+def _pictures_unit(channels: list[int]) -> Unit:
+    """`pictureN(P, N, scale)` for each channel a material reads: its picture sampled along the
+    three axes (the picture repeats every `scale`) and blended by pattern.triplanar."""
+    functions = []
+    for unit in channels:
+        sample = [f"texture(iChannel{unit}, P.{axes} / scale).rgb" for axes in ("zy", "xz", "xy")]
+        functions.append(
+            f"// The picture on iChannel{unit} wrapped onto the surface at P.\n"
+            f"vec3 picture{unit}(vec3 P, vec3 N, float scale) {{\n"
+            f"    return triplanar({sample[0]},\n"
+            f"                     {sample[1]},\n"
+            f"                     {sample[2]}, N);\n"
+            "}\n"
+        )
+    names = [f"picture{unit}" for unit in channels]
+    return generated("scene.pictures", names, ["triplanar"], "\n".join(functions))
 
 
 def _by_material(bodies: list[list[str]]) -> tuple[list[str], list[str]]:
@@ -321,7 +342,7 @@ def _material_body(
     the metallic path and the diffuse roughness appear only for materials that have them."""
     metal = material.metallic > 0.0
     prelude = []
-    if metal and (albedo.startswith(("mix(", ALBEDO)) or "triplanar(" in albedo):
+    if metal and (albedo.startswith(("mix(", ALBEDO)) or " * picture" in albedo):
         # a pattern or a picture: evaluate it once for both
         prelude, albedo = [f"vec3 albedo = {albedo};"], "albedo"
     named = named or {}

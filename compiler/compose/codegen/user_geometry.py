@@ -58,7 +58,8 @@ CHANNELS = frozenset(f"iChannel{i}" for i in range(4))
 # The functions glint's generated scene code defines (scene_code.py, field_code.py).
 GENERATED_NAMES = frozenset(
     {"map", "materialAt", "surfaceAt", "shade", "shadeDirect", "mainImage", "pixelColor",
-     "subsurfaceAt", "emissionAt", "submerged", "hitLift", "detailNormal", GEOMETRY_MATERIAL}
+     "subsurfaceAt", "emissionAt", "submerged", "hitLift", "detailNormal", "picture0",
+     "picture1", "picture2", "picture3", GEOMETRY_MATERIAL}
 )  # fmt: skip
 
 
