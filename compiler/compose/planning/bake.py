@@ -1,7 +1,9 @@
 """Parameter baking, the stage after planning: the values of snippet parameters that the scene
-sets (camera, environment, medium) and those computed from it (the nine spherical-harmonic
-coefficients of the environment for `irradiance.sh9`; a pixel-cone march's tolerance for the
-camera's focal length). The emitter writes them as #defines; snippets' defaults cover the
+sets (camera, environment, medium, background) and those computed from it (the nine
+spherical-harmonic coefficients of the environment for `irradiance.sh9`; a pixel-cone march's
+tolerance for the camera's focal length and its far limit for the camera's distance; an area
+light's shadow rays by tier), and last the scene's own [quality.params], checked against each
+parameter's type and range. The emitter writes them as #defines; snippets' defaults cover the
 rest."""
 
 from __future__ import annotations
