@@ -123,7 +123,11 @@ def build_parser() -> argparse.ArgumentParser:
     validate.set_defaults(handler=cmd_validate)
 
     render = sub.add_parser("render", help="render a shader or a scene to a PNG")
-    render.add_argument("input", help="shader file, or scene .toml to compose first")
+    render.add_argument(
+        "input",
+        help="shader file, scene .toml to compose first, or a ShaderToy project (its JSON export, "
+        "or a folder of tabs)",
+    )
     render.add_argument(
         "-o", "--output", required=True, help="PNG file to write (-: standard output)"
     )
@@ -135,6 +139,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     render.add_argument("--time", type=_uniform_float, default=0.0, help="iTime in seconds")
     render.add_argument("--frame", type=_frame, default=0, help=f"iFrame, 0..{limits.MAX_FRAME}")
+    render.add_argument(
+        "--frames",
+        type=int,
+        default=1,
+        help="a ShaderToy project (its JSON, or a folder of tabs): frames to run, 1/60 s apart "
+        "from --time, its buffers feeding the next frame; the last frame's Image is written",
+    )
     render.add_argument("--mouse", type=_mouse, default=(0.0, 0.0, 0.0, 0.0), help="x,y,z,w")
     render.add_argument(
         "--timeout",
@@ -595,6 +606,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         mouse=args.mouse,
         timeout=args.timeout,
         channels=dict(args.channel) or None,
+        frames=args.frames,
     )
     to_stdout = args.output == "-"
     if to_stdout:  # the PNG alone on stdout: the report goes to stderr
@@ -622,6 +634,8 @@ def cmd_render(args: argparse.Namespace) -> int:
     else:
         where = "standard output" if to_stdout else args.output
         size = f"{width}x{height}, iTime {args.time}"
+        if args.frames > 1:  # a project's frames: the last one is written
+            size += f" to {args.time + (args.frames - 1) / 60:.4g}, {args.frames} frames"
         print(f"wrote {where} ({size}) with {image.renderer}", file=out)
         print(
             f"  NaN pixels: {stats['nan']}, Inf pixels: {stats['inf']}, "

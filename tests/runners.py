@@ -30,6 +30,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from PIL import Image
+
+from glint.compiler.target.shadertoy_project import Project
 
 if TYPE_CHECKING:
     from playwright.sync_api import Browser
@@ -313,7 +316,96 @@ def render_webgl2(
     return images
 
 
+# --- a whole project in wgpu-shadertoy ------------------------------------------------------
+
+
+def render_wgpu_project(
+    project: Project, width: int, height: int, time: float, frames: int, timeout: float = 120.0
+) -> np.ndarray:
+    """The Image of a ShaderToy project's last frame in wgpu-shadertoy (its buffers and
+    pictures bound as the project says), `frames` frames from iTime `time`, 1/60 s apart: float32
+    H x W x 3 in [0, 1], row 0 at the top. Raises RunnerFailure where it cannot draw it."""
+    with tempfile.TemporaryDirectory(prefix="glint-wgpu-project-") as folder:
+        passes = []
+        for index, item in enumerate(project.passes):
+            inputs = []
+            for entry in item.inputs:
+                if entry.kind == "silent":
+                    continue  # black, as every unbound channel
+                read = {
+                    "channel": entry.channel, "kind": entry.kind, "buffer": entry.buffer,
+                    "filter": entry.filter, "wrap": entry.wrap, "vflip": entry.vflip,
+                }  # fmt: skip
+                if entry.file is not None:
+                    read["path"] = str(Path(folder) / f"picture-{index}-{entry.channel}.npy")
+                    np.save(read["path"], np.asarray(Image.open(entry.file).convert("RGBA")))
+                inputs.append(read)
+            passes.append({"code": item.code, "buffer": item.buffer, "inputs": inputs})
+        job = {"common": project.common, "passes": passes, "width": width, "height": height,
+               "time": time, "frames": frames, "output": folder}  # fmt: skip
+        job_path = Path(folder) / "job.json"
+        job_path.write_text(json.dumps(job))
+        try:
+            done = subprocess.run(
+                [sys.executable, __file__, "wgpu-project", str(job_path)],
+                env=os.environ | WGPU_ENV, capture_output=True, timeout=timeout,
+            )  # fmt: skip
+        except subprocess.TimeoutExpired:
+            raise RunnerFailure(f"wgpu-shadertoy took more than {timeout:g} s") from None
+        image = Path(folder) / "image.npy"
+        if done.returncode or not image.is_file():
+            log = (done.stdout + done.stderr).decode(errors="replace")[-2000:]
+            raise RunnerFailure(f"wgpu-shadertoy failed (exit {done.returncode}):\n{log}")
+        return np.load(image)
+
+
+def _wgpu_project_worker(job_path: str) -> int:
+    job = json.loads(Path(job_path).read_text())
+    from wgpu_shadertoy import Shadertoy
+    from wgpu_shadertoy.inputs import ShadertoyChannelBuffer, ShadertoyChannelTexture
+    from wgpu_shadertoy.passes import BufferRenderPass
+
+    def channels(inputs: list[dict[str, Any]]) -> list[Any]:
+        bound: list[Any] = [ShadertoyChannelTexture() for _ in range(4)]
+        for entry in inputs:
+            options = {"wrap": entry["wrap"], "filter": entry["filter"]}
+            if entry["kind"] == "buffer":
+                bound[entry["channel"]] = ShadertoyChannelBuffer(entry["buffer"], **options)
+            else:
+                data = np.load(entry["path"])
+                bound[entry["channel"]] = ShadertoyChannelTexture(
+                    data, vflip=entry["vflip"], **options
+                )
+        return bound
+
+    buffers = [
+        BufferRenderPass(
+            buffer_idx=item["buffer"].lower(), code=item["code"], inputs=channels(item["inputs"])
+        )  # fmt: skip
+        for item in job["passes"]
+        if item["buffer"]
+    ]
+    image = next(item for item in job["passes"] if not item["buffer"])
+    shadertoy = Shadertoy(
+        image["code"], common=job["common"], resolution=(job["width"], job["height"]),
+        shader_type="glsl", offscreen=True, inputs=channels(image["inputs"]), buffers=buffers,
+    )  # fmt: skip
+    frame = None
+    for number in range(job["frames"]):
+        frame = shadertoy.snapshot(
+            time_float=job["time"] + number * TIME_DELTA, time_delta=TIME_DELTA, frame=number,
+            framerate=60.0, mouse_pos=(0.0, 0.0, 0.0, 0.0), date=DATE,
+        )  # fmt: skip
+    pixels = np.asarray(frame)[:, :, :3]
+    if shadertoy._format.startswith("bgra"):
+        pixels = pixels[:, :, ::-1]
+    np.save(Path(job["output"]) / "image.npy", pixels.astype(np.float32) / 255.0)
+    return 0
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] != "wgpu":
-        sys.exit("usage: runners.py wgpu JOB.json")
+    if len(sys.argv) != 3 or sys.argv[1] not in ("wgpu", "wgpu-project"):
+        sys.exit("usage: runners.py wgpu|wgpu-project JOB.json")
+    if sys.argv[1] == "wgpu-project":
+        sys.exit(_wgpu_project_worker(sys.argv[2]))
     sys.exit(_wgpu_worker(sys.argv[2]))

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     import numpy as np
 
     from glint.compiler.scene.model import Scene
+    from glint.compiler.target.shadertoy_project import Project
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -93,6 +94,7 @@ def render(
     mouse: Sequence[float] = (0.0, 0.0, 0.0, 0.0),
     timeout: float = 60.0,
     channels: Mapping[int, str | os.PathLike[str]] | None = None,
+    frames: int = 1,
 ) -> Image:
     """Draw one frame, as `glint render` does: in a child process killed after `timeout`
     seconds, into a float framebuffer, with the statistics and NaN/Inf counts in `stats`.
@@ -103,7 +105,10 @@ def render(
     `frame` and `mouse` are iTime, iFrame and iMouse; `channels` binds pictures (files) to
     ShaderToy channels, e.g. {0: "stone.png"}, as ShaderToy binds them (mipmapped, repeating,
     bottom row at v = 0); the rest sample black. A `MeshShader` or a mesh scene is drawn
-    by rasterizing its meshes (a mesh scene at its own tier, for mesh-desktop).
+    by rasterizing its meshes (a mesh scene at its own tier, for mesh-desktop). A ShaderToy
+    project (its JSON, or a folder of tabs: target/shadertoy_project.py) is drawn pass by pass,
+    `frames` frames from iTime `time`, 1/60 s apart (buffers feed the next frame), and the last
+    frame's Image returned.
 
     Raises InputError when the shader does not compile, does not finish in time or crashes the
     driver, EnvironmentProblem when no OpenGL context can be made. NaN and Inf pixels do not
@@ -111,6 +116,7 @@ def render(
     """
     from glint.compiler.render import image_stats, render_full
     from glint.compiler.render.limits import check_request
+    from glint.compiler.render.runner import render_project
 
     width, height = _args.numbers_of("size", size, 2, whole=True)
     x, y, z, w = _args.numbers_of("mouse", mouse, 4)
@@ -119,10 +125,22 @@ def render(
     timeout = _args.number("timeout", timeout)
     # The values (size and the memory it takes, timeout, float32 uniforms) before any work.
     check_request(width, height, time, frame, (x, y, z, w), timeout)
-    meshes = _mesh_shader(shader)
+    frames = _args.integer("frames", frames)
+    project = _project(shader)
+    if project is None and frames != 1:
+        raise UsageError("frames: only a ShaderToy project (JSON or a folder of tabs) runs frames")
+    meshes = None if project is not None else _mesh_shader(shader)
     if meshes is not None and channels:
         raise UsageError("channels: a mesh shader reads no ShaderToy channel; leave them out")
-    if meshes is not None:
+    if project is not None:
+        if channels:
+            raise UsageError(
+                "channels: a project binds its own channels (its inputs); leave them out"
+            )
+        if not 1 <= frames <= MAX_FRAMES:
+            raise UsageError(f"frames: {frames}; a project runs 1 to {MAX_FRAMES} frames")
+        result = render_project(project, width, height, time, frames, (x, y, z, w), timeout)
+    elif meshes is not None:
         result = draw_mesh_shader(meshes, (width, height), time, (x, y, z, w), timeout)
     else:
         source, scene = _source(shader, channels)
@@ -142,6 +160,23 @@ def render(
         time=time,
         frame=frame,
     )
+
+
+# The most frames a project runs in one render (a minute at 60 frames a second).
+MAX_FRAMES = 3600
+
+
+def _project(shader: object) -> Project | None:
+    """A ShaderToy project to draw: a Project, a `.json` file or a folder; None otherwise."""
+    from glint.compiler.target.shadertoy_project import Project, read_project
+
+    if isinstance(shader, Project):
+        return shader
+    if isinstance(shader, str | os.PathLike) and not is_source(shader):
+        path = Path(_args.path("shader", shader))
+        if path.suffix == ".json" or path.is_dir():
+            return read_project(path)
+    return None
 
 
 def _check_pictures(shader: Shader, channels: Mapping[int, object] | None) -> None:

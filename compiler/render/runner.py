@@ -23,6 +23,7 @@ import numpy as np
 
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
 from glint.compiler.render import gl, limits
+from glint.compiler.target.shadertoy_project import Project
 from glint.compiler.target.sourcemap import split_lines
 
 DEFAULT_TIMEOUT_S = 60.0
@@ -170,6 +171,11 @@ def _input_bytes(job: dict[str, object]) -> int:
     """What the worker loads besides the image: channel data and mesh arrays, counted twice
     (the loaded array and the driver's copy)."""
     paths = list(job.get("channels", []))  # type: ignore[call-overload]
+    paths += [
+        entry.get("path")
+        for item in job.get("passes", [])
+        for entry in item["inputs"]  # type: ignore[attr-defined]
+    ]
     paths += [draw["arrays"] for draw in job.get("draws", [])]  # type: ignore[attr-defined]
     return 2 * sum(os.path.getsize(path) for path in paths if path is not None)
 
@@ -211,6 +217,58 @@ def render_full(
         def rejected(message: str, outcome: dict[str, object]) -> str:
             log = driver_log(message, source, str(outcome.get("version", "300 es")))
             return f"the OpenGL driver rejected the shader:\n{log}"
+
+        return run_job(job, timeout, rejected)
+
+
+def render_project(
+    project: Project,
+    width: int = 640,
+    height: int = 360,
+    time: float = 0.0,
+    frames: int = 1,
+    mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
+    timeout: float = DEFAULT_TIMEOUT_S,
+) -> RenderResult:
+    """Draw a ShaderToy project (passes/passes.py): `frames` frames from iTime `time`, 1/60 s
+    apart, and return the Image of the last one."""
+    limits.check_request(width, height, time, frames - 1, mouse, timeout)
+    from glint.compiler.render.images import channel_picture
+
+    with tempfile.TemporaryDirectory(prefix="glint-project-") as output_dir:
+        passes = []
+        for index, item in enumerate(project.passes):
+            inputs = []
+            for entry in item.inputs:
+                if entry.kind == "silent":
+                    continue  # black, as every unbound channel
+                read = {"channel": entry.channel, "kind": entry.kind, "buffer": entry.buffer,
+                        "filter": entry.filter, "wrap": entry.wrap}  # fmt: skip
+                if entry.kind == "texture":
+                    assert entry.file is not None
+                    data = channel_picture(str(entry.file), f"{item.name}: iChannel{entry.channel}")
+                    if not entry.vflip:  # the picture's top row at v = 0
+                        data = np.ascontiguousarray(data[::-1])
+                    read["path"] = os.path.join(output_dir, f"picture-{index}-{entry.channel}.npy")
+                    np.save(read["path"], data)
+                inputs.append(read)
+            passes.append({"name": item.name, "source": project.source(item),
+                           "buffer": item.buffer, "inputs": inputs})  # fmt: skip
+        job = {
+            "kind": "project",
+            "passes": passes,
+            "width": width,
+            "height": height,
+            "time": time,
+            "frame": 0,
+            "frames": frames,
+            "mouse": list(mouse),
+            "date": list(DEFAULT_DATE),
+            "output_dir": output_dir,
+        }
+
+        def rejected(message: str, outcome: dict[str, object]) -> str:
+            return f"the OpenGL driver rejected a pass of {project.origin}:\n{message}"
 
         return run_job(job, timeout, rejected)
 

@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from glint.compiler.render import gl, mesh_gl
+from glint.compiler.render import gl, mesh_gl, passes
 
 
 def run_job(job: dict[str, Any]) -> dict[str, Any]:
@@ -48,6 +48,13 @@ def run_job(job: dict[str, Any]) -> dict[str, Any]:
 
 
 def _draw(ctx: Any, job: dict[str, Any], frame: gl.Frame, renderer: str) -> dict[str, Any]:
+    if job.get("kind") == "project":  # a ShaderToy project's passes, frame after frame
+        try:
+            image, seconds = passes.draw_project(ctx, job, frame)
+        except gl.CompileFailure as exc:
+            return {"status": "compile", "message": str(exc), "version": gl.glsl_version(ctx)}
+        np.save(os.path.join(job["output_dir"], "image.npy"), image)
+        return {"status": "ok", "renderer": renderer, "glsl_version": "300 es", "seconds": seconds}
     if job.get("kind") == "mesh":  # a mesh scene: background, then meshes (mesh_gl.py)
         try:
             image, seconds = mesh_gl.draw_meshes(ctx, job, frame)
