@@ -93,6 +93,14 @@ def build_parser() -> argparse.ArgumentParser:
         "OUTPUT.common.glsl and a short Image tab that uses it to OUTPUT (needs -o)",
     )
     compose.add_argument(
+        "--format",
+        choices=["glsl", "shadertoy-json"],
+        default="glsl",
+        help="shadertoy-json: write ShaderToy's JSON (an Image pass, with --split common a "
+        "Common pass too, and the scene's pictures as its texture inputs), which ShaderToy's "
+        "import, glint render and wgpu-shadertoy's from_json read",
+    )
+    compose.add_argument(
         "--no-validate",
         action="store_true",
         help="write the shader without checking it first (by default a shader that does not "
@@ -374,6 +382,8 @@ def cmd_compose(args: argparse.Namespace) -> int:
     to_stdout = args.output == "-"
     if args.explain:  # beside a shader on standard output, on stderr
         (sys.stderr if to_stdout else sys.stdout).write(shader.explain())
+    if args.format == "shadertoy-json":
+        return _write_json(shader, args.split == "common", args.output)
     if args.split:
         return _write_split(shader, args.output)
     if args.output and not to_stdout:
@@ -461,6 +471,48 @@ def _check_field(shader: Shader) -> None:
         return
     for warning in warnings:
         print(f"glint: warning: {warning}", file=sys.stderr)
+
+
+def _write_json(shader: Shader, split: bool, output: str | None) -> int:
+    """`--format shadertoy-json`: the composition as ShaderToy's JSON, one Image pass (and a
+    Common pass with --split common), the scene's pictures as texture inputs."""
+    from glint.compiler.files import write_atomic
+    from glint.compiler.target.shadertoy_project import (
+        ChannelInput,
+        Pass,
+        Project,
+        project_json,
+    )
+
+    if shader.target != "shadertoy":
+        raise UsageError(
+            f"--format shadertoy-json writes ShaderToy's tabs: drop --target {shader.target}"
+        )
+    scene = shader.scene
+    files = scene.channel_files()
+    inputs = tuple(
+        ChannelInput(unit, "texture", file=files[unit]) for unit in sorted(scene.bound_channels())
+        if unit in files
+    )  # fmt: skip
+    if split:
+        tabs = shader.split_common()
+        project = Project("<compose>", (Pass("Image", tabs.image, inputs),), tabs.common)
+    else:
+        project = Project("<compose>", (Pass("Image", shader.text, inputs),))
+    text = json.dumps(project_json(project, scene.name, scene.description), indent=1) + "\n"
+    if not output or output == "-":
+        sys.stdout.write(text)
+        return 0
+    write_atomic(Path(output), text.encode("utf-8"))
+    pictures = (
+        f", its pictures ({', '.join(i.file.name for i in inputs if i.file)}) to go beside it"
+        if inputs
+        else ""
+    )
+    print(
+        f"wrote {output}: ShaderToy JSON, {1 + split} pass{'es' * split}{pictures}", file=sys.stderr
+    )
+    return 0
 
 
 def _write_split(shader: Shader, output: str | None) -> int:

@@ -359,6 +359,47 @@ def render_wgpu_project(
         return np.load(image)
 
 
+def render_wgpu_json(
+    path: Path, width: int, height: int, time: float, timeout: float = 120.0
+) -> np.ndarray:
+    """ShaderToy JSON as wgpu-shadertoy's own `Shadertoy.from_json` loads it, one frame at
+    iTime `time`: float32 H x W x 3 in [0, 1], row 0 at the top."""
+    with tempfile.TemporaryDirectory(prefix="glint-wgpu-json-") as folder:
+        job = {"json": str(path), "width": width, "height": height, "time": time, "output": folder}
+        job_path = Path(folder) / "job.json"
+        job_path.write_text(json.dumps(job))
+        try:
+            done = subprocess.run(
+                [sys.executable, __file__, "wgpu-json", str(job_path)],
+                env=os.environ | WGPU_ENV, capture_output=True, timeout=timeout,
+            )  # fmt: skip
+        except subprocess.TimeoutExpired:
+            raise RunnerFailure(f"wgpu-shadertoy took more than {timeout:g} s") from None
+        image = Path(folder) / "image.npy"
+        if done.returncode or not image.is_file():
+            log = (done.stdout + done.stderr).decode(errors="replace")[-2000:]
+            raise RunnerFailure(f"wgpu-shadertoy failed (exit {done.returncode}):\n{log}")
+        return np.load(image)
+
+
+def _wgpu_json_worker(job_path: str) -> int:
+    job = json.loads(Path(job_path).read_text())
+    from wgpu_shadertoy import Shadertoy
+
+    shadertoy = Shadertoy.from_json(
+        job["json"], resolution=(job["width"], job["height"]), offscreen=True, use_cache=False
+    )
+    frame = shadertoy.snapshot(
+        time_float=job["time"], time_delta=TIME_DELTA, frame=0, framerate=60.0,
+        mouse_pos=(0.0, 0.0, 0.0, 0.0), date=DATE,
+    )  # fmt: skip
+    pixels = np.asarray(frame)[:, :, :3]
+    if shadertoy._format.startswith("bgra"):
+        pixels = pixels[:, :, ::-1]
+    np.save(Path(job["output"]) / "image.npy", pixels.astype(np.float32) / 255.0)
+    return 0
+
+
 def _wgpu_project_worker(job_path: str) -> int:
     job = json.loads(Path(job_path).read_text())
     from wgpu_shadertoy import Shadertoy
@@ -404,8 +445,10 @@ def _wgpu_project_worker(job_path: str) -> int:
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("wgpu", "wgpu-project"):
-        sys.exit("usage: runners.py wgpu|wgpu-project JOB.json")
+    if len(sys.argv) != 3 or sys.argv[1] not in ("wgpu", "wgpu-project", "wgpu-json"):
+        sys.exit("usage: runners.py wgpu|wgpu-project|wgpu-json JOB.json")
     if sys.argv[1] == "wgpu-project":
         sys.exit(_wgpu_project_worker(sys.argv[2]))
+    if sys.argv[1] == "wgpu-json":
+        sys.exit(_wgpu_json_worker(sys.argv[2]))
     sys.exit(_wgpu_worker(sys.argv[2]))

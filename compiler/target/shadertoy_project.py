@@ -325,3 +325,50 @@ def _folder_input(key: str, value: Any, where: str, folder: Path) -> ChannelInpu
     options |= {k: value[k] for k in ("filter", "wrap", "vflip") if k in value}
     _check_options(options, where)
     return ChannelInput(channel, "texture", file=picture, **options)
+
+
+# The output id ShaderToy gives the Image pass, and each buffer's (the reverse of BUFFER_IDS).
+IMAGE_OUTPUT = "4dfGRr"
+BUFFER_OUTPUTS = {"A": "4dXGR8", "B": "XsXGR8", "C": "4sXGR8", "D": "XdfGR8"}
+
+
+def project_json(project: Project, name: str, description: str = "") -> dict[str, Any]:
+    """The project as ShaderToy's JSON (the export's form), which ShaderToy's import, glint and
+    wgpu-shadertoy's `Shadertoy.from_json` read. A picture is named by its file's name: put the
+    file beside the JSON (ShaderToy itself binds only its own pictures)."""
+    passes: list[dict[str, Any]] = []
+    if project.common:
+        passes.append(_pass_json("Common", "common", project.common, [], []))
+    for item in project.passes:
+        inputs = [_input_json(entry) for entry in item.inputs]
+        output = BUFFER_OUTPUTS[item.buffer] if item.buffer else IMAGE_OUTPUT
+        kind = "buffer" if item.buffer else "image"
+        passes.append(
+            _pass_json(item.name, kind, item.code, inputs, [{"id": output, "channel": 0}])
+        )
+    info = {"id": "", "name": name, "username": "glint", "description": description,
+            "tags": ["glint"]}  # fmt: skip
+    return {"Shader": {"ver": "0.1", "info": info, "renderpass": passes}}
+
+
+def _pass_json(
+    name: str, kind: str, code: str, inputs: list[dict[str, Any]], outputs: list[dict[str, Any]]
+) -> dict[str, Any]:
+    return {"inputs": inputs, "outputs": outputs, "code": code, "name": name,
+            "description": "", "type": kind}  # fmt: skip
+
+
+def _input_json(entry: ChannelInput) -> dict[str, Any]:
+    sampler = {
+        "filter": entry.filter,
+        "wrap": entry.wrap,
+        "vflip": "true" if entry.vflip else "false",
+        "srgb": "false",
+        "internal": "byte",
+    }
+    if entry.kind == "buffer":
+        return {"id": BUFFER_OUTPUTS[entry.buffer], "type": "buffer", "channel": entry.channel,
+                "sampler": sampler, "published": 1}  # fmt: skip
+    assert entry.file is not None
+    return {"id": entry.file.stem, "src": entry.file.name, "type": "texture",
+            "channel": entry.channel, "sampler": sampler, "published": 1}  # fmt: skip

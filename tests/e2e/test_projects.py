@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from PIL import Image
-from runners import render_wgpu_project, wgpu_missing
+from runners import render_wgpu_json, render_wgpu_project, wgpu_missing
 from site_browser import MAKE_TEST
 
 from glint.compiler.render.images import flip_error
@@ -71,3 +71,58 @@ def test_render_runs_a_project_from_the_command_line(tmp_path: Path) -> None:
                           capture_output=True, text=True)  # fmt: skip
     assert done.returncode == 1 and "code: missing" in done.stderr
     assert "Traceback" not in done.stderr and not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize("split", [False, True])
+def test_a_composed_scene_as_shadertoy_json_loads_in_wgpu_shadertoy(
+    tmp_path: Path, split: bool
+) -> None:
+    """`glint compose --format shadertoy-json` (with --split common: a Common pass and a short
+    Image pass): wgpu-shadertoy's own Shadertoy.from_json loads it and draws what glint draws,
+    and glint reads it back as the same picture."""
+    missing = wgpu_missing()
+    if missing:
+        pytest.skip(f"{missing}: {MAKE_TEST}")
+    out = tmp_path / "default.json"
+    split_common = ["--split", "common"] if split else []
+    command = [sys.executable, "-m", "glint.compiler.cli", "compose", "--format",
+               "shadertoy-json", "-o", str(out), *split_common]  # fmt: skip
+    done = subprocess.run(command, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    import glint
+
+    ours = glint.render(glint.compose(None), size=SIZE, time=1.0).pixels
+    back = render_project(read_project(out), *SIZE, time=1.0).image[..., :3]
+    np.testing.assert_allclose(back, ours, atol=1e-5)
+    theirs = render_wgpu_json(out, *SIZE, 1.0)
+    error = flip_error(np.clip(ours, 0.0, 1.0), theirs)
+    print(
+        f"default scene as ShaderToy JSON (split {split}): mean FLIP {error:.5f} in wgpu-shadertoy"
+    )
+    assert error <= FLIP_LIMIT
+
+
+def test_a_scenes_pictures_travel_as_texture_inputs(tmp_path: Path) -> None:
+    """The studio's tiled floor: its JSON has a texture input naming tiles.png; with the
+    picture beside the JSON, glint draws the JSON as it draws the scene. A target other than
+    ShaderToy's is refused."""
+    import json
+    import shutil
+
+    import glint
+
+    studio = Path(__file__).resolve().parents[2] / "snippets" / "scenes" / "studio.toml"
+    out = tmp_path / "studio.json"
+    cli = [sys.executable, "-m", "glint.compiler.cli", "compose", str(studio)]
+    done = subprocess.run([*cli, "--format", "shadertoy-json", "-o", str(out)],
+                          capture_output=True, text=True)  # fmt: skip
+    assert done.returncode == 0 and "tiles.png" in done.stderr, done.stderr
+    image = json.loads(out.read_text())["Shader"]["renderpass"][0]
+    assert image["inputs"][0]["src"] == "tiles.png" and image["inputs"][0]["channel"] == 0
+    shutil.copy(studio.parent / "pictures" / "tiles.png", tmp_path)
+    back = render_project(read_project(out), *SIZE, time=1.0).image[..., :3]
+    ours = glint.render(studio, size=SIZE, time=1.0).pixels
+    np.testing.assert_allclose(back, ours, atol=1e-5)
+    refused = subprocess.run([*cli, "--format", "shadertoy-json", "--target", "webgl2"],
+                             capture_output=True, text=True)  # fmt: skip
+    assert refused.returncode == 2 and "drop --target webgl2" in refused.stderr
