@@ -27,7 +27,7 @@ from .precision import precision_note
 from .reporters import FORMATS, REPORTERS, statistics, summary
 from .rules import all_rules, rule_doc
 from .runner import LintResult, decode
-from .tabs import plan, read_common
+from .tabs import plan, project_tabs, read_common, split_projects
 
 EXTENSIONS = (".glsl", ".frag", ".fs")
 
@@ -205,9 +205,20 @@ def cmd_lint(args: argparse.Namespace) -> int:
         raise UsageError("--unsafe-fixes needs --fix")
     options = options_for(args)
     common = read_common(args.common) if args.common is not None else None
-    planned = plan(collect(args.paths), common, options)
+    paths, projects = split_projects(args.paths)
+    if projects and args.fix:
+        raise UsageError(
+            f"{printable(projects[0].origin)}: --fix rewrites files, and a project's passes "
+            "live in its JSON or its tabs: fix the tab files, or lint without --fix"
+        )
+    planned = plan(collect(paths), common, options) if paths else []
+    texts: dict[str, bytes] = {}
+    for project in projects:
+        for name, tab, text in project_tabs(project, options):
+            planned.append((name, tab))
+            texts[name] = text.encode("utf-8")
     files = [file for file, _ in planned]
-    results = _lint_files(files, [tab for _, tab in planned], options, args)
+    results = _lint_files(files, [tab for _, tab in planned], options, args, texts)
     findings: list[Finding] = []
     sources: dict[str, str] = {}
     fixed = 0
@@ -237,13 +248,19 @@ def cmd_lint(args: argparse.Namespace) -> int:
 
 
 def _lint_files(
-    files: list[str], tabs: list[Tab], options: Options, args: argparse.Namespace
+    files: list[str],
+    tabs: list[Tab],
+    options: Options,
+    args: argparse.Namespace,
+    texts: dict[str, bytes] | None = None,
 ) -> list[LintResult]:
     """Each file's result, in order: from the cache when its bytes, name, tab and the settings
     are unchanged, the others linted (in parallel when there are enough of them). Fixing never
-    reads the cache: it lints afresh, and stores the findings of what it leaves on disk."""
+    reads the cache: it lints afresh, and stores the findings of what it leaves on disk.
+    `texts`: the code of a project's passes, by the name they are reported under."""
+    texts = texts or {}
     names = ["<stdin>" if file == "-" else file for file in files]
-    data = [read_source(file) for file in files]
+    data = [texts[file] if file in texts else read_source(file) for file in files]
     cache = None
     if not args.no_cache:
         where = cache_directory(args.cache_dir, find_pyproject(Path.cwd().resolve()))

@@ -6,7 +6,11 @@ A file with a Common tab is analysed with that code in front; findings in the Co
 are reported once, on the Common tab's own file, which is linted with the files that use it
 (named or not): a Common tab that does not compile must not leave its Image tab "clean".
 A file named `NAME.common.glsl` (or the `--common` file) is linted as a Common tab: alone,
-with no mainImage, as ShaderToy compiles it."""
+with no mainImage, as ShaderToy compiles it.
+
+A ShaderToy project (its JSON, or a folder of tabs with `image.glsl`) is linted pass by pass,
+each with the project's Common tab in front and its channels typed by what they read; a pass's
+findings are reported under `PROJECT:PASS` (`shader.json:Buffer A:12:5`)."""
 
 from __future__ import annotations
 
@@ -14,6 +18,7 @@ from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError, printable
 from glint.compiler.target.shadertoy import Tab, common_sibling, is_common_file
+from glint.compiler.target.shadertoy_project import TAB_FILES, Project, read_project
 
 from .options import Options
 from .runner import decode
@@ -81,3 +86,34 @@ def _identity(file: str) -> str:
 
 def _same(file: str, other: str) -> bool:
     return _identity(file) == _identity(other)
+
+
+def split_projects(paths: list[str]) -> tuple[list[str], list[Project]]:
+    """The paths that are ShaderToy projects (a `.json` file, a folder holding image.glsl),
+    read, apart from the rest."""
+    rest: list[str] = []
+    projects: list[Project] = []
+    for raw in paths:
+        path = Path(raw)
+        is_project = (path.suffix == ".json" and path.is_file()) or (
+            path.is_dir() and (path / TAB_FILES["Image"]).is_file()
+        )
+        if is_project:
+            projects.append(read_project(path, pictures=False))
+        else:
+            rest.append(raw)
+    return rest, projects
+
+
+def project_tabs(project: Project, options: Options) -> list[tuple[str, Tab, str]]:
+    """Each pass of `project` as lint takes a file: the name its findings are reported under,
+    its tab (the Common tab in front, its channels' types) and its code; the Common tab first,
+    alone, as ShaderToy compiles it."""
+    tabs: list[tuple[str, Tab, str]] = []
+    common_name = f"{project.origin}:Common"
+    if project.common:
+        tabs.append((common_name, Tab(channels=options.channels, is_common=True), project.common))
+    for item in project.passes:
+        tab = Tab(common=project.common, common_file=common_name, channels=item.channel_kinds())
+        tabs.append((f"{project.origin}:{item.name}", tab, item.code))
+    return tabs

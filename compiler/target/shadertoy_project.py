@@ -81,11 +81,12 @@ class Project:
         return wrap_tab("shadertoy", item.code, tab)[0]
 
 
-def read_project(path: str | Path) -> Project:
-    """A project from a ShaderToy JSON file or a folder of tabs."""
+def read_project(path: str | Path, pictures: bool = True) -> Project:
+    """A project from a ShaderToy JSON file or a folder of tabs. `pictures`: find each texture's
+    file (a render needs them; lint, which needs only the channels' types, does not)."""
     path = Path(path)
     if path.is_dir():
-        return _read_folder(path)
+        return _read_folder(path, pictures)
     if not path.exists():
         raise InputError(f"{path}: no such file or folder")
     text = read_user_text(path, PROJECT_FILE_LIMIT, "ShaderToy JSON file")
@@ -93,10 +94,10 @@ def read_project(path: str | Path) -> Project:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
         raise InputError(f"{path}: not JSON ({exc}); expected ShaderToy's export") from None
-    return project_from_json(data, path)
+    return project_from_json(data, path, pictures)
 
 
-def project_from_json(data: Any, path: Path) -> Project:
+def project_from_json(data: Any, path: Path, pictures: bool = True) -> Project:
     """A project from ShaderToy's JSON: `{"Shader": {"renderpass": [...]}}`, or a list of them
     (the API's answer), the first taken. Pictures are looked for by the name ShaderToy gives
     them (`/media/a/NAME.png`), beside the JSON file or in `media/` there."""
@@ -146,7 +147,7 @@ def project_from_json(data: Any, path: Path) -> Project:
         inputs = item.get("inputs", [])
         if not isinstance(inputs, list):
             raise InputError(f"{where}.inputs: a list of channel inputs, not {inputs!r}")
-        read = tuple(_json_input(entry, f"{where}.inputs[{i}]", path.parent, outputs)
+        read = tuple(_json_input(entry, f"{where}.inputs[{i}]", path.parent, outputs, pictures)
                      for i, entry in enumerate(inputs))  # fmt: skip
         found[name] = Pass(name, code, _one_per_channel(read, where), buffer)
     return _ordered(found, common, str(path))
@@ -178,7 +179,11 @@ def _shader_object(data: Any) -> Any:
 
 
 def _json_input(
-    entry: Any, where: str, folder: Path, outputs: dict[str, str] | None = None
+    entry: Any,
+    where: str,
+    folder: Path,
+    outputs: dict[str, str] | None = None,
+    pictures: bool = True,
 ) -> ChannelInput:
     if not isinstance(entry, dict):
         raise InputError(f"{where}: an input is an object, not {type(entry).__name__}")
@@ -199,9 +204,13 @@ def _json_input(
             raise InputError(f"{where}.id: {entry.get('id')!r} is not one of ShaderToy's buffers")
         return ChannelInput(channel, "buffer", buffer=buffer, **options)
     if kind == "texture":
-        return ChannelInput(channel, "texture", file=_media(entry, where, folder), **options)
+        found = _media(entry, where, folder) if pictures else None
+        return ChannelInput(channel, "texture", file=found, **options)
     if kind in SILENT:  # a still render: no key pressed, no sound playing; black, as ShaderToy
         return ChannelInput(channel, "silent", **options)
+    if not pictures and kind in ("cubemap", "volume", "video", "webcam"):  # typed, for lint
+        return ChannelInput(channel, "cubemap" if kind == "cubemap" else "volume"
+                            if kind == "volume" else "texture", **options)  # fmt: skip
     raise InputError(
         f"{where}: a {kind!r} channel is not bound by glint yet (it binds buffers and "
         "textures); bind it in ShaderToy, or leave the channel out"
@@ -260,7 +269,7 @@ TAB_FILES = {"Image": "image.glsl", **{f"Buffer {b}": f"buffer_{b.lower()}.glsl"
 CHANNELS_FILE = "channels.toml"
 
 
-def _read_folder(folder: Path) -> Project:
+def _read_folder(folder: Path, pictures: bool = True) -> Project:
     """A folder of tabs. channels.toml has a table per pass (`[image]`, `[buffer_a]` ...), a
     key per channel: `0 = "buffer_a"` (a buffer), `1 = "stone.png"` (a picture, relative to
     the folder) or `1 = { file = "stone.png", filter = "linear", wrap = "clamp" }`."""
@@ -283,7 +292,9 @@ def _read_folder(folder: Path) -> Project:
         where = f"{listed}: [{key}]"
         if not isinstance(table, dict):
             raise InputError(f'{where}: a table of channels, e.g. 0 = "buffer_a"')
-        inputs = tuple(_folder_input(k, v, f"{where} {k}", folder) for k, v in table.items())
+        inputs = tuple(
+            _folder_input(k, v, f"{where} {k}", folder, pictures) for k, v in table.items()
+        )
         buffer = name[-1] if name.startswith("Buffer") else ""
         found[name] = Pass(name, code, _one_per_channel(inputs, where), buffer)
     if tables:
@@ -304,7 +315,9 @@ def _read_folder(folder: Path) -> Project:
     return _ordered(found, common, str(folder))
 
 
-def _folder_input(key: str, value: Any, where: str, folder: Path) -> ChannelInput:
+def _folder_input(
+    key: str, value: Any, where: str, folder: Path, pictures: bool = True
+) -> ChannelInput:
     if key not in {str(i) for i in range(CHANNELS)}:
         raise InputError(f"{where}: {key!r} is not a channel (0 to 3)")
     channel = int(key)
@@ -319,7 +332,7 @@ def _folder_input(key: str, value: Any, where: str, folder: Path) -> ChannelInpu
         _check_options(options, where)
         return ChannelInput(channel, "buffer", buffer=source[-1].upper(), **options)
     picture = folder / source
-    if not picture.is_file():
+    if pictures and not picture.is_file():
         raise InputError(f"{where}: {source!r}: no such picture in {folder}")
     options = {"filter": "mipmap", "wrap": "repeat", "vflip": True}
     options |= {k: value[k] for k in ("filter", "wrap", "vflip") if k in value}
