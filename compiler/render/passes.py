@@ -30,10 +30,14 @@ def draw_project(ctx: Any, job: dict[str, Any], frame: gl.Frame) -> tuple[np.nda
         except gl.CompileFailure as exc:  # say which pass
             raise gl.CompileFailure(f"{item['name']}: {exc}") from None
     pictures = {
-        (index, entry["channel"]): _picture(ctx, np.load(entry["path"]), entry)
+        (index, entry["channel"]): (
+            _cube(ctx, np.load(entry["path"]), entry)
+            if entry["kind"] == "cubemap"
+            else _picture(ctx, np.load(entry["path"]), entry)
+        )
         for index, item in enumerate(job["passes"])
         for entry in item["inputs"]
-        if entry["kind"] == "texture"
+        if entry["kind"] in ("texture", "cubemap")
     }
     buffers = {
         item["buffer"]: [_target(ctx, width, height) for _ in range(2)]
@@ -62,7 +66,7 @@ def draw_project(ctx: Any, job: dict[str, Any], frame: gl.Frame) -> tuple[np.nda
                     sizes[unit] = (width, height, 1.0)
                 else:
                     texture = pictures[(index, unit)]
-                    sizes[unit] = (texture.width, texture.height, 1.0)
+                    sizes[unit] = (texture.size[0], texture.size[1], 1.0)
                 texture.use(location=unit)
             if item["buffer"]:
                 into = 1 - latest[item["buffer"]]
@@ -102,6 +106,22 @@ def _picture(ctx: Any, data: np.ndarray, entry: dict[str, Any]) -> Any:
     if entry["filter"] == "mipmap":
         texture.build_mipmaps()
     _sample(texture, entry, moderngl)
+    return texture
+
+
+def _cube(ctx: Any, faces: np.ndarray, entry: dict[str, Any]) -> Any:
+    """A cube map from six faces (+x, -x, +y, -y, +z, -z), each's row 0 at t = 0."""
+    import moderngl
+
+    size = faces.shape[1]
+    texture = ctx.texture_cube((size, size), 4, np.ascontiguousarray(faces, np.float32), dtype="f4")
+    if entry["filter"] == "mipmap":
+        texture.build_mipmaps()
+        texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+    elif entry["filter"] == "nearest":
+        texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
+    else:
+        texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
     return texture
 
 

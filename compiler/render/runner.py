@@ -23,7 +23,7 @@ import numpy as np
 
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
 from glint.compiler.render import gl, limits
-from glint.compiler.target.shadertoy_project import Project
+from glint.compiler.target.shadertoy_project import ChannelInput, Project
 from glint.compiler.target.sourcemap import split_lines
 
 DEFAULT_TIMEOUT_S = 60.0
@@ -233,25 +233,15 @@ def render_project(
     """Draw a ShaderToy project (passes/passes.py): `frames` frames from iTime `time`, 1/60 s
     apart, and return the Image of the last one."""
     limits.check_request(width, height, time, frames - 1, mouse, timeout)
-    from glint.compiler.render.images import channel_picture
-
     with tempfile.TemporaryDirectory(prefix="glint-project-") as output_dir:
         passes = []
         for index, item in enumerate(project.passes):
-            inputs = []
-            for entry in item.inputs:
-                if entry.kind == "silent":
-                    continue  # black, as every unbound channel
-                read = {"channel": entry.channel, "kind": entry.kind, "buffer": entry.buffer,
-                        "filter": entry.filter, "wrap": entry.wrap}  # fmt: skip
-                if entry.kind == "texture":
-                    assert entry.file is not None
-                    data = channel_picture(str(entry.file), f"{item.name}: iChannel{entry.channel}")
-                    if not entry.vflip:  # the picture's top row at v = 0
-                        data = np.ascontiguousarray(data[::-1])
-                    read["path"] = os.path.join(output_dir, f"picture-{index}-{entry.channel}.npy")
-                    np.save(read["path"], data)
-                inputs.append(read)
+            inputs = [
+                _project_input(entry, f"{item.name}: iChannel{entry.channel}",
+                               os.path.join(output_dir, f"channel-{index}-{entry.channel}.npy"))
+                for entry in item.inputs
+                if entry.kind != "silent"  # black, as every unbound channel
+            ]  # fmt: skip
             passes.append({"name": item.name, "source": project.source(item),
                            "buffer": item.buffer, "inputs": inputs})  # fmt: skip
         job = {
@@ -271,6 +261,31 @@ def render_project(
             return f"the OpenGL driver rejected a pass of {project.origin}:\n{message}"
 
         return run_job(job, timeout, rejected)
+
+
+def _project_input(entry: ChannelInput, where: str, path: str) -> dict[str, object]:
+    """One channel input of a project's pass as the worker takes it; a picture's data saved at
+    `path` (a texture: bottom row first where vflip; a cubemap: its six faces, each's row 0 at
+    t = 0, as WebGL uploads a face)."""
+    from glint.compiler.render.images import channel_picture
+
+    read: dict[str, object] = {
+        "channel": entry.channel, "kind": entry.kind, "buffer": entry.buffer,
+        "filter": entry.filter, "wrap": entry.wrap,
+    }  # fmt: skip
+    if entry.kind == "texture":
+        assert entry.file is not None
+        data = channel_picture(str(entry.file), where)  # bottom row first
+        np.save(path, data if entry.vflip else np.ascontiguousarray(data[::-1]))
+        read["path"] = path
+    elif entry.kind == "cubemap":
+        faces = [channel_picture(str(face), where) for face in entry.faces]
+        faces = [face if entry.vflip else face[::-1] for face in faces]
+        if len({face.shape for face in faces}) != 1 or faces[0].shape[0] != faces[0].shape[1]:
+            raise InputError(f"{where}: a cubemap's six faces must be squares of one size")
+        np.save(path, np.ascontiguousarray(np.stack(faces)))
+        read["path"] = path
+    return read
 
 
 def run_job(

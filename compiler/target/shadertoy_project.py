@@ -47,7 +47,8 @@ class ChannelInput:
     channel: int  # 0 to 3
     kind: str  # a KINDS key
     buffer: str = ""  # "A" to "D" for a buffer
-    file: Path | None = None  # the picture for a texture (a cubemap's: later)
+    file: Path | None = None  # the picture for a texture; a cubemap's first face (+x)
+    faces: tuple[Path, ...] = ()  # a cubemap's six pictures: +x, -x, +y, -y, +z, -z
     filter: str = "mipmap"
     wrap: str = "repeat"
     vflip: bool = True  # a picture's bottom row at v = 0, as ShaderToy binds one by default
@@ -208,7 +209,12 @@ def _json_input(
         return ChannelInput(channel, "texture", file=found, **options)
     if kind in SILENT:  # a still render: no key pressed, no sound playing; black, as ShaderToy
         return ChannelInput(channel, "silent", **options)
-    if not pictures and kind in ("cubemap", "volume", "video", "webcam"):  # typed, for lint
+    if kind == "cubemap":
+        faces = _faces(_media(entry, where, folder)) if pictures else ()
+        options["vflip"] = str(sampler.get("vflip", "false")).lower() == "true"
+        return ChannelInput(channel, "cubemap", file=faces[0] if faces else None, faces=faces,
+                            **options)  # fmt: skip
+    if not pictures and kind in ("volume", "video", "webcam"):  # typed, for lint
         return ChannelInput(channel, "cubemap" if kind == "cubemap" else "volume"
                             if kind == "volume" else "texture", **options)  # fmt: skip
     raise InputError(
@@ -230,6 +236,19 @@ def _media(entry: dict[str, Any], where: str, folder: Path) -> Path:
         f"{where}.src: the picture {source} is not here; put {name} beside the JSON file or in "
         f"{folder / 'media'}"
     )
+
+
+def _faces(first: Path) -> tuple[Path, ...]:
+    """A cubemap's six faces as ShaderToy names them: NAME.png (+x), then NAME_1.png (-x) to
+    NAME_5.png (-z) beside it."""
+    faces = [first] + [first.with_name(f"{first.stem}_{i}{first.suffix}") for i in range(1, 6)]
+    missing = [face.name for face in faces if not face.is_file()]
+    if missing:
+        raise InputError(
+            f"{first}: a cubemap is six pictures, {first.name} (+x) and {faces[1].name} (-x) to "
+            f"{faces[5].name} (-z) beside it; missing: {', '.join(missing)}"
+        )
+    return tuple(faces)
 
 
 def _check_options(options: dict[str, Any], where: str) -> None:
@@ -334,9 +353,13 @@ def _folder_input(
     picture = folder / source
     if pictures and not picture.is_file():
         raise InputError(f"{where}: {source!r}: no such picture in {folder}")
-    options = {"filter": "mipmap", "wrap": "repeat", "vflip": True}
+    cube = value.get("type") == "cubemap"
+    options = {"filter": "mipmap", "wrap": "repeat", "vflip": not cube}
     options |= {k: value[k] for k in ("filter", "wrap", "vflip") if k in value}
     _check_options(options, where)
+    if cube:
+        faces = _faces(picture) if pictures else ()
+        return ChannelInput(channel, "cubemap", file=picture, faces=faces, **options)
     return ChannelInput(channel, "texture", file=picture, **options)
 
 

@@ -14,6 +14,7 @@ from PIL import Image
 from runners import render_wgpu_json, render_wgpu_project, wgpu_missing
 from site_browser import MAKE_TEST
 
+from glint.compiler.errors import InputError
 from glint.compiler.render.images import flip_error
 from glint.compiler.render.runner import render_project
 from glint.compiler.target.shadertoy_project import read_project
@@ -126,3 +127,37 @@ def test_a_scenes_pictures_travel_as_texture_inputs(tmp_path: Path) -> None:
     refused = subprocess.run([*cli, "--format", "shadertoy-json", "--target", "webgl2"],
                              capture_output=True, text=True)  # fmt: skip
     assert refused.returncode == 2 and "drop --target webgl2" in refused.stderr
+
+
+def test_a_cubemap_shows_each_face_the_right_way_up(tmp_path: Path) -> None:
+    """Six solid faces as ShaderToy names them (sky.png, sky_1.png ... sky_5.png: +x, -x, +y,
+    -y, +z, -z); looking along each axis shows its face, and on +x, whose top half is red,
+    looking a little up shows red and a little down the dark bottom half (GL's cube map
+    convention, with each face's file top row first, as WebGL uploads it)."""
+    colours = [(255, 0, 0), (0, 255, 0), (0, 0, 255), (255, 255, 0), (255, 0, 255), (0, 255, 255)]
+    for index, colour in enumerate(colours):
+        face = np.zeros((16, 16, 3), np.uint8)
+        face[:] = colour
+        if index == 0:
+            face[8:] = (40, 40, 40)
+        Image.fromarray(face).save(tmp_path / ("sky.png" if index == 0 else f"sky_{index}.png"))
+    (tmp_path / "image.glsl").write_text(
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    int i = int(fragCoord.x / iResolution.x * 8.0);\n"
+        "    vec3 d = i == 0 ? vec3(1, 0, 0) : i == 1 ? vec3(-1, 0, 0) : i == 2 ? vec3(0, 1, 0)\n"
+        "           : i == 3 ? vec3(0, -1, 0) : i == 4 ? vec3(0, 0, 1) : i == 5 ? vec3(0, 0, -1)\n"
+        "           : i == 6 ? vec3(1, 0.5, 0) : vec3(1, -0.5, 0);\n"
+        "    fragColor = vec4(texture(iChannel0, d).rgb, 1.0);\n}\n"
+    )
+    (tmp_path / "channels.toml").write_text(
+        '[image]\n0 = { file = "sky.png", type = "cubemap", filter = "nearest" }\n'
+    )
+    seen = render_project(read_project(tmp_path), 80, 4).image[2, 5::10, :3]
+    dark = 40 / 255
+    # column 0 looks straight along +x, onto the line between the face's halves: not checked
+    expected = [*[tuple(c / 255 for c in colour) for colour in colours[1:]],
+                (1, 0, 0), (dark, dark, dark)]  # fmt: skip
+    np.testing.assert_allclose(seen[1:], np.asarray(expected), atol=1e-3)
+    (tmp_path / "sky_3.png").unlink()
+    with pytest.raises(InputError, match=r"missing: sky_3.png"):
+        read_project(tmp_path)
