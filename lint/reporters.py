@@ -84,19 +84,7 @@ def sarif(findings: Sequence[Finding], sources: dict[str, str]) -> str:
             "level": level[f.severity],
             "message": {"text": f.message},
             "properties": {"certainty": f.certainty},
-            "locations": [
-                {
-                    "physicalLocation": {
-                        "artifactLocation": {"uri": f.file},
-                        "region": {
-                            "startLine": f.line,
-                            "startColumn": f.column,
-                            "endLine": f.end_line,
-                            "endColumn": f.end_column,
-                        },
-                    }
-                }
-            ],
+            "locations": [_location(f)],
         }
         for f in findings
     ]
@@ -171,3 +159,23 @@ def _visible(line: str) -> str:
 def _picture(match: re.Match[str]) -> str:
     code = ord(match.group())
     return chr(0x2400 + code) if code < 0x20 else "\u2421" if code == 0x7F else "\ufffd"
+
+
+# A pass of a ShaderToy project's JSON, as lint names it: PROJECT.json:PASS.
+_PROJECT_PASS = re.compile(r"^(?P<file>.+\.json):(?P<pass>Common|Image|Buffer [A-D])$")
+
+
+def _location(f: Finding) -> dict[str, object]:
+    """A finding's SARIF location: the file and the region; for a pass of a project's JSON, the
+    JSON file and the pass as a logical location (the lines count from the pass's code)."""
+    project = _PROJECT_PASS.match(f.file)
+    region = {"startLine": f.line, "startColumn": f.column, "endLine": f.end_line,
+              "endColumn": f.end_column}  # fmt: skip
+    if project is None:
+        return {"physicalLocation": {"artifactLocation": {"uri": f.file}, "region": region}}
+    return {
+        "physicalLocation": {"artifactLocation": {"uri": project["file"]}, "region": region},
+        "logicalLocations": [
+            {"name": project["pass"], "fullyQualifiedName": f.file, "kind": "module"}
+        ],
+    }

@@ -9,8 +9,9 @@ A file named `NAME.common.glsl` (or the `--common` file) is linted as a Common t
 with no mainImage, as ShaderToy compiles it.
 
 A ShaderToy project (its JSON, or a folder of tabs with `image.glsl`) is linted pass by pass,
-each with the project's Common tab in front and its channels typed by what they read; a pass's
-findings are reported under `PROJECT:PASS` (`shader.json:Buffer A:12:5`)."""
+each with the project's Common tab in front and its channels typed by what they read; a
+folder's findings at the tab's own file, a JSON's under `PROJECT:PASS`
+(`shader.json:Buffer A:12:5`), the pass a logical location in SARIF."""
 
 from __future__ import annotations
 
@@ -110,10 +111,11 @@ def project_tabs(project: Project, options: Options) -> list[tuple[str, Tab, str
     its tab (the Common tab in front, its channels' types) and its code; the Common tab first,
     alone, as ShaderToy compiles it."""
     tabs: list[tuple[str, Tab, str]] = []
-    common_name = f"{project.origin}:Common"
+    # a folder's tab is reported at its own file; a JSON's pass as PROJECT:PASS
+    common_name = project.common_file or f"{project.origin}:Common"
     if project.common:
         tabs.append((common_name, Tab(channels=options.channels, is_common=True), project.common))
     for item in project.passes:
         tab = Tab(common=project.common, common_file=common_name, channels=item.channel_kinds())
-        tabs.append((f"{project.origin}:{item.name}", tab, item.code))
+        tabs.append((item.file or f"{project.origin}:{item.name}", tab, item.code))
     return tabs

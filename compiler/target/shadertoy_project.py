@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import json
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -60,6 +60,7 @@ class Pass:
     code: str
     inputs: tuple[ChannelInput, ...] = ()
     buffer: str = ""  # the buffer it draws into ("" for the Image)
+    file: str = ""  # the tab's own file (a folder's), where it has one
 
     def channel_kinds(self) -> tuple[str, ...]:
         """The sampler kind of each channel ("2d", "cube", "3d"), 2D where nothing is bound."""
@@ -74,6 +75,7 @@ class Project:
     origin: str  # the file or folder it was read from, for messages
     passes: tuple[Pass, ...]  # the buffers in ShaderToy's order, then the Image
     common: str = ""
+    common_file: str = ""  # the Common tab's own file (a folder's), where it has one
 
     def source(self, item: Pass) -> str:
         """The complete fragment shader of a pass: ShaderToy's prelude with its channels' types,
@@ -315,7 +317,7 @@ def _read_folder(folder: Path, pictures: bool = True) -> Project:
             _folder_input(k, v, f"{where} {k}", folder, pictures) for k, v in table.items()
         )
         buffer = name[-1] if name.startswith("Buffer") else ""
-        found[name] = Pass(name, code, _one_per_channel(inputs, where), buffer)
+        found[name] = Pass(name, code, _one_per_channel(inputs, where), buffer, str(tab))
     if tables:
         unknown = ", ".join(sorted(tables))
         raise InputError(
@@ -331,7 +333,8 @@ def _read_folder(folder: Path, pictures: bool = True) -> Project:
             f"{folder}: no tab here; a project folder holds image.glsl, and buffer_a.glsl ... "
             "buffer_d.glsl and common.glsl as it needs"
         )
-    return _ordered(found, common, str(folder))
+    project = _ordered(found, common, str(folder))
+    return replace(project, common_file=str(common_file) if common else "")
 
 
 def _folder_input(

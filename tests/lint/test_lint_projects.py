@@ -59,3 +59,23 @@ def test_a_cubemap_channel_is_typed_as_one(tmp_path: Path) -> None:
 def test_fix_is_refused_on_a_project() -> None:
     done = subprocess.run([*GLINT, "lint", "--fix", str(PROJECT)], capture_output=True, text=True)
     assert done.returncode == 2 and "--fix rewrites files" in done.stderr
+
+
+def test_sarif_names_the_pass_and_a_folder_its_tab_file(tmp_path: Path) -> None:
+    """In SARIF a JSON pass's finding is at the JSON file with the pass as a logical location;
+    a folder's tab is reported at its own file, whose lines they are."""
+    data = json.loads((PROJECT / "shader.json").read_text())
+    buffer = data["Shader"]["renderpass"][1]
+    buffer["code"] = buffer["code"].replace("* 0.95;", "* 0.95 + wobble;")
+    (tmp_path / "broken.json").write_text(json.dumps(data))
+    command = [*GLINT, "lint", "--no-cache", "--format", "sarif", str(tmp_path / "broken.json")]
+    log = json.loads(subprocess.run(command, capture_output=True, text=True).stdout)
+    location = log["runs"][0]["results"][0]["locations"][0]
+    assert location["physicalLocation"]["artifactLocation"]["uri"] == str(tmp_path / "broken.json")
+    assert location["logicalLocations"][0]["name"] == "Buffer A"
+    folder = tmp_path / "tabs"
+    shutil.copytree(PROJECT, folder)
+    tab = folder / "buffer_a.glsl"
+    tab.write_text(tab.read_text().replace("* 0.95;", "* 0.95 + wobble;"))
+    done = _lint(folder)
+    assert done.returncode == 1 and f"{tab}:5:" in done.stdout
