@@ -27,6 +27,7 @@ from glint.compiler.target import shadertoy
 from glint.compiler.target.cross import LANGS
 from glint.compiler.target.mesh import MESH_TARGETS
 from glint.compiler.target.shadertoy import TARGETS, channel_binding
+from glint.compiler.target.sourcemap import with_includes
 
 if TYPE_CHECKING:
     from glint.compiler.api import Shader
@@ -607,7 +608,7 @@ def cmd_validate(args: argparse.Namespace) -> int:
     from glint.compiler.target.glslang import validate
 
     _refuse_converted(args.file, "validate")
-    source = read_text_file(args.file)
+    source = with_includes(read_text_file(args.file), args.file)
     tab = _validate_tab(args)
     diagnostics = validate(source, args.file, args.target, tab)
     for diagnostic in diagnostics:

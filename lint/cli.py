@@ -10,10 +10,12 @@ import argparse
 import gc
 import json
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError, printable
 from glint.compiler.files import is_temporary, write_atomic
+from glint.compiler.glsl.includes import Expanded, expand_includes, has_includes
 from glint.compiler.glsl.parser import prepare_parser
 from glint.compiler.target.shadertoy import TARGETS, Tab, bind_channels, channel_binding
 
@@ -217,14 +219,21 @@ def cmd_lint(args: argparse.Namespace) -> int:
         for name, tab, text in project_tabs(project, options):
             planned.append((name, tab))
             texts[name] = text.encode("utf-8")
+    expanded = _expand_includes([file for file, _ in planned], texts, args.fix)
     files = [file for file, _ in planned]
     results = _lint_files(files, [tab for _, tab in planned], options, args, texts)
+    results = [
+        _mapped_back(result, expanded.get(file))
+        for file, result in zip(files, results, strict=True)
+    ]
     findings: list[Finding] = []
     sources: dict[str, str] = {}
     fixed = 0
     for file, result in zip(files, results, strict=True):
         findings += result.findings
         sources[result.file] = result.text
+        if file in expanded:  # the included files' own text, for the findings there
+            sources.update(expanded[file].sources)
         for note in result.notes:
             print(f"glint: {printable(note)}", file=sys.stderr)
         if result.fixed:
@@ -245,6 +254,42 @@ def cmd_lint(args: argparse.Namespace) -> int:
     if any(result.failed for result in results):
         return 2  # glint failed on a file (its note says which): the report is not whole
     return 1 if findings else 0
+
+
+def _expand_includes(files: list[str], texts: dict[str, bytes], fix: bool) -> dict[str, Expanded]:
+    """The files that `#include` others, expanded (their text in `texts`): a file is linted
+    with what it includes, as a compiler sees it. --fix cannot write an expansion back."""
+    expanded: dict[str, Expanded] = {}
+    for file in files:
+        if file == "-" or file in texts:
+            continue
+        text, problem = decode(read_source(file), file)
+        if problem or not has_includes(text):
+            continue
+        if fix:
+            raise UsageError(
+                f"{printable(file)}: --fix rewrites a file, and this one includes others: lint "
+                "it without --fix, or fix the included files on their own"
+            )
+        expanded[file] = expand_includes(text, file)
+        texts[file] = expanded[file].text.encode("utf-8", "surrogateescape")
+    return expanded
+
+
+def _mapped_back(result: LintResult, expanded: Expanded | None) -> LintResult:
+    """A result on an expanded file with each finding at the file and line it came from."""
+    if expanded is None:
+        return result
+
+    def moved(finding: Finding) -> Finding:
+        file, line = expanded.origin(finding.line)
+        end_file, end_line = expanded.origin(finding.end_line)
+        end = end_line if end_file == file else line
+        return replace(finding, file=file, line=line, end_line=max(end, line), fix=None)
+
+    # the file's own text (what its findings' lines count in), not the expansion
+    own = expanded.sources.get(result.file, result.text)
+    return replace(result, findings=[moved(f) for f in result.findings], text=own)
 
 
 def _lint_files(

@@ -168,13 +168,13 @@ MAX_FRAMES = 3600
 
 def _project(shader: object) -> Project | None:
     """A ShaderToy project to draw: a Project, a `.json` file or a folder; None otherwise."""
-    from glint.compiler.target.shadertoy_project import Project, read_project
+    from glint.compiler.target.shadertoy_project import TAB_FILES, Project, read_project
 
     if isinstance(shader, Project):
         return shader
     if isinstance(shader, str | os.PathLike) and not is_source(shader):
         path = Path(_args.path("shader", shader))
-        if path.suffix == ".json" or path.is_dir():
+        if path.suffix == ".json" or (path.is_dir() and (path / TAB_FILES["Image"]).is_file()):
             return read_project(path)
     return None
 
@@ -244,7 +244,9 @@ def _source(shader: object, channels: Mapping[int, object] | None) -> tuple[str,
     if isinstance(shader, str | os.PathLike):
         path = _args.path("shader", shader)
         if not path.endswith(".toml"):
-            return read_text_file(path), None
+            from glint.compiler.target.sourcemap import with_includes
+
+            return with_includes(read_text_file(path), path), None
         shader = compose(path)
     from glint.compiler.scene.model import Scene
 

@@ -24,7 +24,8 @@ import numpy as np
 from glint.compiler.errors import EnvironmentProblem, InputError, UsageError
 from glint.compiler.render import gl, limits
 from glint.compiler.target.shadertoy_project import ChannelInput, Project
-from glint.compiler.target.sourcemap import split_lines
+from glint.compiler.target.sourcemap import MARKER as SOURCE_MARKER
+from glint.compiler.target.sourcemap import build_line_map, split_lines
 
 DEFAULT_TIMEOUT_S = 60.0
 DEFAULT_DATE = (2026.0, 0.0, 1.0, 0.0)  # ShaderToy's iDate: year, month from 0, day, seconds
@@ -134,14 +135,21 @@ def _outcome(output_dir: str, stderr: str) -> dict[str, object]:
 def driver_log(log: str, source: str, version: str) -> str:
     """Mesa's compile log with its line numbers moved from the wrapped shader to the user's code.
 
-    Mesa writes `0:LINE(COLUMN): error: ...`; this becomes `LINE:COLUMN: error: ...`.
+    Mesa writes `0:LINE(COLUMN): error: ...`; this becomes `LINE:COLUMN: error: ...`, or
+    `FILE:LINE:COLUMN: error: ...` where a source marker names the line's own file.
     """
     _, prelude_lines = gl.wrap(source, version)
     user_lines = len(split_lines(source))
+    # source markers (a composed shader's snippets, an included file) name the line's own file
+    marked = any(SOURCE_MARKER.match(text) for text in source.split("\n"))
+    origins = build_line_map(source, "") if marked else []
 
     def relocate(match: re.Match[str]) -> str:
         line = int(match.group(1)) - prelude_lines
         if 1 <= line <= user_lines:
+            origin = origins[line - 1] if origins else None
+            if origin is not None and origin.file:
+                return f"{origin.file}:{origin.line}:{match.group(2)}:"
             return f"{line}:{match.group(2)}:"
         return "(in the main that ShaderToy appends, which calls mainImage):"
 

@@ -180,15 +180,3 @@ def comment_text(text: str) -> str:
         else:
             out.append(char)
     return "".join(out).replace("*/", "*\\/").replace("/*", "/\\*")
-
-
-def marker_path(path: str) -> str:
-    """A file path as a `// source: PATH:LINE` marker holds it: one word on one line, each
-    whitespace or control character percent-encoded (a space as %20)."""
-    return "".join(
-        char if char.isprintable() and not char.isspace() else _percent(char) for char in path
-    )
-
-
-def _percent(char: str) -> str:
-    return "".join(f"%{byte:02X}" for byte in char.encode("utf-8", "surrogatepass"))

@@ -11,6 +11,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from glint.compiler.glsl.includes import expand_includes, has_includes
+
 MARKER = re.compile(r"^// source: (\S+):(\d+)\s*$")
 GENERATED = "<generated>"
 
@@ -55,3 +57,32 @@ def build_line_map(text: str, own_name: str) -> list[Origin]:
             origins.append(Origin(*current))
             current = (current[0], current[1] + 1)
     return origins
+
+
+def marker_path(path: str) -> str:
+    """A file path as a `// source: PATH:LINE` marker holds it: one word on one line, each
+    whitespace or control character percent-encoded (a space as %20)."""
+    return "".join(
+        char if char.isprintable() and not char.isspace() else _percent(char) for char in path
+    )
+
+
+def _percent(char: str) -> str:
+    return "".join(f"%{byte:02X}" for byte in char.encode("utf-8", "surrogatepass"))
+
+
+def with_includes(text: str, name: str) -> str:
+    """The file's text with its `#include`s in place (glsl/includes.py) and a source marker
+    wherever it moves to another file or place, so that validate and render report an
+    included file's own line; the text as it is where it includes nothing."""
+    if not has_includes(text):
+        return text
+    expanded = expand_includes(text, name)
+    out: list[str] = []
+    expected = (expanded.origins[0][0], 1) if expanded.origins else None
+    for line, (file, number) in zip(expanded.text.split("\n"), expanded.origins, strict=True):
+        if (file, number) != expected:
+            out.append(source_marker(marker_path(file), number))
+        out.append(line)
+        expected = (file, number + 1)
+    return "\n".join(out)

@@ -30,8 +30,8 @@ from glint.compiler.compose.units import Unit
 from glint.compiler.errors import InputError
 from glint.compiler.glsl import FunctionDef, ModuleSymbols, analyze, reachable
 from glint.compiler.scene.model import Geometry
-from glint.compiler.scene.values import marker_path
 from glint.compiler.target.shadertoy import UNIFORM_NAMES
+from glint.compiler.target.sourcemap import marker_path
 
 DISTANCE = "sceneDistance"
 MATERIAL = "sceneMaterial"
