@@ -238,9 +238,17 @@ def render_project(
     mouse: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
     timeout: float = DEFAULT_TIMEOUT_S,
 ) -> RenderResult:
-    """Draw a ShaderToy project (passes/passes.py): `frames` frames from iTime `time`, 1/60 s
+    """Draw a ShaderToy project (render/passes.py): `frames` frames from iTime `time`, 1/60 s
     apart, and return the Image of the last one."""
     limits.check_request(width, height, time, frames - 1, mouse, timeout)
+    unbound = project.unbound_reads()
+    if unbound:
+        name, channel = unbound[0]
+        raise InputError(
+            f"{project.origin}: {name} reads iChannel{channel}, which nothing is bound to (it "
+            "would sample black); bind it (an input of the pass in the JSON, or a key of its "
+            "table in channels.toml)"
+        )
     with tempfile.TemporaryDirectory(prefix="glint-project-") as output_dir:
         passes = []
         for index, item in enumerate(project.passes):

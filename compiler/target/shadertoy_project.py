@@ -14,6 +14,7 @@ previous frame's for itself and the buffers after it.
 from __future__ import annotations
 
 import json
+import re
 import tomllib
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -77,11 +78,30 @@ class Project:
     common: str = ""
     common_file: str = ""  # the Common tab's own file (a folder's), where it has one
 
+    def unbound_reads(self) -> list[tuple[str, int]]:
+        """(pass, channel) for each channel a pass's code (or the Common tab it gets) reads
+        with nothing bound to it: drawn, it would sample black."""
+        common = _CHANNEL_READ.findall(_without_comments(self.common))
+        found = []
+        for item in self.passes:
+            read = {int(n) for n in [*common, *_CHANNEL_READ.findall(_without_comments(item.code))]}
+            bound = {entry.channel for entry in item.inputs}
+            found += [(item.name, channel) for channel in sorted(read - bound)]
+        return found
+
     def source(self, item: Pass) -> str:
         """The complete fragment shader of a pass: ShaderToy's prelude with its channels' types,
         the Common tab, the pass's code and a main that calls mainImage."""
         tab = Tab(common=self.common, common_file=self.origin, channels=item.channel_kinds())
         return wrap_tab("shadertoy", item.code, tab)[0]
+
+
+_CHANNEL_READ = re.compile(r"\biChannel([0-3])\b")
+_COMMENT = re.compile(r"//[^\n]*|/\*.*?(?:\*/|\Z)", re.S)
+
+
+def _without_comments(code: str) -> str:
+    return _COMMENT.sub(" ", code)
 
 
 def read_project(path: str | Path, pictures: bool = True) -> Project:

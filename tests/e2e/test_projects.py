@@ -161,3 +161,19 @@ def test_a_cubemap_shows_each_face_the_right_way_up(tmp_path: Path) -> None:
     (tmp_path / "sky_3.png").unlink()
     with pytest.raises(InputError, match=r"missing: sky_3.png"):
         read_project(tmp_path)
+
+
+def test_a_pass_that_reads_an_unbound_channel_is_refused(tmp_path: Path) -> None:
+    """The Image reads iChannel2 with nothing bound there: refused, not drawn black; a channel
+    named only in a comment or as iChannelResolution is not a read."""
+    import shutil
+
+    shutil.copytree(PROJECT, tmp_path / "tabs")
+    image = tmp_path / "tabs" / "image.glsl"
+    code = image.read_text()
+    image.write_text(code.replace("vec3 trail =", "// iChannel3 is free\n    vec3 trail ="))
+    render_project(read_project(tmp_path / "tabs"), 16, 9)  # a comment is not a read
+    image.write_text(code.replace("vec3 trail = texture(iChannel0, uv).rgb;",
+                                  "vec3 trail = texture(iChannel2, uv).rgb;"))  # fmt: skip
+    with pytest.raises(InputError, match="Image reads iChannel2, which nothing is bound to"):
+        render_project(read_project(tmp_path / "tabs"), 16, 9)
