@@ -113,7 +113,11 @@ def build_parser() -> argparse.ArgumentParser:
     compose.set_defaults(handler=cmd_compose)
 
     validate = sub.add_parser("validate", help="check a shader with glslangValidator")
-    validate.add_argument("file", help="ShaderToy Image-tab shader (.glsl)")
+    validate.add_argument(
+        "file",
+        help="ShaderToy Image-tab shader (.glsl), or a ShaderToy project (its JSON, or a folder "
+        "of tabs): every pass with its Common tab and channels",
+    )
     _add_target(validate, TARGETS)
     validate.add_argument(
         "--common",
@@ -608,6 +612,9 @@ def cmd_validate(args: argparse.Namespace) -> int:
     from glint.compiler.target.glslang import validate
 
     _refuse_converted(args.file, "validate")
+    where = Path(args.file)
+    if where.suffix == ".json" or (where.is_dir() and (where / "image.glsl").is_file()):
+        return _validate_project(where, args.target)
     source = with_includes(read_text_file(args.file), args.file)
     tab = _validate_tab(args)
     diagnostics = validate(source, args.file, args.target, tab)
@@ -619,6 +626,32 @@ def cmd_validate(args: argparse.Namespace) -> int:
         return 1
     what = "Common tab" if tab.is_common else "shader"
     print(f"{args.file}: valid {args.target} {what} (glslangValidator)")
+    return 0
+
+
+def _validate_project(path: Path, target: str) -> int:
+    """Every pass of a ShaderToy project compiled as ShaderToy compiles it: the Common tab in
+    front, its channels typed by its inputs; errors under PROJECT:PASS:LINE (a folder's at the
+    tab's own file)."""
+    from glint.compiler.target.glslang import validate
+    from glint.compiler.target.shadertoy_project import read_project
+
+    project = read_project(path, pictures=False)
+    errors = 0
+    tabs = [(project.common_file or f"{project.origin}:Common", project.common,
+             shadertoy.Tab(is_common=True))] if project.common else []  # fmt: skip
+    for item in project.passes:
+        tab = shadertoy.Tab(common=project.common, common_file=project.common_file,
+                            channels=item.channel_kinds())  # fmt: skip
+        tabs.append((item.file or f"{project.origin}:{item.name}", item.code, tab))
+    for name, code, tab in tabs:
+        for diagnostic in validate(code, name, target, tab):
+            print(diagnostic)
+            errors += diagnostic.severity == "error"
+    if errors:
+        print(f"{project.origin}: {errors} error{'s' if errors > 1 else ''}", file=sys.stderr)
+        return 1
+    print(f"{project.origin}: valid {target} project, {len(tabs)} tabs (glslangValidator)")
     return 0
 
 

@@ -125,3 +125,20 @@ def test_not_shadertoy_json_and_bad_folders(tmp_path: Path) -> None:
         handle.write('\n[buffer_c]\n0 = "buffer_a"\n')
     with pytest.raises(InputError, match=r"\[buffer_c\] is not a pass of the folder"):
         read_project(tmp_path / "tabs")
+
+
+def test_validate_compiles_every_pass_of_a_project(tmp_path: Path) -> None:
+    """`glint validate PROJECT`: each pass with the Common tab and its channels; an error under
+    PROJECT:PASS:LINE, exit 1."""
+    import subprocess
+    import sys
+
+    glint = [sys.executable, "-m", "glint.compiler.cli", "validate"]
+    done = subprocess.run([*glint, str(PROJECT / "shader.json")], capture_output=True, text=True)
+    assert done.returncode == 0 and "valid shadertoy project, 3 tabs" in done.stdout
+    data = json.loads((PROJECT / "shader.json").read_text())
+    image = data["Shader"]["renderpass"][2]
+    image["code"] = image["code"].replace("vec3 ground", "vec3 ground = nowhere;\n    vec3 g2")
+    (tmp_path / "bad.json").write_text(json.dumps(data))
+    done = subprocess.run([*glint, str(tmp_path / "bad.json")], capture_output=True, text=True)
+    assert done.returncode == 1 and f"{tmp_path / 'bad.json'}:Image:4:" in done.stdout
