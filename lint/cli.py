@@ -15,7 +15,7 @@ from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError, printable
 from glint.compiler.files import is_temporary, write_atomic
-from glint.compiler.glsl.includes import Expanded, expand_includes, has_includes
+from glint.compiler.glsl.includes import Expanded, IncludeError, expand_includes, has_includes
 from glint.compiler.glsl.parser import prepare_parser
 from glint.compiler.target.shadertoy import TARGETS, Tab, bind_channels, channel_binding
 
@@ -219,11 +219,11 @@ def cmd_lint(args: argparse.Namespace) -> int:
         for name, tab, text in project_tabs(project, options):
             planned.append((name, tab))
             texts[name] = text.encode("utf-8")
-    expanded = _expand_includes([file for file, _ in planned], texts, args.fix)
+    expanded, unfollowed = _expand_includes([file for file, _ in planned], texts, args.fix)
     files = [file for file, _ in planned]
     results = _lint_files(files, [tab for _, tab in planned], options, args, texts)
     results = [
-        _mapped_back(result, expanded.get(file))
+        _with_include_error(_mapped_back(result, expanded.get(file)), unfollowed.get(file))
         for file, result in zip(files, results, strict=True)
     ]
     findings: list[Finding] = []
@@ -256,10 +256,15 @@ def cmd_lint(args: argparse.Namespace) -> int:
     return 1 if findings else 0
 
 
-def _expand_includes(files: list[str], texts: dict[str, bytes], fix: bool) -> dict[str, Expanded]:
+def _expand_includes(
+    files: list[str], texts: dict[str, bytes], fix: bool
+) -> tuple[dict[str, Expanded], dict[str, IncludeError]]:
     """The files that `#include` others, expanded (their text in `texts`): a file is linted
-    with what it includes, as a compiler sees it. --fix cannot write an expansion back."""
+    with what it includes, as a compiler sees it. --fix cannot write an expansion back. An
+    include that cannot be followed (a missing file, a cycle) is that file's finding: the
+    file is linted as it stands and the others go on."""
     expanded: dict[str, Expanded] = {}
+    unfollowed: dict[str, IncludeError] = {}
     for file in files:
         if file == "-" or file in texts:
             continue
@@ -271,9 +276,24 @@ def _expand_includes(files: list[str], texts: dict[str, bytes], fix: bool) -> di
                 f"{printable(file)}: --fix rewrites a file, and this one includes others: lint "
                 "it without --fix, or fix the included files on their own"
             )
-        expanded[file] = expand_includes(text, file)
+        try:
+            expanded[file] = expand_includes(text, file)
+        except IncludeError as problem:
+            unfollowed[file] = problem
+            continue
         texts[file] = expanded[file].text.encode("utf-8", "surrogateescape")
-    return expanded
+    return expanded, unfollowed
+
+
+def _with_include_error(result: LintResult, problem: IncludeError | None) -> LintResult:
+    """A file whose include could not be followed: that problem as its finding, in place of
+    the preprocessor's word that it does not know #include."""
+    if problem is None:
+        return result
+    finding = Finding(problem.file, problem.line, 1, problem.line, 1, "C004", "error",
+                      problem.reason)  # fmt: skip
+    kept = [f for f in result.findings if not (f.code == "C004" and "#include" in f.message)]
+    return replace(result, findings=[finding, *kept])
 
 
 def _mapped_back(result: LintResult, expanded: Expanded | None) -> LintResult:

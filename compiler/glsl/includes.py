@@ -25,6 +25,14 @@ MAX_DEPTH = 64
 INCLUDE_FILE_LIMIT = 4 * MiB
 
 
+class IncludeError(InputError):
+    """An #include that cannot be followed: where it stands, and why."""
+
+    def __init__(self, file: str, line: int, reason: str) -> None:
+        self.file, self.line, self.reason = file, line, reason
+        super().__init__(f"{file}:{line}: {reason}")
+
+
 @dataclass(frozen=True)
 class Expanded:
     text: str
@@ -57,22 +65,30 @@ def expand_includes(text: str, name: str) -> Expanded:
                 origins.append((file, number))
                 continue
             target = (chain[-1].parent / (match[1] or match[2])).resolve()
-            where = f"{file}:{number}: #include {match[1] or match[2]!r}"
+            directive = f"#include {match[1] or match[2]!r}"
             if target in chain:
                 cycle = " -> ".join(p.name for p in [*chain[chain.index(target) :], target])
-                raise InputError(f"{where}: a cycle ({cycle}); include each file once")
+                raise IncludeError(
+                    file, number, f"{directive}: a cycle ({cycle}); include each file once"
+                )
             if len(chain) >= MAX_DEPTH:
-                raise InputError(f"{where}: includes nested over {MAX_DEPTH} deep")
+                raise IncludeError(
+                    file, number, f"{directive}: includes nested over {MAX_DEPTH} deep"
+                )
             lines.append("")  # the directive's own line, kept so that lines stay in step
             origins.append((file, number))
             if target in once:
                 continue
             if not target.is_file():
-                raise InputError(
-                    f"{where}: no such file (looked for {target}; the path is relative to "
-                    f"{Path(file).name})"
-                )
-            included = read_user_text(target, INCLUDE_FILE_LIMIT, "included GLSL file")
+                raise IncludeError(
+                    file, number,
+                    f"{directive}: no such file (looked for {target}; the path is relative to "
+                    f"{Path(file).name})",
+                )  # fmt: skip
+            try:
+                included = read_user_text(target, INCLUDE_FILE_LIMIT, "included GLSL file")
+            except InputError as exc:
+                raise IncludeError(file, number, f"{directive}: {exc.message}") from None
             shown = _shown(target)
             sources[shown] = included
             expand(included, shown, [*chain, target])
