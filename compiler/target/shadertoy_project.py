@@ -428,6 +428,9 @@ def _input_json(entry: ChannelInput) -> dict[str, Any]:
     if entry.kind == "buffer":
         return {"id": BUFFER_OUTPUTS[entry.buffer], "type": "buffer", "channel": entry.channel,
                 "sampler": sampler, "published": 1}  # fmt: skip
-    assert entry.file is not None
-    return {"id": entry.file.stem, "src": entry.file.name, "type": "texture",
+    if entry.kind not in ("texture", "cubemap") or entry.file is None:
+        return {"id": entry.kind, "type": "keyboard" if entry.kind == "silent" else entry.kind,
+                "channel": entry.channel, "sampler": sampler, "published": 1}  # fmt: skip
+    # a picture by its file's name (a cubemap by its first face's: the others follow it)
+    return {"id": entry.file.stem, "src": entry.file.name, "type": entry.kind,
             "channel": entry.channel, "sampler": sampler, "published": 1}  # fmt: skip

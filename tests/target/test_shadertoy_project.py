@@ -142,3 +142,17 @@ def test_validate_compiles_every_pass_of_a_project(tmp_path: Path) -> None:
     (tmp_path / "bad.json").write_text(json.dumps(data))
     done = subprocess.run([*glint, str(tmp_path / "bad.json")], capture_output=True, text=True)
     assert done.returncode == 1 and f"{tmp_path / 'bad.json'}:Image:4:" in done.stdout
+
+
+def test_a_project_written_as_json_reads_back_the_same(tmp_path: Path) -> None:
+    """project_json (what compose --format shadertoy-json writes) for a project with a Common
+    tab, a buffer feeding itself and a picture: read back, the same passes and inputs."""
+    from glint.compiler.target.shadertoy_project import project_json
+
+    project = read_project(PROJECT)
+    shutil.copy(PROJECT / "checker.png", tmp_path)
+    (tmp_path / "written.json").write_text(json.dumps(project_json(project, "trail")))
+    back = read_project(tmp_path / "written.json")
+    assert _summary(tmp_path / "written.json") == _summary(PROJECT)
+    assert back.common == project.common
+    assert [p.code for p in back.passes] == [p.code for p in project.passes]
