@@ -27,6 +27,7 @@ from glint.compiler.target import shadertoy
 from glint.compiler.target.cross import LANGS
 from glint.compiler.target.mesh import MESH_TARGETS
 from glint.compiler.target.shadertoy import TARGETS, channel_binding
+from glint.compiler.target.shadertoy_project import is_project
 from glint.compiler.target.sourcemap import with_includes
 
 if TYPE_CHECKING:
@@ -494,11 +495,8 @@ def _write_json(shader: Shader, split: bool, output: str | None) -> int:
             f"--format shadertoy-json writes ShaderToy's tabs: drop --target {shader.target}"
         )
     scene = shader.scene
-    files = scene.channel_files()
-    inputs = tuple(
-        ChannelInput(unit, "texture", file=files[unit]) for unit in sorted(scene.bound_channels())
-        if unit in files
-    )  # fmt: skip
+    pictures = sorted(scene.picture_files().items())
+    inputs = tuple(ChannelInput(unit, "texture", file=file) for unit, file in pictures)
     if split:
         tabs = shader.split_common()
         project = Project("<compose>", (Pass("Image", tabs.image, inputs),), tabs.common)
@@ -509,13 +507,13 @@ def _write_json(shader: Shader, split: bool, output: str | None) -> int:
         sys.stdout.write(text)
         return 0
     write_atomic(Path(output), text.encode("utf-8"))
-    pictures = (
+    beside = (
         f", its pictures ({', '.join(i.file.name for i in inputs if i.file)}) to go beside it"
         if inputs
         else ""
     )
     print(
-        f"wrote {output}: ShaderToy JSON, {1 + split} pass{'es' * split}{pictures}", file=sys.stderr
+        f"wrote {output}: ShaderToy JSON, {1 + split} pass{'es' * split}{beside}", file=sys.stderr
     )
     return 0
 
@@ -612,9 +610,8 @@ def cmd_validate(args: argparse.Namespace) -> int:
     from glint.compiler.target.glslang import validate
 
     _refuse_converted(args.file, "validate")
-    where = Path(args.file)
-    if where.suffix == ".json" or (where.is_dir() and (where / "image.glsl").is_file()):
-        return _validate_project(where, args.target)
+    if is_project(args.file):
+        return _validate_project(Path(args.file), args.target)
     source = with_includes(read_text_file(args.file), args.file)
     tab = _validate_tab(args)
     diagnostics = validate(source, args.file, args.target, tab)

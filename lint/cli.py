@@ -259,16 +259,20 @@ def cmd_lint(args: argparse.Namespace) -> int:
 def _expand_includes(
     files: list[str], texts: dict[str, bytes], fix: bool
 ) -> tuple[dict[str, Expanded], dict[str, IncludeError]]:
-    """The files that `#include` others, expanded (their text in `texts`): a file is linted
-    with what it includes, as a compiler sees it. --fix cannot write an expansion back. An
-    include that cannot be followed (a missing file, a cycle) is that file's finding: the
-    file is linted as it stands and the others go on."""
+    """Every file's bytes into `texts`, those of the files that `#include` others expanded: a
+    file is linted with what it includes, as a compiler sees it. --fix cannot write an
+    expansion back. An include that cannot be followed (a missing file, a cycle) is that
+    file's finding: the file is linted as it stands and the others go on."""
     expanded: dict[str, Expanded] = {}
     unfollowed: dict[str, IncludeError] = {}
     for file in files:
         if file == "-" or file in texts:
             continue
-        text, problem = decode(read_source(file), file)
+        data = read_source(file)
+        texts[file] = data  # read once: linting takes it from here
+        if b"include" not in data:  # most files: no decoding for this
+            continue
+        text, problem = decode(data, file)
         if problem or not has_includes(text):
             continue
         if fix:

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from glint.compiler.errors import EnvironmentProblem, UsageError, printable
 from glint.compiler.target.shadertoy import Tab, common_sibling, is_common_file
-from glint.compiler.target.shadertoy_project import TAB_FILES, Project, read_project
+from glint.compiler.target.shadertoy_project import Project, is_project, read_project
 
 from .options import Options
 from .runner import decode
@@ -95,12 +95,8 @@ def split_projects(paths: list[str]) -> tuple[list[str], list[Project]]:
     rest: list[str] = []
     projects: list[Project] = []
     for raw in paths:
-        path = Path(raw)
-        is_project = (path.suffix == ".json" and path.is_file()) or (
-            path.is_dir() and (path / TAB_FILES["Image"]).is_file()
-        )
-        if is_project:
-            projects.append(read_project(path, pictures=False))
+        if is_project(raw):
+            projects.append(read_project(raw, pictures=False))
         else:
             rest.append(raw)
     return rest, projects

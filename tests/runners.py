@@ -159,13 +159,17 @@ def _wgpu_worker(job_path: str) -> int:
         except Exception as exc:  # a shader naga or the driver rejects: that shader fails
             (output / f"{index}.error").write_text(f"{type(exc).__name__}: {exc}")
             continue
-        # The snapshot is the canvas texture read back top row first, in its format's channel
-        # order (rgba8unorm here, bgra8unorm on some drivers).
-        pixels = np.asarray(frame)[:, :, :3]
-        if shadertoy._format.startswith("bgra"):
-            pixels = pixels[:, :, ::-1]
-        np.save(output / f"{index}.npy", pixels.astype(np.float32) / 255.0)
+        np.save(output / f"{index}.npy", _pixels(shadertoy, frame))
     return 0
+
+
+def _pixels(shadertoy: Any, frame: Any) -> np.ndarray:
+    """A snapshot as float32 RGB in [0, 1]: the canvas texture read back top row first, in its
+    format's channel order (rgba8unorm here, bgra8unorm on some drivers)."""
+    pixels = np.asarray(frame)[:, :, :3]
+    if shadertoy._format.startswith("bgra"):
+        pixels = pixels[:, :, ::-1]
+    return pixels.astype(np.float32) / 255.0
 
 
 # --- WebGL2 in Chromium ---------------------------------------------------------------------
@@ -343,20 +347,7 @@ def render_wgpu_project(
             passes.append({"code": item.code, "buffer": item.buffer, "inputs": inputs})
         job = {"common": project.common, "passes": passes, "width": width, "height": height,
                "time": time, "frames": frames, "output": folder}  # fmt: skip
-        job_path = Path(folder) / "job.json"
-        job_path.write_text(json.dumps(job))
-        try:
-            done = subprocess.run(
-                [sys.executable, __file__, "wgpu-project", str(job_path)],
-                env=os.environ | WGPU_ENV, capture_output=True, timeout=timeout,
-            )  # fmt: skip
-        except subprocess.TimeoutExpired:
-            raise RunnerFailure(f"wgpu-shadertoy took more than {timeout:g} s") from None
-        image = Path(folder) / "image.npy"
-        if done.returncode or not image.is_file():
-            log = (done.stdout + done.stderr).decode(errors="replace")[-2000:]
-            raise RunnerFailure(f"wgpu-shadertoy failed (exit {done.returncode}):\n{log}")
-        return np.load(image)
+        return _run_child("wgpu-project", job, Path(folder), timeout)
 
 
 def render_wgpu_json(
@@ -366,20 +357,26 @@ def render_wgpu_json(
     iTime `time`: float32 H x W x 3 in [0, 1], row 0 at the top."""
     with tempfile.TemporaryDirectory(prefix="glint-wgpu-json-") as folder:
         job = {"json": str(path), "width": width, "height": height, "time": time, "output": folder}
-        job_path = Path(folder) / "job.json"
-        job_path.write_text(json.dumps(job))
-        try:
-            done = subprocess.run(
-                [sys.executable, __file__, "wgpu-json", str(job_path)],
-                env=os.environ | WGPU_ENV, capture_output=True, timeout=timeout,
-            )  # fmt: skip
-        except subprocess.TimeoutExpired:
-            raise RunnerFailure(f"wgpu-shadertoy took more than {timeout:g} s") from None
-        image = Path(folder) / "image.npy"
-        if done.returncode or not image.is_file():
-            log = (done.stdout + done.stderr).decode(errors="replace")[-2000:]
-            raise RunnerFailure(f"wgpu-shadertoy failed (exit {done.returncode}):\n{log}")
-        return np.load(image)
+        return _run_child("wgpu-json", job, Path(folder), timeout)
+
+
+def _run_child(mode: str, job: dict[str, Any], folder: Path, timeout: float) -> np.ndarray:
+    """Run this module as `mode`'s child process on `job` (written to `folder`) and read back
+    the image it saves there; RunnerFailure, with its log, where it saves none."""
+    job_path = folder / "job.json"
+    job_path.write_text(json.dumps(job))
+    try:
+        done = subprocess.run(
+            [sys.executable, __file__, mode, str(job_path)],
+            env=os.environ | WGPU_ENV, capture_output=True, timeout=timeout,
+        )  # fmt: skip
+    except subprocess.TimeoutExpired:
+        raise RunnerFailure(f"wgpu-shadertoy took more than {timeout:g} s") from None
+    image = folder / "image.npy"
+    if done.returncode or not image.is_file():
+        log = (done.stdout + done.stderr).decode(errors="replace")[-2000:]
+        raise RunnerFailure(f"wgpu-shadertoy failed (exit {done.returncode}):\n{log}")
+    return np.load(image)
 
 
 def _wgpu_json_worker(job_path: str) -> int:
@@ -393,10 +390,7 @@ def _wgpu_json_worker(job_path: str) -> int:
         time_float=job["time"], time_delta=TIME_DELTA, frame=0, framerate=60.0,
         mouse_pos=(0.0, 0.0, 0.0, 0.0), date=DATE,
     )  # fmt: skip
-    pixels = np.asarray(frame)[:, :, :3]
-    if shadertoy._format.startswith("bgra"):
-        pixels = pixels[:, :, ::-1]
-    np.save(Path(job["output"]) / "image.npy", pixels.astype(np.float32) / 255.0)
+    np.save(Path(job["output"]) / "image.npy", _pixels(shadertoy, frame))
     return 0
 
 
@@ -437,10 +431,7 @@ def _wgpu_project_worker(job_path: str) -> int:
             time_float=job["time"] + number * TIME_DELTA, time_delta=TIME_DELTA, frame=number,
             framerate=60.0, mouse_pos=(0.0, 0.0, 0.0, 0.0), date=DATE,
         )  # fmt: skip
-    pixels = np.asarray(frame)[:, :, :3]
-    if shadertoy._format.startswith("bgra"):
-        pixels = pixels[:, :, ::-1]
-    np.save(Path(job["output"]) / "image.npy", pixels.astype(np.float32) / 255.0)
+    np.save(Path(job["output"]) / "image.npy", _pixels(shadertoy, frame))
     return 0
 
 

@@ -143,9 +143,11 @@ def render(
     elif meshes is not None:
         result = draw_mesh_shader(meshes, (width, height), time, (x, y, z, w), timeout)
     else:
-        source, scene = _source(shader, channels)
-        given = {**(scene.channel_files() if scene is not None else {}), **(channels or {})}
-        pictures = _pictures(given)
+        from glint.compiler.render.images import channel_pictures
+
+        source, scene = _source(shader)
+        given = _given_pictures(channels)
+        pictures = channel_pictures(scene.bound_pictures(given) if scene is not None else given)
         result = render_full(
             source, width, height, time, frame, (x, y, z, w), timeout=timeout,
             channels=pictures, pictures="mipmap" if pictures else None,
@@ -168,39 +170,21 @@ MAX_FRAMES = 3600
 
 def _project(shader: object) -> Project | None:
     """A ShaderToy project to draw: a Project, a `.json` file or a folder; None otherwise."""
-    from glint.compiler.target.shadertoy_project import TAB_FILES, Project, read_project
+    from glint.compiler.target.shadertoy_project import Project, is_project, read_project
 
     if isinstance(shader, Project):
         return shader
     if isinstance(shader, str | os.PathLike) and not is_source(shader):
-        path = Path(_args.path("shader", shader))
-        if path.suffix == ".json" or (path.is_dir() and (path / TAB_FILES["Image"]).is_file()):
+        path = _args.path("shader", shader)
+        if is_project(path):
             return read_project(path)
     return None
 
 
-def _check_pictures(shader: Shader, channels: Mapping[int, object] | None) -> None:
-    given = set(shader.scene.channel_files()) | set(channels or {})
-    missing = sorted(shader.scene.bound_channels() - given)
-    if missing:
-        unit = missing[0]
-        material = next(
-            name for name in shader.scene.used_materials()
-            if shader.scene.materials[name].albedo_texture == unit
-        )  # fmt: skip
-        raise UsageError(
-            f"materials.{material}.albedo_texture = {unit}: nothing is bound to iChannel{unit}, "
-            f'which would sample black; give a picture ([channels] {unit} = "FILE" in the '
-            f"scene, glint render --channel {unit}=FILE, or channels={{{unit}: FILE}})"
-        )
-
-
-def _pictures(channels: object) -> list[np.ndarray | None]:
-    """The pictures of `channels` ({N: path}) as channel data, None for a channel left black."""
-    from glint.compiler.render.images import channel_pictures
-
+def _given_pictures(channels: object) -> dict[int, str]:
+    """`channels` ({N: path}) checked: each a ShaderToy channel and a path."""
     if channels is None:
-        return []
+        return {}
     if not isinstance(channels, Mapping):
         raise UsageError(f"channels: a mapping of channel number to picture file, not {channels!r}")
     files = {}
@@ -208,7 +192,7 @@ def _pictures(channels: object) -> list[np.ndarray | None]:
         if isinstance(unit, bool) or not isinstance(unit, int) or not 0 <= unit <= 3:
             raise UsageError(f"channels: {unit!r} is not a ShaderToy channel; they are 0 to 3")
         files[unit] = _args.path(f"channels[{unit}]", path)
-    return channel_pictures(files)
+    return files
 
 
 def _mesh_shader(shader: object) -> MeshShader | None:
@@ -227,17 +211,15 @@ def _mesh_shader(shader: object) -> MeshShader | None:
     return compose_mesh(scene) if scene.is_mesh else None
 
 
-def _source(shader: object, channels: Mapping[int, object] | None) -> tuple[str, Scene | None]:
-    """ShaderToy Image-tab code to draw, and its scene where it was composed from one; a
-    composed scene must have a picture on every channel its materials read (by [channels] or
-    `channels`): unbound, it would sample black, a wrong picture without a word."""
+def _source(shader: object) -> tuple[str, Scene | None]:
+    """ShaderToy Image-tab code to draw, and its scene where it was composed from one (whose
+    materials' pictures render binds: Scene.bound_pictures)."""
     if isinstance(shader, Shader):
         if shader.target != "shadertoy":
             raise UsageError(
                 f"render draws ShaderToy Image-tab code; this shader's target is "
                 f"{shader.target}: compose it with target='shadertoy'"
             )
-        _check_pictures(shader, channels)
         return shader.text, shader.scene
     if is_source(shader):
         return str(shader), None
@@ -253,7 +235,6 @@ def _source(shader: object, channels: Mapping[int, object] | None) -> tuple[str,
     if isinstance(shader, Mapping | Scene):
         shader = compose(shader)
     if isinstance(shader, Shader):
-        _check_pictures(shader, channels)
         return shader.text, shader.scene
     raise UsageError(
         "render takes a Shader, Image-tab code, the path of a shader or a scene, a dict or a "

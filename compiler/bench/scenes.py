@@ -374,8 +374,7 @@ def _measure_scene(
         )
     # The reference tier is always drawn: it is the yardstick of the others.
     measured = list(dict.fromkeys([REFERENCE_TIER, *tiers]))
-    files = scene.channel_files()
-    pictures = channel_pictures({unit: files[unit] for unit in scene.bound_channels()})
+    pictures = channel_pictures(scene.bound_pictures())
     shaders = [
         _Shader(
             tier,

@@ -62,7 +62,7 @@ def draw_project(ctx: Any, job: dict[str, Any], frame: gl.Frame) -> tuple[np.nda
                 unit = entry["channel"]
                 if entry["kind"] == "buffer":
                     texture = buffers[entry["buffer"]][latest[entry["buffer"]]][0]
-                    _sample(texture, entry, moderngl)
+                    _sample(texture, entry)
                     sizes[unit] = (width, height, 1.0)
                 else:
                     texture = pictures[(index, unit)]
@@ -99,39 +99,34 @@ def _target(ctx: Any, width: int, height: int) -> tuple[Any, Any]:
 
 
 def _picture(ctx: Any, data: np.ndarray, entry: dict[str, Any]) -> Any:
-    import moderngl
-
     rows, cols = data.shape[:2]
     texture = ctx.texture((cols, rows), 4, np.ascontiguousarray(data, np.float32), dtype="f4")
     if entry["filter"] == "mipmap":
         texture.build_mipmaps()
-    _sample(texture, entry, moderngl)
+    _sample(texture, entry)
     return texture
 
 
 def _cube(ctx: Any, faces: np.ndarray, entry: dict[str, Any]) -> Any:
     """A cube map from six faces (+x, -x, +y, -y, +z, -z), each's row 0 at t = 0."""
-    import moderngl
-
     size = faces.shape[1]
     texture = ctx.texture_cube((size, size), 4, np.ascontiguousarray(faces, np.float32), dtype="f4")
     if entry["filter"] == "mipmap":
         texture.build_mipmaps()
-        texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
-    elif entry["filter"] == "nearest":
-        texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
-    else:
-        texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+    _sample(texture, entry, wraps=False)  # a direction never leaves a cube
     return texture
 
 
-def _sample(texture: Any, entry: dict[str, Any], moderngl: Any) -> None:
+def _sample(texture: Any, entry: dict[str, Any], wraps: bool = True) -> None:
     """The input's sampler: its filter and wrap (a buffer is never mipmapped here: linear)."""
-    mipmapped = entry["filter"] == "mipmap" and entry["kind"] == "texture"
+    import moderngl
+
+    mipmapped = entry["filter"] == "mipmap" and entry["kind"] in ("texture", "cubemap")
     if entry["filter"] == "nearest":
         texture.filter = (moderngl.NEAREST, moderngl.NEAREST)
     elif mipmapped:
         texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
     else:
         texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
-    texture.repeat_x = texture.repeat_y = entry["wrap"] == "repeat"
+    if wraps:
+        texture.repeat_x = texture.repeat_y = entry["wrap"] == "repeat"

@@ -16,7 +16,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, Field, PrivateAttr, ValidationError, model_validator
 
-from glint.compiler.errors import InputError
+from glint.compiler.errors import InputError, UsageError
 from glint.compiler.files import MiB, read_user_text
 from glint.compiler.scene.shapes import SHAPE_TAGS, Mesh, Shape, Strict, exact, parts
 from glint.compiler.scene.values import (
@@ -653,6 +653,33 @@ class Scene(Strict):
     def channel_files(self) -> dict[int, Path]:
         """[channels] as paths, relative to the scene file's folder."""
         return {int(unit): self._base / name for unit, name in self.channels.items()}
+
+    def picture_files(self, given: Mapping[int, str | Path] | None = None) -> dict[int, Path]:
+        """The picture of each channel a material reads, by [channels], replaced or joined by
+        `given` (glint render --channel)."""
+        read = self.bound_channels()
+        files = {unit: path for unit, path in self.channel_files().items() if unit in read}
+        return files | {unit: Path(path) for unit, path in (given or {}).items()}
+
+    def bound_pictures(self, given: Mapping[int, str | Path] | None = None) -> dict[int, Path]:
+        """picture_files, where every channel a material reads has one: a channel with none
+        would sample black, a wrong picture without a word, and is a UsageError naming the
+        material that reads it and how to bind it."""
+        files = self.picture_files(given)
+        missing = sorted(self.bound_channels() - set(files))
+        if missing:
+            unit = missing[0]
+            material = next(
+                name for name in self.used_materials()
+                if self.materials[name].albedo_texture == unit
+            )  # fmt: skip
+            raise UsageError(
+                f"materials.{material}.albedo_texture = {unit}: nothing is bound to "
+                f"iChannel{unit}, which would sample black; give a picture ([channels] {unit} = "
+                f'"FILE" in the scene, glint render --channel {unit}=FILE, or '
+                f"channels={{{unit}: FILE}})"
+            )
+        return files
 
     @property
     def is_mesh(self) -> bool:

@@ -22,9 +22,7 @@ def live_shader(shader: glint.Shader) -> tuple[str, dict[PurePosixPath, bytes]]:
     scene = shader.scene
     files: dict[PurePosixPath, bytes] = {}
     channels: dict[str, str] = {}
-    for unit, path in sorted(scene.channel_files().items()):
-        if unit not in scene.bound_channels():
-            continue
+    for unit, path in sorted(scene.picture_files().items()):
         data = path.read_bytes()
         name = PICTURES_DIR / f"{hashlib.sha256(data).hexdigest()[:16]}{path.suffix.lower()}"
         files[name] = data

@@ -104,6 +104,13 @@ def _without_comments(code: str) -> str:
     return _COMMENT.sub(" ", code)
 
 
+def is_project(path: str | Path) -> bool:
+    """Whether a path given to a command is a ShaderToy project: a `.json` file, or a folder
+    holding the Image tab of a folder of tabs."""
+    path = Path(path)
+    return (path.suffix == ".json" and path.is_file()) or (path / TAB_FILES["Image"]).is_file()
+
+
 def read_project(path: str | Path, pictures: bool = True) -> Project:
     """A project from a ShaderToy JSON file or a folder of tabs. `pictures`: find each texture's
     file (a render needs them; lint, which needs only the channels' types, does not)."""

@@ -71,10 +71,9 @@ def pictures() -> dict[str, Pictures]:
     out = {}
     for scene_name in SCENES:
         scene = load_scene(folder / f"{scene_name}.toml")
-        files = scene.channel_files()
         out[scene_name] = {
-            unit: np.asarray(Image.open(files[unit]).convert("RGBA"))
-            for unit in sorted(scene.bound_channels())
+            unit: np.asarray(Image.open(path).convert("RGBA"))
+            for unit, path in sorted(scene.bound_pictures().items())
         }
     return out
 

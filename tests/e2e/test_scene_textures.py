@@ -71,17 +71,23 @@ def test_an_unbound_picture_is_refused_not_drawn_black(tmp_path: Path) -> None:
         glint.render(glint.compose(scene), size=SIZE, channels={1: tmp_path / "none.png"})
 
 
-def test_render_binds_a_picture_from_the_command_line(tmp_path: Path) -> None:
-    """The command a user types: the scene file, --channel 0=FILE; without it, exit 2 and a
-    message that says what to give."""
-    picture = _picture(tmp_path / "stone.png", [(120, 110, 100), (90, 80, 70)])
-    scene = tmp_path / "floor.toml"
+def _floor_scene(folder: Path, extra: str = "") -> Path:
+    """A scene file: a floor whose albedo is the picture on channel 0, lit from above."""
+    scene = folder / "floor.toml"
     scene.write_text(
         '[camera]\ntype = "lookat"\nposition = [0, 3, 3]\n'
         '[[objects]]\nshape = "plane"\nmaterial = "floor"\n'
         "[materials.floor]\nalbedo = [1, 1, 1]\nalbedo_texture = 0\n"
-        '[[lights]]\ntype = "directional"\ndirection = [0, 1, 0]\n'
+        '[[lights]]\ntype = "directional"\ndirection = [0, 1, 0]\n' + extra
     )
+    return scene
+
+
+def test_render_binds_a_picture_from_the_command_line(tmp_path: Path) -> None:
+    """The command a user types: the scene file, --channel 0=FILE; without it, exit 2 and a
+    message that says what to give."""
+    picture = _picture(tmp_path / "stone.png", [(120, 110, 100), (90, 80, 70)])
+    scene = _floor_scene(tmp_path)
     out = tmp_path / "floor.png"
     glint_cli = [sys.executable, "-m", "glint.compiler.cli"]
     bound = subprocess.run(
@@ -122,14 +128,7 @@ def test_a_scene_names_its_pictures_and_render_binds_them(tmp_path: Path) -> Non
     picture equals what --channel gives), and the composed shader names the file to bind."""
     _picture(tmp_path / "stone.png", [(120, 110, 100), (60, 50, 40)])
     _picture(tmp_path / "other.png", [(20, 200, 20)])
-    scene = tmp_path / "floor.toml"
-    scene.write_text(
-        '[camera]\ntype = "lookat"\nposition = [0, 3, 3]\n'
-        '[[objects]]\nshape = "plane"\nmaterial = "floor"\n'
-        "[materials.floor]\nalbedo = [1, 1, 1]\nalbedo_texture = 0\n"
-        '[[lights]]\ntype = "directional"\ndirection = [0, 1, 0]\n'
-        '[channels]\n0 = "stone.png"\n'
-    )
+    scene = _floor_scene(tmp_path, '[channels]\n0 = "stone.png"\n')
     by_scene = glint.render(scene, size=(32, 24)).pixels
     by_argument = glint.render(scene, size=(32, 24), channels={0: tmp_path / "stone.png"}).pixels
     replaced = glint.render(scene, size=(32, 24), channels={0: tmp_path / "other.png"}).pixels
